@@ -1,0 +1,154 @@
+//! Real roots of linear and quadratic polynomials, computed stably.
+
+use super::RealRoots;
+use super::scaling::{exponent, scale};
+
+/// The real root of `b·x + c = 0`.
+///
+/// A constant polynomial (`b = 0`) has no isolated root; it gives an empty result even when
+/// `c = 0` (then every `x` is a root, as `numpy.roots` also reports nothing).
+///
+/// ```
+/// use ballcollide::poly::solve_linear;
+/// assert_eq!(solve_linear(2.0, -3.0).as_slice(), &[1.5]);
+/// assert!(solve_linear(0.0, 1.0).is_empty());
+/// ```
+pub fn solve_linear(b: f64, c: f64) -> RealRoots {
+    let mut roots = RealRoots::empty();
+    if b != 0.0 {
+        roots.push(-c / b);
+    }
+    roots
+}
+
+/// The real roots of `a·x² + b·x + c = 0`, ascending, with multiplicity.
+///
+/// Accurate to a few ulp of what the exact coefficients determine:
+/// - the roots are formed as `q = −(b + sign(b)·√Δ)/2`, `x₁ = q/a`, `x₂ = c/q`, so neither
+///   root suffers cancellation;
+/// - when the roots are close, `Δ = b² − 4ac` cancels; it is then recomputed with
+///   fused multiply-adds that capture the rounding error of each product (Kahan's method),
+///   so a double root stays double and a pair of close roots is not lost;
+/// - the variable and the coefficients are rescaled by exact powers of two first, so
+///   coefficients anywhere in the float range neither overflow nor underflow in `b²` or `4ac`.
+///
+/// `a = 0` falls back to [`solve_linear`]. A root too large for a float is reported as ±∞; a
+/// non-finite coefficient gives no root.
+///
+/// ```
+/// use ballcollide::poly::solve_quadratic;
+/// // (x − 1)(x − 1e-10): the small root keeps full relative accuracy.
+/// let r = solve_quadratic(1.0, -(1.0 + 1e-10), 1e-10);
+/// assert_eq!(r.len(), 2);
+/// assert!((r[0] - 1e-10).abs() <= 1e-26);
+/// assert_eq!(r[1], 1.0);
+/// // Coefficients far outside the range where b² is representable; the large root, 3e600,
+/// // overflows to +∞ and is reported as such.
+/// let r = solve_quadratic(1e-300, -3e300, 2e300);
+/// assert_eq!(r.len(), 2);
+/// assert!((r[0] - 2.0 / 3.0).abs() <= f64::EPSILON);
+/// assert_eq!(r[1], f64::INFINITY);
+/// ```
+pub fn solve_quadratic(a: f64, b: f64, c: f64) -> RealRoots {
+    if !(a.is_finite() && b.is_finite() && c.is_finite()) {
+        return RealRoots::empty();
+    }
+    if a == 0.0 {
+        return solve_linear(b, c);
+    }
+    if c == 0.0 {
+        return RealRoots::from_unsorted(&[0.0, -b / a]);
+    }
+    let (Some(ea), Some(ec)) = (exponent(a), exponent(c)) else {
+        return RealRoots::empty(); // unreachable: a and c are finite and non-zero here
+    };
+    // Substitute x = 2^s·y so that the leading and constant coefficients have similar size
+    // (their ratio is the product of the roots), then scale the coefficients to max ≈ 1.
+    // The exponents are combined before any multiplication so nothing overflows on the way;
+    // a coefficient that underflows to 0 was negligible against the largest one.
+    let s = (ec - ea) / 2;
+    let ek = [Some(ea + 2 * s), exponent(b).map(|eb| eb + s), Some(ec)]
+        .into_iter()
+        .flatten()
+        .max()
+        .unwrap_or(0);
+    let (a1, b1, c1) = (scale(a, 2 * s - ek), scale(b, s - ek), scale(c, -ek));
+    let unscale = |y: f64| scale(y, s);
+
+    let disc = discriminant(a1, b1, c1);
+    let mut roots = RealRoots::empty();
+    if disc < 0.0 {
+        return roots;
+    }
+    if disc == 0.0 {
+        let x = unscale(-b1 / (2.0 * a1));
+        roots.push(x);
+        roots.push(x);
+        return roots;
+    }
+    let q = -0.5 * (b1 + disc.sqrt().copysign(b1));
+    roots.push(unscale(q / a1));
+    roots.push(unscale(c1 / q));
+    roots.sort();
+    roots
+}
+
+/// `b² − 4ac`, with the rounding errors of both products restored when they cancel.
+///
+/// Kahan's test `3·|b² − 4ac| < b² + 4ac` tells when cancellation has eaten more than about
+/// a bit; only then is the fused multiply-add correction (exact product errors) needed.
+fn discriminant(a: f64, b: f64, c: f64) -> f64 {
+    let p = b * b;
+    let q = 4.0 * a * c;
+    let d = p - q;
+    if 3.0 * d.abs() >= p + q.abs() {
+        return d;
+    }
+    let dp = b.mul_add(b, -p);
+    let dq = (4.0 * a).mul_add(c, -q);
+    d + (dp - dq)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn double_root_is_reported_twice() {
+        // (3x − 1)² = 9x² − 6x + 1: 1/3 is not a float, but the coefficients are exact.
+        let r = solve_quadratic(9.0, -6.0, 1.0);
+        assert_eq!(r.len(), 2);
+        assert_eq!(r[0], r[1]);
+        assert!((r[0] - 1.0 / 3.0).abs() <= f64::EPSILON);
+    }
+
+    #[test]
+    fn discriminant_cancellation_is_compensated() {
+        // (x + 1)(x + 1 + 2^-29) = x² + (2 + 2^-29)·x + (1 + 2^-29), all exact. b² rounds to
+        // exactly 4c, so the naive discriminant is 0 and reports a false double root at
+        // −(1 + 2^-30); the exact one is 2^-58.
+        let h = 2f64.powi(-29);
+        let r = solve_quadratic(1.0, 2.0 + h, 1.0 + h);
+        assert_eq!(r.as_slice(), &[-(1.0 + h), -1.0]);
+    }
+
+    #[test]
+    fn linear_and_degenerate() {
+        assert_eq!(solve_quadratic(0.0, 2.0, -4.0).as_slice(), &[2.0]);
+        assert!(solve_quadratic(0.0, 0.0, 1.0).is_empty());
+        assert_eq!(solve_quadratic(2.0, -4.0, 0.0).as_slice(), &[0.0, 2.0]);
+        assert!(solve_quadratic(f64::NAN, 1.0, 1.0).is_empty());
+    }
+
+    #[test]
+    fn extreme_scales() {
+        for k in [-300, -150, -20, 0, 20, 150, 300] {
+            let s = 10f64.powi(k);
+            // (x − s)(x − 2s) = x² − 3s·x + 2s²  → scaled by s^-1 to stay in range.
+            let r = solve_quadratic(1.0 / s, -3.0, 2.0 * s);
+            assert_eq!(r.len(), 2, "k = {k}");
+            assert!((r[0] / s - 1.0).abs() < 4.0 * f64::EPSILON, "k = {k}: {r:?}");
+            assert!((r[1] / s - 2.0).abs() < 4.0 * f64::EPSILON, "k = {k}: {r:?}");
+        }
+    }
+}
