@@ -6,7 +6,29 @@
 //! entry root. This crate computes it exactly (to the float64 floor), fast, and for
 //! millions of pairs.
 //!
+//! - [`Ball`] ([`motion`]): one ball's state and trajectory;
+//! - [`Gap`] ([`coefficients`]): the relative motion of two balls and its gap quartic;
+//! - [`collision_time`] ([`collision`]): the first contact of two balls;
 //! - [`poly`]: real-root solvers for polynomials of degree ≤ 4.
+//!
+//! ```
+//! use ballcollide::{Ball, collision_time};
+//! use nalgebra::Vector2;
+//!
+//! let a = Ball::new(Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0), 0.0)?;
+//! let b = Ball::at_rest(Vector2::new(1.0, 0.0))?;
+//! assert_eq!(collision_time(&a, &b, 0.5)?, Some(0.5));
+//! # Ok::<(), ballcollide::InputError>(())
+//! ```
 #![warn(missing_docs)]
 
+pub mod coefficients;
+pub mod collision;
+pub mod error;
+pub mod motion;
 pub mod poly;
+
+pub use coefficients::Gap;
+pub use collision::{CollisionOptions, collision_time, collision_time_with};
+pub use error::{InputError, InputErrorKind};
+pub use motion::Ball;

@@ -5,9 +5,11 @@
 //! a leading coefficient that may be zero or tiny without care: a vanishing leading
 //! coefficient drops the degree.
 
+mod bracketed;
 mod quadratic;
 mod roots;
 pub mod scaling;
 
+pub use bracketed::bracketed_newton;
 pub use quadratic::{solve_linear, solve_quadratic};
 pub use roots::RealRoots;

@@ -147,8 +147,14 @@ mod tests {
             // (x − s)(x − 2s) = x² − 3s·x + 2s²  → scaled by s^-1 to stay in range.
             let r = solve_quadratic(1.0 / s, -3.0, 2.0 * s);
             assert_eq!(r.len(), 2, "k = {k}");
-            assert!((r[0] / s - 1.0).abs() < 4.0 * f64::EPSILON, "k = {k}: {r:?}");
-            assert!((r[1] / s - 2.0).abs() < 4.0 * f64::EPSILON, "k = {k}: {r:?}");
+            assert!(
+                (r[0] / s - 1.0).abs() < 4.0 * f64::EPSILON,
+                "k = {k}: {r:?}"
+            );
+            assert!(
+                (r[1] / s - 2.0).abs() < 4.0 * f64::EPSILON,
+                "k = {k}: {r:?}"
+            );
         }
     }
 }

@@ -1,0 +1,127 @@
+//! [`Gap`]: the relative motion of two balls on one time window, and its gap quartic.
+
+use nalgebra::Vector2;
+
+use crate::motion::Ball;
+
+/// The relative motion of two balls on a time window in which both move without stopping
+/// (or rest): with `s` the time since the window's start,
+/// `d(s) = offset + velocity·s + ½·acceleration·s²` is the vector from B's centre to A's,
+/// and the **gap** `g(s) = |d(s)|² − radius²` is negative exactly when the balls overlap.
+///
+/// `g` is the quartic `a·s⁴ + b·s³ + c·s² + d·s + e` of [`Gap::quartic`]; the collision
+/// search, however, evaluates `g` and its derivatives through `d(s)`, which stays accurate
+/// where the expanded coefficients cancel (balls far apart compared with their radii).
+///
+/// ```
+/// use ballcollide::{Ball, Gap};
+/// use nalgebra::Vector2;
+///
+/// // A at rest at the origin, B coming from x = 1 at 1 m/s without friction.
+/// let a = Ball::at_rest(Vector2::new(0.0, 0.0))?;
+/// let b = Ball::new(Vector2::new(1.0, 0.0), Vector2::new(-1.0, 0.0), 0.0)?;
+/// let gap = Gap::between(&a, &b, 0.5, 0.0);
+/// assert_eq!(gap.quartic(), [0.0, 0.0, 1.0, -2.0, 0.75]); // (1 − s)² − 0.25
+/// assert_eq!(gap.value(0.5), 0.0); // touching after 0.5 s
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Gap {
+    /// `d(0)`: centre of A minus centre of B at the window's start.
+    pub offset: Vector2<f64>,
+    /// `d′(0)`: relative velocity at the window's start.
+    pub velocity: Vector2<f64>,
+    /// `d″`: relative friction acceleration, constant on the window.
+    pub acceleration: Vector2<f64>,
+    /// The distance between centres at contact (the sum of the radii).
+    pub radius: f64,
+}
+
+impl Gap {
+    /// The relative motion of `a` and `b` from time `t0` on, valid until the first of them
+    /// stops after `t0` (a ball already stopped at `t0` contributes its resting point and no
+    /// motion).
+    pub fn between(a: &Ball, b: &Ball, radius: f64, t0: f64) -> Self {
+        Self {
+            offset: a.position_at(t0) - b.position_at(t0),
+            velocity: a.velocity_at(t0) - b.velocity_at(t0),
+            acceleration: moving_friction(a, t0) - moving_friction(b, t0),
+            radius,
+        }
+    }
+
+    /// The same motion with time measured in units of `h` (`s = h·u`): velocity × h and
+    /// acceleration × h². Exact when `h` is a power of two.
+    ///
+    /// ```
+    /// use ballcollide::Gap;
+    /// use nalgebra::Vector2;
+    /// let gap = Gap {
+    ///     offset: Vector2::new(1.0, 0.0),
+    ///     velocity: Vector2::new(-1.0, 0.0),
+    ///     acceleration: Vector2::new(0.5, 0.0),
+    ///     radius: 0.25,
+    /// };
+    /// assert_eq!(gap.time_scaled(4.0).value(0.25), gap.value(1.0));
+    /// ```
+    pub fn time_scaled(&self, h: f64) -> Self {
+        Self {
+            offset: self.offset,
+            velocity: self.velocity * h,
+            acceleration: self.acceleration * (h * h),
+            radius: self.radius,
+        }
+    }
+
+    /// The coefficients `[a, b, c, d, e]` of `g(s) = a·s⁴ + b·s³ + c·s² + d·s + e`, highest
+    /// degree first (SPEC's formula with `Δp`, `Δv`, `Δf` the offset, velocity and
+    /// acceleration).
+    pub fn quartic(&self) -> [f64; 5] {
+        let (p, v, f) = (self.offset, self.velocity, self.acceleration);
+        [
+            0.25 * f.norm_squared(),
+            v.dot(&f),
+            v.norm_squared() + p.dot(&f),
+            2.0 * p.dot(&v),
+            self.value(0.0),
+        ]
+    }
+
+    /// `d(s)`: the vector from B's centre to A's at time `s` of the window.
+    pub fn separation(&self, s: f64) -> Vector2<f64> {
+        self.offset + (self.velocity + self.acceleration * (0.5 * s)) * s
+    }
+
+    /// `d′(s)`: the relative velocity at time `s` of the window.
+    pub fn relative_velocity(&self, s: f64) -> Vector2<f64> {
+        self.velocity + self.acceleration * s
+    }
+
+    /// `g(s) = |d(s)|² − radius²`, with the subtraction done inside fused multiply-adds so
+    /// that its sign is right when the distance is within rounding of the radius.
+    pub fn value(&self, s: f64) -> f64 {
+        let d = self.separation(s);
+        let r2 = self.radius * self.radius;
+        let r2_err = self.radius.mul_add(self.radius, -r2);
+        d.x.mul_add(d.x, d.y.mul_add(d.y, -r2)) - r2_err
+    }
+
+    /// `½·g′(s) = d(s)·d′(s)`: negative while the balls approach.
+    pub fn half_slope(&self, s: f64) -> f64 {
+        self.separation(s).dot(&self.relative_velocity(s))
+    }
+
+    /// `½·g″(s) = |d′(s)|² + d(s)·d″`: the derivative of [`Gap::half_slope`].
+    pub fn half_curvature(&self, s: f64) -> f64 {
+        self.relative_velocity(s).norm_squared() + self.separation(s).dot(&self.acceleration)
+    }
+}
+
+/// A ball's friction acceleration on a window starting at `t0`: zero once it has stopped.
+fn moving_friction(ball: &Ball, t0: f64) -> Vector2<f64> {
+    if t0 < ball.stop_time() {
+        ball.friction_vector()
+    } else {
+        Vector2::zeros()
+    }
+}

@@ -1,0 +1,128 @@
+//! The first entry (+ → − sign change of the gap) on one time window.
+
+use crate::coefficients::Gap;
+use crate::poly::{bracketed_newton, solve_quadratic};
+
+/// The critical points of `g` in `(0, end)`, ascending: the roots of `½g′ = d·d′`.
+///
+/// `½g′` is a cubic whose turning points are the roots of `½g″`, a quadratic solved stably;
+/// between them `½g′` is monotone, so each sign change there brackets exactly one critical
+/// point, found by bracketed Newton on the accurate `d·d′` form. Never divides by the leading
+/// coefficient, so equal friction vectors (a cubic that is really a linear function) need no
+/// special case.
+pub(crate) fn critical_points(gap: &Gap, end: f64) -> ([f64; 3], usize) {
+    let (v, f) = (gap.velocity, gap.acceleration);
+    let turning = solve_quadratic(
+        1.5 * f.norm_squared(),
+        3.0 * v.dot(&f),
+        v.norm_squared() + gap.offset.dot(&f),
+    );
+    let mut out = [0.0; 3];
+    let mut count = 0;
+    let mut left = 0.0;
+    let mut slope_left = gap.half_slope(0.0);
+    let inner = turning.iter().copied().filter(|&x| x > 0.0 && x < end);
+    for right in inner.chain(std::iter::once(end)) {
+        let slope_right = gap.half_slope(right);
+        if (slope_left < 0.0 && slope_right > 0.0) || (slope_left > 0.0 && slope_right < 0.0) {
+            let x = bracketed_newton(
+                |u| (gap.half_slope(u), gap.half_curvature(u)),
+                left,
+                right,
+                slope_left,
+                slope_right,
+                0.5 * (left + right),
+            );
+            if x > 0.0 && x < end && count < out.len() {
+                out[count] = x;
+                count += 1;
+            }
+        } else if slope_right == 0.0 && right < end && count < out.len() {
+            out[count] = right; // a critical point exactly at a turning point
+            count += 1;
+        }
+        left = right;
+        slope_left = slope_right;
+    }
+    (out, count)
+}
+
+/// The outcome of searching one window.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum WindowSearch {
+    /// The balls start to interpenetrate at this time since the window's start.
+    Entry(f64),
+    /// No entry; whether the gap is positive at the window's end (carried to the next
+    /// window, to catch a crossing that falls exactly between two windows).
+    NoEntry { ends_positive: bool },
+}
+
+/// The first + → − crossing of `g` on `[0, end]`, time already scaled so that `end ≤ 1`.
+///
+/// `previous_positive` says that the gap was positive just before the window (at the end of
+/// the previous one, or at time 0 for the first), so that a gap that is already negative at
+/// the start counts as an entry at the start: the windows' formulas meet only up to rounding.
+///
+/// `g` is monotone between consecutive critical points, so the first piece that goes from
+/// ≥ 0 (after having been positive) to < 0 holds the entry, found by bracketed Newton.
+pub(crate) fn first_entry(gap: &Gap, end: f64, previous_positive: bool) -> WindowSearch {
+    let g_start = gap.value(0.0);
+    if previous_positive && g_start < 0.0 {
+        return WindowSearch::Entry(0.0);
+    }
+    let (critical, count) = critical_points(gap, end);
+    let mut seen_positive = previous_positive || g_start > 0.0;
+    let (mut left, mut g_left) = (0.0, g_start);
+    for (k, &right) in critical[..count].iter().chain([end].iter()).enumerate() {
+        let g_right = gap.value(right);
+        if seen_positive && g_left >= 0.0 && g_right < 0.0 {
+            if g_left == 0.0 {
+                return WindowSearch::Entry(left);
+            }
+            let right_is_minimum = k < count;
+            return WindowSearch::Entry(entry_root(
+                gap,
+                left,
+                right,
+                g_left,
+                g_right,
+                right_is_minimum,
+            ));
+        }
+        seen_positive |= g_right > 0.0;
+        (left, g_left) = (right, g_right);
+    }
+    WindowSearch::NoEntry {
+        ends_positive: g_left > 0.0,
+    }
+}
+
+/// The root of `g` in `(left, right)`, where `g(left) > 0 > g(right)` and `g` is monotone.
+///
+/// When `right` is a local minimum the root may be near-double (a grazing contact): Newton
+/// then starts from the quadratic Taylor estimate `m − √(−2g(m)/g″(m))`, which is already
+/// close, instead of crawling in from the far end.
+fn entry_root(
+    gap: &Gap,
+    left: f64,
+    right: f64,
+    g_left: f64,
+    g_right: f64,
+    right_is_minimum: bool,
+) -> f64 {
+    let mut start = left + (right - left) * (g_left / (g_left - g_right));
+    if right_is_minimum {
+        let curvature = gap.half_curvature(right);
+        if curvature > 0.0 {
+            start = right - (-g_right / curvature).sqrt();
+        }
+    }
+    bracketed_newton(
+        |u| (gap.value(u), 2.0 * gap.half_slope(u)),
+        left,
+        right,
+        g_left,
+        g_right,
+        start,
+    )
+}

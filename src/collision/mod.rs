@@ -1,0 +1,200 @@
+//! When two balls first touch: [`collision_time`].
+//!
+//! The time axis splits at the two stop times into at most three windows; on each, both
+//! motions are polynomial and the gap `g(t) = |x_A(t) − x_B(t)|² − radius²` is a quartic
+//! (see [`Gap`]). The collision is the first `t ≥ 0` where `g` goes from positive to
+//! negative, searched window by window:
+//!
+//! 1. time is scaled by a power of two to the window (exact), so each window is `[0, ≤ 1]`;
+//! 2. a Bernstein-basis test proves most windows contact-free at once;
+//! 3. otherwise the critical points of `g` split the window into monotone pieces, and the
+//!    first piece that goes from positive to negative is solved by bracketed Newton.
+//!
+//! The quartic is never divided by its leading coefficient, so equal or nearly equal friction
+//! vectors (where it vanishes or nearly so) need no special case.
+//!
+//! ## Semantics (SPEC)
+//! - touching or overlapping at `t = 0` is a collision at `0` only if the balls approach
+//!   (`d·d′ < 0`, or `d·d′ = 0` with the gap shrinking at second order, `|d′|² + d·d″ < 0`);
+//!   overlapping balls that separate (as right after a resolved collision) collide only on a
+//!   later re-entry;
+//! - exact tangency (the gap touches zero and grows again) is not a collision;
+//! - a contact shallower than about 1e-13 of the radius is beyond what float64 inputs decide
+//!   (the gap's minimum is then within rounding of zero): either answer may come back.
+
+mod entry;
+mod exclusion;
+
+use crate::coefficients::Gap;
+use crate::error::{InputError, check_horizon, check_radius};
+use crate::motion::Ball;
+use crate::poly::scaling::{exponent, pow2};
+use entry::{WindowSearch, first_entry};
+
+/// Options of a collision query ([`collision_time_with`]).
+///
+/// ```
+/// use ballcollide::CollisionOptions;
+/// let options = CollisionOptions { t_max: 2.0, ..Default::default() };
+/// assert_eq!(CollisionOptions::default().t_max, f64::INFINITY);
+/// # let _ = options;
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CollisionOptions {
+    /// The horizon: a collision at `t ≥ t_max` is reported as none. Default `∞`.
+    pub t_max: f64,
+}
+
+impl Default for CollisionOptions {
+    fn default() -> Self {
+        Self {
+            t_max: f64::INFINITY,
+        }
+    }
+}
+
+/// The time at which `a` and `b` first touch (their centres `radius` apart, `radius` being
+/// the sum of their radii), or `None` if they never do.
+///
+/// # Errors
+/// `radius` must be finite and positive.
+///
+/// ```
+/// use ballcollide::{Ball, collision_time};
+/// use nalgebra::Vector2;
+///
+/// // A cue ball shot at 2 m/s straight at a ball 1 m away, slowed at 0.2 m/s².
+/// let cue = Ball::new(Vector2::new(0.0, 0.0), Vector2::new(2.0, 0.0), 0.2)?;
+/// let target = Ball::at_rest(Vector2::new(1.0, 0.0))?;
+/// let t = collision_time(&cue, &target, 0.05715)?.expect("they collide");
+/// // It covers 1 − 0.05715 m: 2t − 0.1t² = 0.94285.
+/// assert!((2.0 * t - 0.1 * t * t - 0.94285).abs() < 1e-15);
+///
+/// // The same shot aimed 0.1 m to the side misses.
+/// let aside = Ball::at_rest(Vector2::new(1.0, 0.1))?;
+/// assert_eq!(collision_time(&cue, &aside, 0.05715)?, None);
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+pub fn collision_time(a: &Ball, b: &Ball, radius: f64) -> Result<Option<f64>, InputError> {
+    collision_time_with(a, b, radius, &CollisionOptions::default())
+}
+
+/// [`collision_time`] with options, such as a horizon `t_max`.
+///
+/// # Errors
+/// `radius` must be finite and positive, `t_max` must be ≥ 0 (`∞` allowed).
+///
+/// ```
+/// use ballcollide::{Ball, CollisionOptions, collision_time_with};
+/// use nalgebra::Vector2;
+///
+/// let a = Ball::new(Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0), 0.0)?;
+/// let b = Ball::at_rest(Vector2::new(2.0, 0.0))?;
+/// let soon = CollisionOptions { t_max: 1.0 };
+/// assert_eq!(collision_time_with(&a, &b, 0.5, &soon)?, None); // contact at 1.5 s
+/// let later = CollisionOptions { t_max: 2.0 };
+/// assert_eq!(collision_time_with(&a, &b, 0.5, &later)?, Some(1.5));
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+pub fn collision_time_with(
+    a: &Ball,
+    b: &Ball,
+    radius: f64,
+    options: &CollisionOptions,
+) -> Result<Option<f64>, InputError> {
+    let radius = check_radius("radius", radius)?;
+    let t_max = check_horizon("t_max", options.t_max)?;
+    Ok(first_contact(a, b, radius, t_max))
+}
+
+/// The search itself, on inputs already validated (`radius > 0` finite, `t_max ≥ 0`).
+pub(crate) fn first_contact(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> Option<f64> {
+    let initial = Gap::between(a, b, radius, 0.0);
+    let g0 = initial.value(0.0);
+    if g0 <= 0.0 && approaching(&initial) {
+        return (t_max > 0.0).then_some(0.0);
+    }
+    let (t1, t2) = {
+        let (ta, tb) = (a.stop_time(), b.stop_time());
+        (ta.min(tb), ta.max(tb))
+    };
+    let mut previous_positive = g0 > 0.0;
+    for (start, end) in [(0.0, t1), (t1, t2), (t2, f64::INFINITY)] {
+        if start >= t_max {
+            break;
+        }
+        let end = end.min(t_max);
+        if end <= start {
+            continue;
+        }
+        let gap = if start == 0.0 {
+            initial
+        } else {
+            Gap::between(a, b, radius, start)
+        };
+        match search_window(&gap, end - start, previous_positive) {
+            WindowSearch::Entry(s) => {
+                let t = start + s;
+                return (t < t_max).then_some(t);
+            }
+            WindowSearch::NoEntry { ends_positive } => previous_positive = ends_positive,
+        }
+    }
+    None
+}
+
+/// Whether balls touching or overlapping at the start are moving into each other: the first
+/// non-zero derivative of the gap is negative.
+fn approaching(gap: &Gap) -> bool {
+    let slope = gap.half_slope(0.0);
+    slope < 0.0 || (slope == 0.0 && gap.half_curvature(0.0) < 0.0)
+}
+
+/// Longest window searched: contacts later than about 1e301 (in the input's time unit) are not
+/// reported, so that scaling time to the window never overflows.
+const LONGEST_WINDOW: f64 = 1e301;
+
+/// The first entry on a window of `length` (possibly infinite), as time since its start.
+fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearch {
+    let length = if length.is_finite() {
+        length
+    } else {
+        // Only a frictionless (or resting) relative motion has an unbounded window; its gap is
+        // then a quadratic symmetric about the closest approach s*, so any entry lies in
+        // [0, s*]: search [0, 2s*] to keep s* inside.
+        let approach = -gap.offset.dot(&gap.velocity);
+        let speed2 = gap.velocity.norm_squared();
+        if approach > 0.0 && speed2 > 0.0 {
+            2.0 * (approach / speed2)
+        } else {
+            // Receding or at rest: only the start can be an entry.
+            0.0
+        }
+    };
+    let length = length.min(LONGEST_WINDOW);
+    // h = 2^k ≥ length, so that u = s/h runs over [0, ≤ 1] exactly.
+    let h = match exponent(length) {
+        Some(e) if length == pow2(e) => length,
+        Some(e) => pow2(e + 1),
+        None => {
+            let g_start = gap.value(0.0);
+            return if previous_positive && g_start < 0.0 {
+                WindowSearch::Entry(0.0)
+            } else {
+                WindowSearch::NoEntry {
+                    ends_positive: g_start > 0.0,
+                }
+            };
+        }
+    };
+    let scaled = gap.time_scaled(h);
+    if exclusion::proves_positive(&scaled) {
+        return WindowSearch::NoEntry {
+            ends_positive: true,
+        };
+    }
+    match first_entry(&scaled, length / h, previous_positive) {
+        WindowSearch::Entry(u) => WindowSearch::Entry(u * h),
+        no_entry => no_entry,
+    }
+}

@@ -1,0 +1,144 @@
+//! [`InputError`]: what is wrong with an input, naming the argument (and index, in batch).
+
+use std::fmt;
+
+/// What is wrong with one input value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum InputErrorKind {
+    /// NaN or ±∞.
+    NotFinite(f64),
+    /// A friction deceleration below zero.
+    NegativeFriction(f64),
+    /// A collision radius (sum of the balls' radii) that is zero or negative.
+    NonPositiveRadius(f64),
+    /// A horizon `t_max` that is negative or NaN.
+    InvalidHorizon(f64),
+    /// An array whose length differs from the others'.
+    LengthMismatch {
+        /// The length the other arguments have.
+        expected: usize,
+        /// The length this one has.
+        found: usize,
+    },
+}
+
+/// An invalid input: which argument, at which index (for batch calls), and why.
+///
+/// Its `Display` is a sentence meant for the user, e.g.
+/// ``friction_a[12]: friction must be ≥ 0, got -0.5``.
+///
+/// ```
+/// use ballcollide::{Ball, InputErrorKind};
+/// use nalgebra::Vector2;
+///
+/// let err = Ball::new(Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0), -0.5).unwrap_err();
+/// assert_eq!(err.argument(), "friction");
+/// assert_eq!(err.kind(), InputErrorKind::NegativeFriction(-0.5));
+/// assert_eq!(err.to_string(), "friction: friction must be ≥ 0, got -0.5");
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InputError {
+    argument: &'static str,
+    index: Option<usize>,
+    kind: InputErrorKind,
+}
+
+impl InputError {
+    /// An error about `argument`.
+    pub const fn new(argument: &'static str, kind: InputErrorKind) -> Self {
+        Self {
+            argument,
+            index: None,
+            kind,
+        }
+    }
+
+    /// The same error, located at `index` of a batch.
+    pub const fn at(self, index: usize) -> Self {
+        Self {
+            index: Some(index),
+            ..self
+        }
+    }
+
+    /// The same error, about another argument name (e.g. `position` → `pos_a`).
+    pub const fn renamed(self, argument: &'static str) -> Self {
+        Self { argument, ..self }
+    }
+
+    /// The name of the offending argument.
+    pub const fn argument(&self) -> &'static str {
+        self.argument
+    }
+
+    /// The index of the first offending element, for batch calls.
+    pub const fn index(&self) -> Option<usize> {
+        self.index
+    }
+
+    /// What is wrong.
+    pub const fn kind(&self) -> InputErrorKind {
+        self.kind
+    }
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.argument)?;
+        if let Some(i) = self.index {
+            write!(f, "[{i}]")?;
+        }
+        match self.kind {
+            InputErrorKind::NotFinite(x) => write!(f, ": must be finite, got {x}"),
+            InputErrorKind::NegativeFriction(x) => {
+                write!(f, ": friction must be ≥ 0, got {x}")
+            }
+            InputErrorKind::NonPositiveRadius(x) => {
+                write!(f, ": radius (sum of the two radii) must be > 0, got {x}")
+            }
+            InputErrorKind::InvalidHorizon(x) => {
+                write!(f, ": t_max must be ≥ 0 (∞ for no horizon), got {x}")
+            }
+            InputErrorKind::LengthMismatch { expected, found } => {
+                write!(f, ": has {found} rows, expected {expected}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for InputError {}
+
+/// `Ok(x)` if `x` is finite, else an error naming `argument`.
+pub(crate) fn finite(argument: &'static str, x: f64) -> Result<f64, InputError> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(InputError::new(argument, InputErrorKind::NotFinite(x)))
+    }
+}
+
+/// Checks a collision radius: finite and > 0.
+pub(crate) fn check_radius(argument: &'static str, radius: f64) -> Result<f64, InputError> {
+    finite(argument, radius)?;
+    if radius > 0.0 {
+        Ok(radius)
+    } else {
+        Err(InputError::new(
+            argument,
+            InputErrorKind::NonPositiveRadius(radius),
+        ))
+    }
+}
+
+/// Checks a horizon: ≥ 0, +∞ allowed.
+pub(crate) fn check_horizon(argument: &'static str, t_max: f64) -> Result<f64, InputError> {
+    if t_max >= 0.0 {
+        Ok(t_max)
+    } else {
+        Err(InputError::new(
+            argument,
+            InputErrorKind::InvalidHorizon(t_max),
+        ))
+    }
+}

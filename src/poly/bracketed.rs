@@ -1,0 +1,80 @@
+//! Newton's method kept inside a sign-change bracket, with bisection as the safeguard.
+
+/// A root of `f` in `[lo, hi]`, where `f(lo)` and `f(hi)` have opposite signs.
+///
+/// `f(x)` returns `(f(x), f′(x))`. Newton steps are taken from `start` (clamped into the
+/// bracket); a step that leaves the bracket, or that would not shrink it fast enough (as near a
+/// multiple root), is replaced by bisection. Every evaluation tightens the bracket, so the
+/// method always converges: quadratically near a simple root, at worst as fast as bisection.
+/// It stops when a step no longer moves the iterate by more than rounding, when the bracket
+/// shrinks to adjacent floats, or when `f` is exactly zero.
+///
+/// `f_lo` and `f_hi` are the already known signs' values at the ends (not re-evaluated).
+///
+/// ```
+/// use ballcollide::poly::bracketed_newton;
+/// // √2 as the root of x² − 2 on [1, 2].
+/// let r = bracketed_newton(|x| (x * x - 2.0, 2.0 * x), 1.0, 2.0, -1.0, 2.0, 1.5);
+/// assert!((r - 2f64.sqrt()).abs() <= f64::EPSILON);
+/// // A triple root: slow for Newton, but the bracket keeps it converging.
+/// let r = bracketed_newton(|x| ((x - 1.0).powi(3), 3.0 * (x - 1.0).powi(2)), 0.0, 3.0, -1.0, 8.0, 3.0);
+/// assert!((r - 1.0).abs() < 1e-5);
+/// ```
+pub fn bracketed_newton(
+    mut f: impl FnMut(f64) -> (f64, f64),
+    lo: f64,
+    hi: f64,
+    f_lo: f64,
+    f_hi: f64,
+    start: f64,
+) -> f64 {
+    // Orient the bracket so that f < 0 at `neg` and f > 0 at `pos`.
+    let (mut neg, mut pos) = if f_lo < 0.0 { (lo, hi) } else { (hi, lo) };
+    if f_lo == 0.0 {
+        return lo;
+    }
+    if f_hi == 0.0 {
+        return hi;
+    }
+    let (min, max) = (lo.min(hi), lo.max(hi));
+    let mut x = if start > min && start < max {
+        start
+    } else {
+        0.5 * (lo + hi)
+    };
+    let mut previous_step = (hi - lo).abs();
+    let mut step = previous_step;
+    // 2 × 64 iterations: each halves the bracket at worst, and the float interval has at
+    // most 2⁶⁴ points.
+    for _ in 0..128 {
+        let (fx, dfx) = f(x);
+        if fx == 0.0 || fx.is_nan() {
+            return x;
+        }
+        if fx < 0.0 {
+            neg = x;
+        } else {
+            pos = x;
+        }
+        let (a, b) = (neg.min(pos), neg.max(pos));
+        let newton = x - fx / dfx;
+        let shrinks = (2.0 * fx).abs() <= (previous_step * dfx).abs();
+        let next = if newton > a && newton < b && shrinks {
+            previous_step = step;
+            newton
+        } else {
+            previous_step = step;
+            let mid = 0.5 * (a + b);
+            if mid <= a || mid >= b {
+                return x; // the bracket holds no float between its ends
+            }
+            mid
+        };
+        step = (next - x).abs();
+        if step <= f64::EPSILON * x.abs().max(next.abs()) || step == 0.0 {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
