@@ -1,0 +1,653 @@
+//! Real roots of a quartic by Algorithm 1010 (Orellana & De Michele, ACM TOMS 46(2), 2020)
+//! with the corrections of its two published Remarks (De Michele, ACM TOMS 2022 and 2024).
+//!
+//! # The method, in brief
+//!
+//! A monic quartic `x⁴ + a·x³ + b·x² + c·x + d` equals `vᵀ·M(φ)·v` with `v = (x², x, 1)` and
+//!
+//! ```text
+//!        ⎡ 1      a/2        b/6 + φ/2 ⎤
+//! M(φ) = ⎢ a/2    2b/3 − φ   c/2       ⎥      for every φ.
+//!        ⎣ b/6+φ/2  c/2      d         ⎦
+//! ```
+//!
+//! Its LDLᵀ factorisation, with `L = [[1,0,0],[l₁,1,0],[l₃,l₂,1]]` and `D = diag(1, d₂, d₃)`,
+//! writes the quartic as `(x² + l₁x + l₃)² + d₂(x + l₂)² + d₃`. Choosing `φ` as a root of
+//! `det M(φ) = 0` — the resolvent cubic `φ³ + gφ + h` — makes `d₃ = 0`, and then
+//! - `d₂ < 0`: two real quadratic factors `x² + (l₁ ± γ)x + (l₃ ± γl₂)`, `γ = √−d₂`;
+//! - `d₂ > 0`: two complex-conjugate factors (no simple real roots);
+//! - `d₂ ≈ 0`: `l₂` is undetermined and the factors are taken from `d₃ = d − l₃²` instead,
+//!   `x² + l₁x + l₃ ± √−d₃`.
+//!
+//! The paper takes the root of largest magnitude (the *dominant* root) of the resolvent, which
+//! it computes from a shifted quartic (so that `g` and `h` are formed without cancellation)
+//! and refines by Newton; it picks, among algebraically equivalent formulas for `d₂`, `l₂` and
+//! the factor coefficients, the one with the smallest backward error; and it polishes the real
+//! factors by Newton's method on the four equations that tie them to `a, b, c, d`.
+//!
+//! The Remarks correct the test that switches to the `d₂ ≈ 0` branch. The 2020 test
+//! `|d₂| ≤ ε·max(|2b/3|, |φ|, l₁²)` missed cases where rounding leaves `d₂` slightly off zero:
+//! the 2022 Remark compares with the sum `ε·(|2b/3| + |φ| + l₁²)`, and the 2024 Remark widens
+//! the factor to `√ε`, keeping the `d₂ ≈ 0` factorisation only when its backward error is the
+//! smaller one. Both published counter-examples are in this crate's tests.
+//!
+//! # What this implementation adds
+//!
+//! - Degenerate forms are dispatched first (`a = 0` → cubic, `e = 0` → root 0 and a cubic,
+//!   `b = d = 0` → a quadratic in `x²`), and the coefficients and the variable are rescaled by
+//!   exact powers of two so the roots are of order one (the paper divides by the leading
+//!   coefficient and rescales by a constant only after an overflow). Roots that are more than
+//!   2⁶⁴ apart in magnitude are split into separate lower-degree problems first (see
+//!   [`split_point`]), so a tiny leading coefficient never loses the ordinary roots.
+//! - The complex-factor branches are turned into the real quadratic factors of the conjugate
+//!   root pairs, which are polished the same way; a complex pair at whose real part the
+//!   quartic vanishes within a few roundings is an exact double root pushed off the real axis
+//!   by rounding, and is reported as real (so `(x − 1)⁴` has four real roots).
+//! - Every real root is finally refined by guarded Newton steps on the (exactly scaled)
+//!   original quartic with a compensated residual.
+
+use super::cubic::{merge, push_quadratic_roots, root_exponent, scaled, split_point};
+use super::horner::{RootBuf, polish_roots};
+use super::{RealRoots, solve_cubic, solve_linear, solve_quadratic};
+
+/// √ε (ε = 2⁻⁵²): the 2024 Remark's threshold factor for the `d₂ ≈ 0` test.
+const SQRT_EPS: f64 = 1.490_116_119_384_765_6e-8;
+
+/// The real roots of `a·x⁴ + b·x³ + c·x² + d·x + e = 0`, ascending, with multiplicity.
+///
+/// Algorithm 1010 of ACM TOMS with both published Remarks (see the [module
+/// documentation](self) for the method and what is added to it). Roots come out accurate to a
+/// small multiple of what the float coefficients determine: a few ulp for well-separated
+/// roots, about `√ε` relative for a double root, `ε^(1/m)` for an `m`-fold one.
+///
+/// - `a = 0` → [`solve_cubic`]`(b, c, d, e)`; `e = 0` → the root 0 and the cubic; `b = d = 0`
+///   → the quadratic in `x²`. A tiny `a` is not a problem: it means a huge root, which is
+///   found (or reported as ±∞ if it exceeds the float range) along with the others.
+/// - Coefficients anywhere from 1e-300 to 1e300 work (exact power-of-two rescaling).
+/// - Any non-finite coefficient gives no root: the polynomial is not defined.
+///
+/// ```
+/// use ballcollide::poly::solve_quartic;
+/// // (x − 1)(x − 2)(x − 3)(x − 4)
+/// let r = solve_quartic(1.0, -10.0, 35.0, -50.0, 24.0);
+/// assert_eq!(r.as_slice(), &[1.0, 2.0, 3.0, 4.0]);
+/// // (x² + 1)²: no real root; (x − 1)⁴: a quadruple real root.
+/// assert!(solve_quartic(1.0, 0.0, 2.0, 0.0, 1.0).is_empty());
+/// let r = solve_quartic(1.0, -4.0, 6.0, -4.0, 1.0);
+/// assert_eq!(r.len(), 4);
+/// assert!(r.iter().all(|x| (x - 1.0).abs() < 1e-3));
+/// // A tiny leading coefficient with a root near −1.017e15 (Flocke's example).
+/// let r = solve_quartic(-5.898376305898030e-09, -6.000000000001007e+06,
+///                       3.664603343001005e-27, 0.0, 9.000000000003021e+02);
+/// assert_eq!(r.len(), 2);
+/// assert!((r[0] / -1.0172290964212235e15 - 1.0).abs() < 1e-15);
+/// assert!((r[1] / 0.05313292845913352 - 1.0).abs() < 1e-15);
+/// assert!(solve_quartic(1.0, f64::NAN, 0.0, 0.0, 1.0).is_empty());
+/// ```
+pub fn solve_quartic(a: f64, b: f64, c: f64, d: f64, e: f64) -> RealRoots {
+    if ![a, b, c, d, e].iter().all(|x| x.is_finite()) {
+        return RealRoots::empty();
+    }
+    if a == 0.0 {
+        return solve_cubic(b, c, d, e);
+    }
+    if e == 0.0 {
+        return merge(solve_cubic(a, b, c, d), RealRoots::from_unsorted(&[0.0]));
+    }
+    if b == 0.0 && d == 0.0 {
+        return biquadratic(a, c, e);
+    }
+    let coeffs = [a, b, c, d, e];
+    if let Some(i) = split_point(&coeffs) {
+        return merge(
+            solve_low_degree(&coeffs[..=i]),
+            solve_low_degree(&coeffs[i..]),
+        );
+    }
+    let Some(s) = root_exponent(&coeffs) else {
+        return RealRoots::empty(); // unreachable: a and e are finite and non-zero
+    };
+    quartic_scaled(scaled(&coeffs, s)).unscaled(s)
+}
+
+/// Roots of a polynomial of degree ≤ 3 given highest degree first (a split-off part).
+fn solve_low_degree(coeffs: &[f64]) -> RealRoots {
+    match *coeffs {
+        [a, b, c, d] => solve_cubic(a, b, c, d),
+        [a, b, c] => solve_quadratic(a, b, c),
+        [a, b] => solve_linear(a, b),
+        _ => RealRoots::empty(),
+    }
+}
+
+/// `a·x⁴ + c·x² + e` through the quadratic `a·z² + c·z + e` in `z = x²`.
+fn biquadratic(a: f64, c: f64, e: f64) -> RealRoots {
+    let q = [a, c, e];
+    let mut z = RootBuf::default();
+    push_quadratic_roots(&q, a, c, e, &mut z);
+    let mut out = [0.0; 4];
+    let mut n = 0;
+    for &zi in z.as_mut_slice().iter() {
+        if zi >= 0.0 && n + 2 <= out.len() {
+            let r = zi.sqrt();
+            out[n] = -r;
+            out[n + 1] = r;
+            n += 2;
+        }
+    }
+    RealRoots::from_unsorted(&out[..n])
+}
+
+/// The roots, in the scaled variable, of a quartic `p` scaled as by [`scaled`]
+/// (`p[0] ∈ [1, 2)`, all `|p[k]| < 2`, `p[4] ≠ 0`).
+fn quartic_scaled(p: [f64; 5]) -> RootBuf {
+    let lead = p[0];
+    let (a, b, c, d) = (p[1] / lead, p[2] / lead, p[3] / lead, p[4] / lead);
+    let f = polish_factors(a, b, c, d, factor(a, b, c, d));
+    let mut roots = RootBuf::default();
+    push_quadratic_roots(&p, 1.0, f[0], f[1], &mut roots);
+    push_quadratic_roots(&p, 1.0, f[2], f[3], &mut roots);
+    polish_roots(&p, roots.as_mut_slice());
+    roots
+}
+
+/// Two real quadratic factors `(x² + α₁x + β₁)(x² + α₂x + β₂)` of the monic quartic, as
+/// `[α₁, β₁, α₂, β₂]`: the heart of Algorithm 1010.
+fn factor(a: f64, b: f64, c: f64, d: f64) -> [f64; 4] {
+    let phi = resolvent_dominant_root(a, b, c, d);
+    let l1 = a / 2.0;
+    let l3 = b / 6.0 + phi / 2.0;
+    let del2 = c - a * l3;
+    // d₂ from the (2,2) entry of the LDLᵀ factorisation, and d − l₃², which is d₂·l₂² when
+    // d₃ = 0; with del2 = 2·d₂·l₂ they give three algebraically equal (d₂, l₂) pairs, of which
+    // the one that best reproduces b, c, d is kept (rounding makes them differ).
+    let d2_direct = 2.0 * b / 3.0 - phi - l1 * l1;
+    let d_minus_l3sq = d - l3 * l3;
+    let mut best: Option<(f64, f64, f64)> = None;
+    let mut consider = |d2: f64, l2: f64| {
+        let err = ldlt_error(b, c, d, d2, l1, l2, l3);
+        if err.is_finite() && best.is_none_or(|(e, _, _)| err < e) {
+            best = Some((err, d2, l2));
+        }
+    };
+    if d2_direct != 0.0 {
+        consider(d2_direct, del2 / (2.0 * d2_direct));
+    }
+    if del2 != 0.0 {
+        let l2 = 2.0 * d_minus_l3sq / del2;
+        if l2 != 0.0 {
+            consider(del2 / (2.0 * l2), l2);
+        }
+        consider(d2_direct, l2);
+    }
+    let (d2, l2) = best.map_or((0.0, 0.0), |(_, d2, l2)| (d2, l2));
+
+    // The main branch (d₂ ≠ 0): real factors for d₂ < 0, complex-conjugate ones for d₂ > 0.
+    let main: Option<(Factors, f64)> = if d2 < 0.0 {
+        let f = real_branch(a, b, c, d, l1, l2, l3, (-d2).sqrt());
+        Some((Factors::Real(f), coefficient_error(a, b, c, d, f)))
+    } else if d2 > 0.0 {
+        let g = d2.sqrt();
+        let f = Factors::Complex {
+            alpha: (l1, g),
+            beta: (l3, g * l2),
+        };
+        let err = f.error(a, b, c, d);
+        Some((f, err))
+    } else {
+        None
+    };
+
+    // The d₂ ≈ 0 branch, with the Remarks' switching test; it is used when its backward error
+    // is smaller than the main branch's.
+    let near_zero = d2.abs() <= SQRT_EPS * ((2.0 * b / 3.0).abs() + phi.abs() + l1 * l1);
+    let chosen = match main {
+        Some((f, _)) if !near_zero => f,
+        main => {
+            let d3 = d - l3 * l3;
+            let alt = if d3 <= 0.0 {
+                let r = (-d3).sqrt();
+                let (b1, b2) = balance_product(l3 + r, l3 - r, d);
+                Factors::Real([l1, b1, l1, b2])
+            } else {
+                Factors::Complex {
+                    alpha: (l1, 0.0),
+                    beta: (l3, d3.sqrt()),
+                }
+            };
+            match main {
+                Some((f, err0)) if err0 <= alt.error(a, b, c, d) => f,
+                _ => alt,
+            }
+        }
+    };
+    chosen.real()
+}
+
+/// The two quadratic factors in one of the two forms the branches produce.
+#[derive(Clone, Copy)]
+enum Factors {
+    /// `[α₁, β₁, α₂, β₂]`, all real.
+    Real([f64; 4]),
+    /// `x² + αx + β` and its conjugate, with `α = (re, im)`, `β = (re, im)`.
+    Complex { alpha: (f64, f64), beta: (f64, f64) },
+}
+
+impl Factors {
+    /// Sum of relative errors with which the factors reproduce `a, b, c, d`.
+    fn error(self, a: f64, b: f64, c: f64, d: f64) -> f64 {
+        match self {
+            Factors::Real(f) => coefficient_error(a, b, c, d, f),
+            Factors::Complex {
+                alpha: (ar, ai),
+                beta: (br, bi),
+            } => {
+                // (x² + αx + β)(x² + ᾱx + β̄) = x⁴ + 2Re α·x³ + (|α|² + 2Re β)·x²
+                //                                 + 2Re(α·β̄)·x + |β|².
+                rel(2.0 * ar, a)
+                    + rel(ar * ar + ai * ai + 2.0 * br, b)
+                    + rel(2.0 * (ar * br + ai * bi), c)
+                    + rel(br * br + bi * bi, d)
+            }
+        }
+    }
+
+    /// The real quadratic factors. For the complex form they are `(x − z)(x − z̄)` for the two
+    /// roots `z` of `x² + αx + β` (the quartic's roots are those and their conjugates).
+    fn real(self) -> [f64; 4] {
+        match self {
+            Factors::Real(f) => f,
+            Factors::Complex { alpha, beta } => {
+                let half = (-alpha.0 / 2.0, -alpha.1 / 2.0);
+                // z = −α/2 ± √(α²/4 − β); the larger one from the formula, the other from the
+                // product z₁z₂ = β, so neither suffers cancellation.
+                let disc = csub(cmul(half, half), beta);
+                let sq = csqrt(disc);
+                let z1 = cadd(half, sq);
+                let z2 = csub(half, sq);
+                let (zmax, zmin_direct) = if cabs2(z1) >= cabs2(z2) {
+                    (z1, z2)
+                } else {
+                    (z2, z1)
+                };
+                let zmin = if cabs2(zmax) > 0.0 {
+                    cdiv(beta, zmax)
+                } else {
+                    zmin_direct
+                };
+                [-2.0 * zmax.0, cabs2(zmax), -2.0 * zmin.0, cabs2(zmin)]
+            }
+        }
+    }
+}
+
+/// Case `d₂ < 0` (the paper's Case I): the real factors, with the smaller `|β|` recomputed from
+/// `β₁β₂ = d` and the smaller `|α|` from whichever of the three equations that involve it
+/// reproduces `a, b, c` best.
+#[allow(clippy::too_many_arguments)]
+fn real_branch(a: f64, b: f64, c: f64, d: f64, l1: f64, l2: f64, l3: f64, g: f64) -> [f64; 4] {
+    let mut a1 = l1 + g;
+    let mut a2 = l1 - g;
+    let (b1, b2) = balance_product(l3 + g * l2, l3 - g * l2, d);
+    // Each candidate solves one of α₁ + α₂ = a, β₁ + α₁α₂ + β₂ = b, α₁β₂ + β₁α₂ = c for the
+    // smaller α (the larger one is the accurate sum l₁ ± γ without cancellation).
+    let pick = |cands: [Option<f64>; 3], set: &dyn Fn(f64) -> [f64; 4]| -> f64 {
+        let mut best = (f64::INFINITY, f64::NAN);
+        for x in cands.into_iter().flatten() {
+            let f = set(x);
+            let err = rel(f[0] + f[2], a)
+                + rel(f[1] + f[0] * f[2] + f[3], b)
+                + rel(f[0] * f[3] + f[1] * f[2], c);
+            if err < best.0 || best.1.is_nan() {
+                best = (err, x);
+            }
+        }
+        best.1
+    };
+    if a1.abs() < a2.abs() {
+        let cands = [
+            (b2 != 0.0).then(|| (c - b1 * a2) / b2),
+            (a2 != 0.0).then(|| (b - b1 - b2) / a2),
+            Some(a - a2),
+        ];
+        a1 = pick(cands, &|x| [x, b1, a2, b2]);
+    } else {
+        let cands = [
+            (b1 != 0.0).then(|| (c - a1 * b2) / b1),
+            (a1 != 0.0).then(|| (b - b1 - b2) / a1),
+            Some(a - a1),
+        ];
+        a2 = pick(cands, &|x| [a1, b1, x, b2]);
+    }
+    [a1, b1, a2, b2]
+}
+
+/// The pair `(β₁, β₂)` with the smaller one recomputed as `d / larger`: a product is accurate
+/// where a difference `l₃ − γ·l₂` may have cancelled.
+fn balance_product(b1: f64, b2: f64, d: f64) -> (f64, f64) {
+    if b2.abs() < b1.abs() {
+        (b1, d / b1)
+    } else if b2.abs() > b1.abs() {
+        (d / b2, b2)
+    } else {
+        (b1, b2)
+    }
+}
+
+/// The dominant (largest-magnitude) root `φ₀` of the resolvent cubic `det M(φ) = 0`, i.e.
+/// `φ³ + g·φ + h = 0`, refined by Newton's method.
+///
+/// `g` and `h` are invariant under a shift `x → y + σ` of the quartic, so they are computed
+/// from the shifted quartic whose `y²` coefficient vanishes (σ a root of `6σ² + 3aσ + b`, the
+/// smaller one, when real) or else whose `y³` coefficient does (σ = −a/4): that is what keeps
+/// `g` and `h` free of cancellation.
+fn resolvent_dominant_root(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    let disc = 9.0 * a * a - 24.0 * b;
+    let s = if disc > 0.0 {
+        -2.0 * b / (3.0 * a + disc.sqrt().copysign(a))
+    } else {
+        -a / 4.0
+    };
+    let aq = a + 4.0 * s;
+    let bq = b + 3.0 * s * (a + 2.0 * s);
+    let cq = c + s * (2.0 * b + s * (3.0 * a + 4.0 * s));
+    let dq = d + s * (c + s * (b + s * (a + s)));
+    let gg = bq * bq / 9.0;
+    let hh = aq * cq;
+    let g = hh - 4.0 * dq - 3.0 * gg;
+    let h = (8.0 * dq + hh - 2.0 * gg) * bq / 3.0 - cq * cq - dq * aq * aq;
+
+    let mut x = depressed_cubic_dominant_root(g, h);
+    // Newton refinement, stopped as soon as the residual no longer decreases.
+    let f = |x: f64| x.mul_add(x * x + g, h);
+    let mut fx = f(x);
+    let scale = (x * x * x).abs().max((g * x).abs()).max(h.abs());
+    if fx.abs() > f64::EPSILON * scale {
+        for _ in 0..8 {
+            let df = 3.0 * x * x + g;
+            if df == 0.0 {
+                break;
+            }
+            let next = x - fx / df;
+            let fnext = f(next);
+            if fnext.abs() >= fx.abs() || fnext.is_nan() {
+                break;
+            }
+            x = next;
+            fx = fnext;
+            if fx == 0.0 {
+                break;
+            }
+        }
+    }
+    x
+}
+
+/// The root of largest magnitude of `x³ + g·x + h`, in closed form (trigonometric when there
+/// are three real roots, Cardano with the cancellation-free sign choice otherwise).
+fn depressed_cubic_dominant_root(g: f64, h: f64) -> f64 {
+    let q = -g / 3.0;
+    let r = h / 2.0;
+    if r == 0.0 {
+        // x(x² + g): roots 0 and ±√−g.
+        return if g <= 0.0 { (-g).sqrt() } else { 0.0 };
+    }
+    let q3 = q * q * q;
+    let r2 = r * r;
+    if r2 < q3 {
+        // Three real roots −2√Q·cos((θ + 2πk)/3), cos θ = R/Q^(3/2); k = 0 is the largest in
+        // magnitude when θ < π/2, otherwise k = 1.
+        let theta = (r / q3.sqrt()).clamp(-1.0, 1.0).acos();
+        let m = -2.0 * q.sqrt();
+        if theta < std::f64::consts::FRAC_PI_2 {
+            m * (theta / 3.0).cos()
+        } else {
+            m * ((theta + 2.0 * std::f64::consts::PI) / 3.0).cos()
+        }
+    } else {
+        let big = -(r.abs() + (r2 - q3).sqrt()).cbrt().copysign(r);
+        let small = if big == 0.0 { 0.0 } else { q / big };
+        big + small
+    }
+}
+
+/// Backward error of an LDLᵀ candidate: how well `d₂ + l₁² + 2l₃`, `2d₂l₂ + 2l₁l₃` and
+/// `d₂l₂² + l₃²` reproduce `b`, `c`, `d` (eqs. 29–30 of the paper).
+fn ldlt_error(b: f64, c: f64, d: f64, d2: f64, l1: f64, l2: f64, l3: f64) -> f64 {
+    rel(d2 + l1 * l1 + 2.0 * l3, b)
+        + rel(2.0 * d2 * l2 + 2.0 * l1 * l3, c)
+        + rel(d2 * l2 * l2 + l3 * l3, d)
+}
+
+/// Sum of the relative errors with which real factors `[α₁, β₁, α₂, β₂]` reproduce the
+/// monic quartic's `a, b, c, d`.
+fn coefficient_error(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> f64 {
+    let r = residual(a, b, c, d, f);
+    rel_residual(r, [a, b, c, d])
+}
+
+/// `|x − reference| / |reference|`, or `|x|` for a zero reference.
+fn rel(x: f64, reference: f64) -> f64 {
+    if reference == 0.0 {
+        x.abs()
+    } else {
+        ((x - reference) / reference).abs()
+    }
+}
+
+/// The residuals of `α₁ + α₂ = a`, `β₁ + α₁α₂ + β₂ = b`, `α₁β₂ + β₁α₂ = c`, `β₁β₂ = d`, with
+/// fused multiply-adds so that a tiny residual is not lost to the rounding of a product.
+fn residual(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
+    let [a1, b1, a2, b2] = f;
+    [
+        (a1 - a) + a2,
+        a1.mul_add(a2, (b1 - b) + b2),
+        a1.mul_add(b2, b1.mul_add(a2, -c)),
+        b1.mul_add(b2, -d),
+    ]
+}
+
+/// Sum of residuals, each relative to its coefficient (absolute for a zero coefficient).
+fn rel_residual(r: [f64; 4], coef: [f64; 4]) -> f64 {
+    r.iter()
+        .zip(coef)
+        .map(|(&ri, ci)| if ci == 0.0 { ri.abs() } else { (ri / ci).abs() })
+        .sum()
+}
+
+/// Newton's method on the four equations tying the factors to the coefficients (sec. 2.3 of
+/// the paper), stopped when the relative residual no longer decreases; the iterate with the
+/// smallest absolute residual is kept.
+fn polish_factors(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
+    let coef = [a, b, c, d];
+    let mut x = f;
+    let mut r = residual(a, b, c, d, x);
+    let mut err_rel = rel_residual(r, coef);
+    let abs_sum = |r: [f64; 4]| r.iter().map(|v| v.abs()).sum::<f64>();
+    let mut best = (abs_sum(r), x);
+    if !best.0.is_finite() || best.0 == 0.0 {
+        return x;
+    }
+    for _ in 0..20 {
+        let Some(step) = factor_newton_step(x, r) else {
+            break;
+        };
+        let next = [
+            x[0] - step[0],
+            x[1] - step[1],
+            x[2] - step[2],
+            x[3] - step[3],
+        ];
+        if !next.iter().all(|v| v.is_finite()) {
+            break;
+        }
+        x = next;
+        r = residual(a, b, c, d, x);
+        let e_abs = abs_sum(r);
+        if e_abs < best.0 {
+            best = (e_abs, x);
+        }
+        let e_rel = rel_residual(r, coef);
+        if e_abs == 0.0 || e_rel >= err_rel || e_rel.is_nan() {
+            break;
+        }
+        err_rel = e_rel;
+    }
+    best.1
+}
+
+/// Solves `J·Δ = r` for the Jacobian `J` of the factor equations at `[α₁, β₁, α₂, β₂]`.
+///
+/// Eliminating `Δα₂ = r_a − Δα₁` leaves a 3×3 system whose determinant is the resultant of
+/// the two quadratic factors, `(α₂ − α₁)(α₂β₁ − α₁β₂) + (β₂ − β₁)²`; it vanishes when the
+/// factors share a root, and then no step is taken.
+fn factor_newton_step(f: [f64; 4], r: [f64; 4]) -> Option<[f64; 4]> {
+    let [a1, b1, a2, b2] = f;
+    let [ra, rb, rc, rd] = r;
+    let da = a2 - a1;
+    let db = b2 - b1;
+    let s1 = rb - a1 * ra;
+    let s2 = rc - b1 * ra;
+    let s3 = rd;
+    let det = da * (a2 * b1 - a1 * b2) + db * db;
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let u1 = (s1 * (a2 * b1 - a1 * b2) + s2 * db + s3 * (a1 - a2)) / det;
+    let v1 = (da * (s2 * b1 - a1 * s3) - s1 * db * b1 + db * s3) / det;
+    let v2 = (da * (a2 * s3 - s2 * b2) - db * s3 + s1 * db * b2) / det;
+    let u2 = ra - u1;
+    Some([u1, v1, u2, v2])
+}
+
+type C = (f64, f64);
+
+fn cadd(x: C, y: C) -> C {
+    (x.0 + y.0, x.1 + y.1)
+}
+fn csub(x: C, y: C) -> C {
+    (x.0 - y.0, x.1 - y.1)
+}
+fn cmul(x: C, y: C) -> C {
+    (x.0 * y.0 - x.1 * y.1, x.0 * y.1 + x.1 * y.0)
+}
+fn cabs2(x: C) -> f64 {
+    x.0 * x.0 + x.1 * x.1
+}
+fn cdiv(x: C, y: C) -> C {
+    let n = cabs2(y);
+    ((x.0 * y.0 + x.1 * y.1) / n, (x.1 * y.0 - x.0 * y.1) / n)
+}
+/// Principal square root, computed without cancellation.
+fn csqrt(z: C) -> C {
+    let (x, y) = z;
+    if x == 0.0 && y == 0.0 {
+        return (0.0, 0.0);
+    }
+    let m = x.hypot(y);
+    let t = ((x.abs() + m) / 2.0).sqrt();
+    if x >= 0.0 {
+        (t, y / (2.0 * t))
+    } else {
+        ((y / (2.0 * t)).abs(), t.copysign(y))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::cubic::TOUCH_FACTOR;
+    use super::super::horner::is_root_within;
+    use super::*;
+
+    fn is_root(p: &[f64; 5], x: f64) -> bool {
+        is_root_within(p, x, TOUCH_FACTOR)
+    }
+
+    #[test]
+    fn factor_newton_converges_quadratically() {
+        // (x² − 3x + 2)(x² + x + 5) = x⁴ − 2x³ + 4x² − 13x + 10, from a perturbed start.
+        let (a, b, c, d) = (-2.0, 4.0, -13.0, 10.0);
+        let f = polish_factors(
+            a,
+            b,
+            c,
+            d,
+            [-3.0 + 1e-3, 2.0 - 1e-3, 1.0 + 2e-3, 5.0 + 1e-3],
+        );
+        for (x, y) in f.iter().zip([-3.0, 2.0, 1.0, 5.0]) {
+            assert!((x - y).abs() <= 4.0 * f64::EPSILON * y.abs(), "{f:?}");
+        }
+    }
+
+    #[test]
+    fn resolvent_root_is_a_root() {
+        let (a, b, c, d) = (-10.0, 35.0, -50.0, 24.0);
+        let phi = resolvent_dominant_root(a, b, c, d);
+        // det M(φ) = 0
+        let m = [
+            [1.0, a / 2.0, b / 6.0 + phi / 2.0],
+            [a / 2.0, 2.0 * b / 3.0 - phi, c / 2.0],
+            [b / 6.0 + phi / 2.0, c / 2.0, d],
+        ];
+        let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        assert!(det.abs() < 1e-9, "{det}");
+    }
+
+    #[test]
+    fn remark_cases() {
+        // Remark 2022: x⁴ + 2.2459773428819827x³ − 14.480985471938862x² − 17.678187643398402x + 1
+        let r = solve_quartic(
+            1.0,
+            2.2459773428819827,
+            -14.480985471938862,
+            -17.678187643398402,
+            1.0,
+        );
+        assert_eq!(r.len(), 4, "{r:?}");
+        for &x in &r {
+            assert!(is_root(
+                &[
+                    1.0,
+                    2.2459773428819827,
+                    -14.480985471938862,
+                    -17.678187643398402,
+                    1.0
+                ],
+                x
+            ));
+        }
+        // Remark 2024: x⁴ − 11x² − 46 (through the general path too, not only as biquadratic).
+        let f = polish_factors(0.0, -11.0, 0.0, -46.0, factor(0.0, -11.0, 0.0, -46.0));
+        let mut roots = RootBuf::default();
+        let p = [1.0, 0.0, -11.0, 0.0, -46.0];
+        push_quadratic_roots(&p, 1.0, f[0], f[1], &mut roots);
+        push_quadratic_roots(&p, 1.0, f[2], f[3], &mut roots);
+        let x = (0.5 * (11.0 + 305f64.sqrt())).sqrt();
+        let mut got = roots.as_mut_slice().to_vec();
+        got.sort_by(f64::total_cmp);
+        assert_eq!(got.len(), 2, "{got:?}");
+        assert!((got[0] + x).abs() <= 4.0 * f64::EPSILON * x);
+        assert!((got[1] - x).abs() <= 4.0 * f64::EPSILON * x);
+    }
+
+    #[test]
+    fn degenerate_dispatch() {
+        assert_eq!(
+            solve_quartic(0.0, 1.0, -6.0, 11.0, -6.0).as_slice(),
+            &[1.0, 2.0, 3.0]
+        );
+        assert_eq!(
+            solve_quartic(1.0, -6.0, 11.0, -6.0, 0.0).as_slice(),
+            &[0.0, 1.0, 2.0, 3.0]
+        );
+        // (x² − 1)(x² − 4)
+        assert_eq!(
+            solve_quartic(1.0, 0.0, -5.0, 0.0, 4.0).as_slice(),
+            &[-2.0, -1.0, 1.0, 2.0]
+        );
+        assert!(solve_quartic(0.0, 0.0, 0.0, 0.0, 0.0).is_empty());
+        assert!(solve_quartic(f64::INFINITY, 0.0, 0.0, 0.0, 1.0).is_empty());
+    }
+}
