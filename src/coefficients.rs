@@ -99,11 +99,19 @@ impl Gap {
 
     /// `g(s) = |d(s)|² − radius²`, with the subtraction done inside fused multiply-adds so
     /// that its sign is right when the distance is within rounding of the radius.
+    ///
+    /// The larger component goes last whatever the axes, so that rotating or reflecting the
+    /// whole configuration by quarter turns changes nothing, bit for bit.
     pub fn value(&self, s: f64) -> f64 {
         let d = self.separation(s);
+        let (big, small) = if d.x.abs() >= d.y.abs() {
+            (d.x, d.y)
+        } else {
+            (d.y, d.x)
+        };
         let r2 = self.radius * self.radius;
         let r2_err = self.radius.mul_add(self.radius, -r2);
-        d.x.mul_add(d.x, d.y.mul_add(d.y, -r2)) - r2_err
+        big.mul_add(big, small.mul_add(small, -r2)) - r2_err
     }
 
     /// `½·g′(s) = d(s)·d′(s)`: negative while the balls approach.
