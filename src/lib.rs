@@ -22,11 +22,14 @@
 //! ```
 #![warn(missing_docs)]
 
+pub mod batch;
 pub mod coefficients;
 pub mod collision;
 pub mod error;
 pub mod motion;
 pub mod poly;
+#[cfg(feature = "python")]
+mod python;
 
 pub use coefficients::Gap;
 pub use collision::{CollisionOptions, collision_time, collision_time_with};
