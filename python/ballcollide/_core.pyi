@@ -1,0 +1,74 @@
+"""ballcollide's compiled core (Rust, pyo3).
+
+These functions take arrays exactly as the Rust core reads them — C-contiguous float64, of
+the right shapes — and raise ``ValueError`` otherwise. Use the functions of the
+``ballcollide`` package, which accept any array-like and convert it once.
+"""
+
+from typing import Optional, Union
+
+import numpy as np
+import numpy.typing as npt
+
+_F64Array1 = npt.NDArray[np.float64]
+_F64Array2 = npt.NDArray[np.float64]
+_PerPair = Union[float, npt.NDArray[np.float64]]
+
+__version__: str
+
+def collision_times(
+    pos_a: _F64Array2,
+    vel_a: _F64Array2,
+    friction_a: _PerPair,
+    pos_b: _F64Array2,
+    vel_b: _F64Array2,
+    friction_b: _PerPair,
+    radius: _PerPair,
+    t_max: Optional[_PerPair] = None,
+    num_threads: Optional[int] = None,
+) -> _F64Array1:
+    """Collision times of N pairs, ``inf`` where none (see ``ballcollide.collision_times``).
+
+    ``pos_*``, ``vel_*``: C-contiguous float64 arrays of shape ``(N, 2)``; ``friction_*``,
+    ``radius``, ``t_max`` (``None``: ``inf``): a float or a contiguous float64 array of shape
+    ``(N,)``. ``num_threads``: ``None`` for all cores, else ``≥ 1``. Releases the GIL.
+
+    Raises ``ValueError`` naming the argument and first bad index for invalid values,
+    wrong shapes, lengths or layouts, and ``TypeError`` for other types or dtypes.
+    """
+
+def collision_time(
+    pos_a: tuple[float, float],
+    vel_a: tuple[float, float],
+    friction_a: float,
+    pos_b: tuple[float, float],
+    vel_b: tuple[float, float],
+    friction_b: float,
+    radius: float,
+    t_max: float = ...,
+) -> float:
+    """The collision time of one pair, ``inf`` if none (see ``ballcollide.collision_time``).
+
+    Identical to the corresponding row of :func:`collision_times`; errors name the argument
+    without an index.
+    """
+
+def positions_at(
+    pos: _F64Array2,
+    vel: _F64Array2,
+    friction: _PerPair,
+    t: _PerPair,
+    num_threads: Optional[int] = None,
+) -> _F64Array2:
+    """Centres of N balls at time ``t``, shape ``(N, 2)`` (see ``ballcollide.positions_at``).
+
+    A ball that has stopped stays where it stopped. Releases the GIL.
+    """
+
+def real_roots(coeffs: _F64Array2) -> _F64Array2:
+    """Real roots of N polynomials (see ``ballcollide.real_roots``).
+
+    ``coeffs``: C-contiguous float64, shape ``(N, k+1)`` with ``k = 1..4``, highest degree
+    first. Returns shape ``(N, k)``: real roots ascending with multiplicity, NaN-padded.
+    A non-finite coefficient raises ``ValueError`` naming ``coeffs[i]``. Releases the GIL.
+    """

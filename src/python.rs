@@ -1,0 +1,290 @@
+//! The Python extension module `ballcollide._core` (feature `python`).
+//!
+//! A thin layer: it checks that arrays have the layout the Rust core reads without copying
+//! (C-contiguous float64, the right shapes), releases the GIL, and calls [`crate::batch`] and
+//! [`crate::poly`]. Everything else — validation of values, the search itself — is the core's,
+//! so Python and Rust give identical answers and identical error messages.
+//!
+//! The friendly entry points, which accept lists, any real dtype, Fortran order and strided
+//! views, are in `python/ballcollide/__init__.py`; they normalise with
+//! `np.ascontiguousarray(x, dtype=np.float64)` and call these functions.
+//!
+//! Errors: an [`InputError`] becomes `ValueError` with its message (argument name and index);
+//! a wrong layout or shape is a `ValueError` naming the argument; a wrong type or dtype is a
+//! `TypeError` naming it too. Nothing here panics on any input.
+
+use std::num::NonZeroUsize;
+
+use numpy::ndarray::{Dim, Dimension, Ix2};
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray, PyReadonlyArray1};
+use numpy::{PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use rayon::prelude::*;
+
+use crate::batch::{self, Pairs, PerPair, Threads};
+use crate::error::{InputError, InputErrorKind};
+use crate::poly::{self, RealRoots};
+
+/// A scalar parameter from Python: one float for all pairs, or a float64 array of one per pair.
+enum Param<'py> {
+    Each(PyReadonlyArray1<'py, f64>),
+    All(f64),
+}
+
+impl<'py> Param<'py> {
+    /// A float (or anything with `__float__`, such as a 0-d array), or a 1-D float64 array.
+    fn extract(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Self> {
+        match obj.cast::<PyUntypedArray>() {
+            Ok(a) if a.ndim() > 0 => array(name, obj, PER_PAIR).map(Self::Each),
+            _ => obj
+                .extract::<f64>()
+                .map(Self::All)
+                .map_err(|_| type_error(name, PER_PAIR, obj)),
+        }
+    }
+
+    fn per_pair(&self, name: &str) -> PyResult<PerPair<'_>> {
+        match self {
+            Self::All(x) => Ok(PerPair::All(*x)),
+            Self::Each(a) => a
+                .as_slice()
+                .map(PerPair::Each)
+                .map_err(|_| layout_error(name)),
+        }
+    }
+}
+
+const PER_PAIR: &str = "a float or a 1-D float64 array";
+const ROWS: &str = "a 2-D float64 array of shape (N, 2)";
+
+/// `obj` as a float64 numpy array of dimension `D`, borrowed read-only; a `TypeError` naming
+/// the argument otherwise.
+fn array<'py, D: Dimension>(
+    name: &str,
+    obj: &Bound<'py, PyAny>,
+    expected: &str,
+) -> PyResult<PyReadonlyArray<'py, f64, D>> {
+    obj.extract::<PyReadonlyArray<'py, f64, D>>()
+        .map_err(|_| type_error(name, expected, obj))
+}
+
+fn type_error(name: &str, expected: &str, obj: &Bound<'_, PyAny>) -> PyErr {
+    let found = match obj.cast::<PyUntypedArray>() {
+        Ok(a) => format!("a {}-D array of dtype {}", a.ndim(), a.dtype()),
+        Err(_) => obj
+            .get_type()
+            .name()
+            .map_or_else(|_| "another type".to_owned(), |n| n.to_string()),
+    };
+    PyTypeError::new_err(format!("{name}: expected {expected}, got {found}"))
+}
+
+fn layout_error(name: &str) -> PyErr {
+    PyValueError::new_err(format!(
+        "{name}: expected a C-contiguous, aligned float64 array \
+         (the ballcollide functions convert any array-like)"
+    ))
+}
+
+fn value_error(e: InputError) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// The rows of an `(N, 2)` C-contiguous float64 array, without copying.
+fn rows<'a>(name: &str, a: &'a PyReadonlyArray2<'_, f64>) -> PyResult<&'a [[f64; 2]]> {
+    let shape = a.shape();
+    if shape[1] != 2 {
+        return Err(PyValueError::new_err(format!(
+            "{name}: expected shape (N, 2), got ({}, {})",
+            shape[0], shape[1]
+        )));
+    }
+    // A Fortran-ordered array is contiguous too, and `as_slice` would read it column by
+    // column: only C order gives rows.
+    if !a.is_c_contiguous() {
+        return Err(layout_error(name));
+    }
+    let flat = a.as_slice().map_err(|_| layout_error(name))?;
+    Ok(flat.as_chunks::<2>().0)
+}
+
+/// `num_threads`: `None` → every core; `n ≥ 1` → at most `n` (and at most the cores there are,
+/// so that a huge `n` cannot start thousands of threads).
+fn threads(num_threads: Option<i64>) -> PyResult<Threads> {
+    match num_threads {
+        None => Ok(Threads::All),
+        Some(n) if n >= 1 => {
+            let cores = std::thread::available_parallelism().map_or(1, NonZeroUsize::get);
+            let n = usize::try_from(n).unwrap_or(usize::MAX).min(cores);
+            Ok(NonZeroUsize::new(n).map_or(Threads::All, Threads::AtMost))
+        }
+        Some(n) => Err(PyValueError::new_err(format!(
+            "num_threads: must be None (all cores) or ≥ 1, got {n}"
+        ))),
+    }
+}
+
+/// Collision times of N pairs (see `ballcollide.collision_times`); arrays must be
+/// C-contiguous float64.
+#[pyfunction]
+#[pyo3(signature = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max=None, num_threads=None))]
+#[allow(clippy::too_many_arguments)]
+fn collision_times<'py>(
+    py: Python<'py>,
+    pos_a: &Bound<'py, PyAny>,
+    vel_a: &Bound<'py, PyAny>,
+    friction_a: &Bound<'py, PyAny>,
+    pos_b: &Bound<'py, PyAny>,
+    vel_b: &Bound<'py, PyAny>,
+    friction_b: &Bound<'py, PyAny>,
+    radius: &Bound<'py, PyAny>,
+    t_max: Option<&Bound<'py, PyAny>>,
+    num_threads: Option<i64>,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let pos_a = array::<Ix2>("pos_a", pos_a, ROWS)?;
+    let vel_a = array::<Ix2>("vel_a", vel_a, ROWS)?;
+    let friction_a = Param::extract("friction_a", friction_a)?;
+    let pos_b = array::<Ix2>("pos_b", pos_b, ROWS)?;
+    let vel_b = array::<Ix2>("vel_b", vel_b, ROWS)?;
+    let friction_b = Param::extract("friction_b", friction_b)?;
+    let radius = Param::extract("radius", radius)?;
+    let t_max = match t_max {
+        Some(t) => Param::extract("t_max", t)?,
+        None => Param::All(f64::INFINITY),
+    };
+    let pairs = Pairs {
+        pos_a: rows("pos_a", &pos_a)?,
+        vel_a: rows("vel_a", &vel_a)?,
+        friction_a: friction_a.per_pair("friction_a")?,
+        pos_b: rows("pos_b", &pos_b)?,
+        vel_b: rows("vel_b", &vel_b)?,
+        friction_b: friction_b.per_pair("friction_b")?,
+        radius: radius.per_pair("radius")?,
+        t_max: t_max.per_pair("t_max")?,
+    };
+    let threads = threads(num_threads)?;
+    let mut out = vec![0.0; pairs.pos_a.len()];
+    py.detach(|| batch::collision_times(&pairs, &mut out, threads))
+        .map_err(value_error)?;
+    Ok(PyArray1::from_vec(py, out))
+}
+
+/// The collision time of one pair (`inf` if none); the same search as one row of
+/// `collision_times`, without an index in error messages.
+#[pyfunction]
+#[pyo3(signature = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max=f64::INFINITY))]
+#[allow(clippy::too_many_arguments)]
+fn collision_time(
+    pos_a: [f64; 2],
+    vel_a: [f64; 2],
+    friction_a: f64,
+    pos_b: [f64; 2],
+    vel_b: [f64; 2],
+    friction_b: f64,
+    radius: f64,
+    t_max: f64,
+) -> PyResult<f64> {
+    let pairs = Pairs {
+        pos_a: &[pos_a],
+        vel_a: &[vel_a],
+        friction_a: PerPair::All(friction_a),
+        pos_b: &[pos_b],
+        vel_b: &[vel_b],
+        friction_b: PerPair::All(friction_b),
+        radius: PerPair::All(radius),
+        t_max: PerPair::All(t_max),
+    };
+    let mut out = [0.0];
+    batch::collision_times(&pairs, &mut out, Threads::AtMost(NonZeroUsize::MIN))
+        // A single query: the message names the argument, not an index.
+        .map_err(|e| value_error(InputError::new(e.argument(), e.kind())))?;
+    Ok(out[0])
+}
+
+/// Centres of N balls at time `t` (see `ballcollide.positions_at`).
+#[pyfunction]
+#[pyo3(signature = (pos, vel, friction, t, num_threads=None))]
+fn positions_at<'py>(
+    py: Python<'py>,
+    pos: &Bound<'py, PyAny>,
+    vel: &Bound<'py, PyAny>,
+    friction: &Bound<'py, PyAny>,
+    t: &Bound<'py, PyAny>,
+    num_threads: Option<i64>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let pos = array::<Ix2>("pos", pos, ROWS)?;
+    let vel = array::<Ix2>("vel", vel, ROWS)?;
+    let friction = Param::extract("friction", friction)?;
+    let t = Param::extract("t", t)?;
+    let pos = rows("pos", &pos)?;
+    let vel = rows("vel", &vel)?;
+    let friction = friction.per_pair("friction")?;
+    let t = t.per_pair("t")?;
+    let threads = threads(num_threads)?;
+    let n = pos.len();
+    let mut out = vec![[0.0; 2]; n];
+    py.detach(|| batch::positions_at(pos, vel, friction, t, &mut out, threads))
+        .map_err(value_error)?;
+    PyArray1::from_vec(py, out.into_flattened()).reshape(Dim([n, 2]))
+}
+
+/// Real roots of N polynomials of degree k = 1..4, coefficients `(N, k+1)` highest degree
+/// first; `(N, k)` roots ascending with multiplicity, NaN-padded.
+#[pyfunction]
+fn real_roots<'py>(
+    py: Python<'py>,
+    coeffs: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let coeffs = array::<Ix2>("coeffs", coeffs, "a 2-D float64 array of shape (N, k+1)")?;
+    let [n, cols] = [coeffs.shape()[0], coeffs.shape()[1]];
+    if !(2..=5).contains(&cols) {
+        return Err(PyValueError::new_err(format!(
+            "coeffs: expected shape (N, k+1) with degree k = 1..4, got ({n}, {cols})"
+        )));
+    }
+    if !coeffs.is_c_contiguous() {
+        return Err(layout_error("coeffs"));
+    }
+    let flat = coeffs.as_slice().map_err(|_| layout_error("coeffs"))?;
+    if let Some(i) = flat.iter().position(|x| !x.is_finite()) {
+        let err = InputError::new("coeffs", InputErrorKind::NotFinite(flat[i])).at(i / cols);
+        return Err(value_error(err));
+    }
+    let k = cols - 1;
+    let mut out = vec![f64::NAN; n * k];
+    py.detach(|| {
+        out.par_chunks_mut(k)
+            .zip(flat.par_chunks(cols))
+            .with_min_len(1024)
+            .for_each(|(roots_out, c)| {
+                let roots = solve(c);
+                roots_out[..roots.len()].copy_from_slice(&roots);
+            });
+    });
+    PyArray1::from_vec(py, out).reshape(Dim([n, k]))
+}
+
+/// The solver for the degree that `c.len() − 1` names (2..=5 coefficients).
+fn solve(c: &[f64]) -> RealRoots {
+    match *c {
+        [a, b] => poly::solve_linear(a, b),
+        [a, b, cc] => poly::solve_quadratic(a, b, cc),
+        [a, b, cc, d] => poly::solve_cubic(a, b, cc, d),
+        [a, b, cc, d, e] => poly::solve_quartic(a, b, cc, d, e),
+        _ => RealRoots::empty(),
+    }
+}
+
+/// ballcollide's compiled core: collision times of balls slowing under friction, and real
+/// roots of polynomials of degree ≤ 4. Use the `ballcollide` package, which converts its
+/// inputs and calls these functions.
+#[pymodule(name = "_core")]
+fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_function(wrap_pyfunction!(collision_times, m)?)?;
+    m.add_function(wrap_pyfunction!(collision_time, m)?)?;
+    m.add_function(wrap_pyfunction!(positions_at, m)?)?;
+    m.add_function(wrap_pyfunction!(real_roots, m)?)?;
+    Ok(())
+}
