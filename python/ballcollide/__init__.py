@@ -27,7 +27,7 @@ that is not made of real numbers raises ``TypeError``.
 from __future__ import annotations
 
 import operator
-from typing import Any, Optional, Union
+from typing import Any, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -93,7 +93,7 @@ def _scalar(name: str, x: Any) -> float:
     return float(a)
 
 
-def _threads(num_threads: Optional[int]) -> Optional[int]:
+def _threads(num_threads: int | None) -> int | None:
     if num_threads is None:
         return None
     if isinstance(num_threads, (bool, np.bool_)):
@@ -180,7 +180,7 @@ def collision_times(
     radius: PerPair,
     *,
     t_max: PerPair = np.inf,
-    num_threads: Optional[int] = None,
+    num_threads: int | None = None,
 ) -> npt.NDArray[np.float64]:
     """The collision time of each of N pairs of balls (``inf`` where they never touch).
 
@@ -252,7 +252,7 @@ def positions_at(
     friction: PerPair,
     t: PerPair,
     *,
-    num_threads: Optional[int] = None,
+    num_threads: int | None = None,
 ) -> npt.NDArray[np.float64]:
     """The centres of N balls at time ``t``; a ball that has stopped stays where it stopped.
 
@@ -328,7 +328,8 @@ def real_roots(coeffs: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """
     a = _real_array("coeffs", coeffs)
     if a.ndim == 1:
-        return real_roots(a[np.newaxis, :])[0]
+        one: npt.NDArray[np.float64] = real_roots(a[np.newaxis, :])[0]
+        return one
     if a.ndim != 2:
         raise ValueError(f"coeffs: expected shape (N, k+1) with k = 1..4, got {a.shape}")
     return _core.real_roots(np.ascontiguousarray(a, dtype=np.float64))

@@ -5,14 +5,14 @@ the right shapes — and raise ``ValueError`` otherwise. Use the functions of th
 ``ballcollide`` package, which accept any array-like and convert it once.
 """
 
-from typing import Optional, Union
-
 import numpy as np
 import numpy.typing as npt
 
 _F64Array1 = npt.NDArray[np.float64]
 _F64Array2 = npt.NDArray[np.float64]
-_PerPair = Union[float, npt.NDArray[np.float64]]
+_PerPair = float | npt.NDArray[np.float64]
+
+__all__ = ["__version__", "collision_times", "collision_time", "positions_at", "real_roots"]
 
 __version__: str
 
@@ -24,8 +24,8 @@ def collision_times(
     vel_b: _F64Array2,
     friction_b: _PerPair,
     radius: _PerPair,
-    t_max: Optional[_PerPair] = None,
-    num_threads: Optional[int] = None,
+    t_max: _PerPair | None = None,
+    num_threads: int | None = None,
 ) -> _F64Array1:
     """Collision times of N pairs, ``inf`` where none (see ``ballcollide.collision_times``).
 
@@ -58,7 +58,7 @@ def positions_at(
     vel: _F64Array2,
     friction: _PerPair,
     t: _PerPair,
-    num_threads: Optional[int] = None,
+    num_threads: int | None = None,
 ) -> _F64Array2:
     """Centres of N balls at time ``t``, shape ``(N, 2)`` (see ``ballcollide.positions_at``).
 

@@ -1,0 +1,576 @@
+"""The Python API of ballcollide: answers, array handling, errors, threads and the GIL."""
+
+from __future__ import annotations
+
+import doctest
+import re
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import ballcollide as bc
+from ballcollide import _core
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "collision_cases.txt"
+ARGS = ("pos_a", "vel_a", "friction_a", "pos_b", "vel_b", "friction_b", "radius")
+
+
+def random_batch(n: int, seed: int = 0) -> dict:
+    """A batch of table-like pairs, about a third of which collide."""
+    rng = np.random.default_rng(seed)
+    pos_a = rng.uniform(0, 2.5, (n, 2))
+    vel_a = rng.uniform(-3, 3, (n, 2))
+    friction_a = rng.uniform(0, 0.5, n)
+    # B near a point of A's path, give or take a few radii.
+    s = rng.uniform(0, 1, n)[:, None]
+    pos_b = pos_a + vel_a * s + rng.normal(0, 0.1, (n, 2))
+    vel_b = rng.uniform(-1, 1, (n, 2)) * (rng.random(n) < 0.5)[:, None]
+    friction_b = rng.uniform(0, 0.5, n)
+    return {
+        "pos_a": pos_a,
+        "vel_a": vel_a,
+        "friction_a": friction_a,
+        "pos_b": pos_b,
+        "vel_b": vel_b,
+        "friction_b": friction_b,
+        "radius": 0.05715,
+    }
+
+
+def bits(x: np.ndarray) -> np.ndarray:
+    return np.ascontiguousarray(x, dtype=np.float64).view(np.uint64)
+
+
+# --- the reference cases (mpmath, tools/collision_reference.py) --------------------------
+
+
+def _number(text: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        return float.fromhex(text)
+
+
+def load_reference() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    if not DATA.exists():
+        pytest.skip(
+            f"{DATA} is absent: generate the high-precision reference cases with "
+            "tools/collision_reference.py"
+        )
+    lines, rows, categories = [], [], []
+    for number, line in enumerate(DATA.read_text().splitlines(), start=1):
+        fields = line.split()
+        if not fields or fields[0].startswith("#"):
+            continue
+        assert len(fields) == 16, f"{DATA.name}:{number}: expected 16 columns"
+        categories.append(fields[0])
+        rows.append([_number(x) for x in fields[1:]])
+        lines.append(number)
+    return np.array(categories), np.array(rows), np.array(lines)
+
+
+def reference_times(x: np.ndarray, **kwargs) -> np.ndarray:
+    columns = (x[:, 0:2], x[:, 2:4], x[:, 4], x[:, 5:7], x[:, 7:9], x[:, 9], x[:, 10])
+    return bc.collision_times(*columns, t_max=x[:, 11], **kwargs)
+
+
+def test_reference_cases_agree_with_mpmath() -> None:
+    categories, x, lines = load_reference()
+    assert len(x) > 1000
+    t = reference_times(x)
+    t_ref, floor, ambiguous = x[:, 12], x[:, 13], x[:, 14] == 1
+    assert not np.isnan(t).any()
+    assert (t >= 0).all()
+    disagree = (np.isinf(t) != np.isinf(t_ref)) & ~ambiguous
+    assert not disagree.any(), [
+        (int(n), c, float(a), float(b))
+        for n, c, a, b in zip(lines[disagree], categories[disagree], t[disagree], t_ref[disagree])
+    ][:10]
+    both = np.isfinite(t) & np.isfinite(t_ref) & ~ambiguous
+    tolerance = 64 * floor + 4 * np.spacing(np.abs(t_ref))
+    error = np.where(both, np.abs(t - np.where(both, t_ref, 0.0)), 0.0)
+    bad = both & (error > tolerance)
+    assert not bad.any(), [
+        (int(n), c, float(a), float(b), float(f))
+        for n, c, a, b, f in zip(lines[bad], categories[bad], t[bad], t_ref[bad], floor[bad])
+    ][:10]
+    # Every category is exercised, with hits and (where the category has any) misses.
+    for category in np.unique(categories):
+        assert (categories == category).sum() >= 100, category
+
+
+def test_scalar_call_equals_batch_on_reference_cases() -> None:
+    _, x, _ = load_reference()
+    t = reference_times(x)
+    for i in range(0, len(x), 7):
+        row = x[i]
+        one = bc.collision_time(
+            row[0:2], row[2:4], row[4], row[5:7], row[7:9], row[9], row[10], t_max=row[11]
+        )
+        assert bits(np.array([one])) == bits(t[i : i + 1]), i
+
+
+def test_thread_count_does_not_change_any_bit() -> None:
+    batch = random_batch(50_000, seed=3)
+    ref = bc.collision_times(**batch, num_threads=1)
+    assert np.isfinite(ref).sum() > 1000  # the batch has many hits
+    for threads in (2, 3, None):
+        np.testing.assert_array_equal(
+            bits(bc.collision_times(**batch, num_threads=threads)), bits(ref)
+        )
+    if DATA.exists():
+        _, x, _ = load_reference()
+        one = reference_times(x, num_threads=1)
+        np.testing.assert_array_equal(bits(reference_times(x, num_threads=2)), bits(one))
+        np.testing.assert_array_equal(bits(reference_times(x)), bits(one))
+
+
+# --- simple answers ----------------------------------------------------------------------
+
+
+def test_head_on_and_miss() -> None:
+    t = bc.collision_times(
+        [[0, 0], [0, 0]], [[1, 0], [1, 0]], 0.0, [[1, 0], [1, 5]], [[0, 0], [0, 0]], 0.0, 0.5
+    )
+    assert t.dtype == np.float64 and t.shape == (2,)
+    assert t[0] == 0.5 and t[1] == np.inf
+
+
+def test_friction_can_stop_a_ball_short() -> None:
+    # 2 m/s at 8 m/s²: stops after 0.25 m, short of the 0.5 m gap.
+    assert bc.collision_time([0, 0], [2, 0], 8.0, [1, 0], [0, 0], 0.0, 0.5) == np.inf
+    # ... but a ball rolling into it after it stopped still hits it.
+    t = bc.collision_time([0, 0], [2, 0], 8.0, [2, 0], [-1, 0], 0.0, 0.5)
+    assert t == pytest.approx(1.25, rel=1e-15)
+
+
+def test_horizon() -> None:
+    args = ([0, 0], [1, 0], 0.0, [1, 0], [0, 0], 0.0, 0.5)
+    assert bc.collision_time(*args, t_max=0.6) == 0.5
+    assert bc.collision_time(*args, t_max=0.5) == np.inf  # at t ≥ t_max: none
+    t = bc.collision_times(*[[a] if isinstance(a, list) else a for a in args], t_max=[0.4])
+    assert t[0] == np.inf
+
+
+def test_overlapping_at_start() -> None:
+    # Overlapping and approaching: 0. Overlapping and separating: no collision.
+    assert bc.collision_time([0, 0], [1, 0], 0.0, [0.3, 0], [0, 0], 0.0, 0.5) == 0.0
+    assert bc.collision_time([0, 0], [-1, 0], 0.0, [0.3, 0], [0, 0], 0.0, 0.5) == np.inf
+
+
+def test_empty_batch() -> None:
+    empty = np.zeros((0, 2))
+    t = bc.collision_times(empty, empty, 0.1, empty, empty, 0.1, 1.0)
+    assert t.shape == (0,) and t.dtype == np.float64
+    assert bc.positions_at(empty, empty, 0.1, 1.0).shape == (0, 2)
+    assert bc.real_roots(np.zeros((0, 5))).shape == (0, 4)
+
+
+# --- array handling ----------------------------------------------------------------------
+
+
+def test_broadcasting_scalars_and_per_pair_values() -> None:
+    batch = random_batch(3000, seed=5)
+    n = len(batch["pos_a"])
+    ref = bc.collision_times(**{**batch, "friction_b": 0.2}, t_max=1.5)
+    variants = [
+        {"friction_b": np.full(n, 0.2)},
+        {"friction_b": np.float64(0.2)},
+        {"friction_b": np.array(0.2)},  # 0-d
+        {"friction_b": [0.2] * n},
+        {"radius": np.full(n, 0.05715)},
+        {"t_max": np.full(n, 1.5)},
+    ]
+    for change in variants:
+        kwargs = {**batch, "friction_b": 0.2, "t_max": 1.5, **change}
+        np.testing.assert_array_equal(bits(bc.collision_times(**kwargs)), bits(ref))
+    # Per-pair values are used per pair.
+    radius = np.where(np.arange(n) % 2 == 0, 0.05715, 0.2)
+    mixed = bc.collision_times(**{**batch, "friction_b": 0.2, "radius": radius}, t_max=1.5)
+    wide = bc.collision_times(**{**batch, "friction_b": 0.2, "radius": 0.2}, t_max=1.5)
+    np.testing.assert_array_equal(mixed[0::2], ref[0::2])
+    np.testing.assert_array_equal(mixed[1::2], wide[1::2])
+
+
+def test_layouts_and_dtypes_give_the_same_answers() -> None:
+    # Values exactly representable in float32, so that every dtype holds the same numbers.
+    batch = {
+        k: (np.asarray(v, dtype=np.float32).astype(np.float64) if k != "radius" else 0.0625)
+        for k, v in random_batch(4000, seed=7).items()
+    }
+    ref = bc.collision_times(**batch)
+    assert np.isfinite(ref).sum() > 100
+    rows = ("pos_a", "vel_a", "pos_b", "vel_b")
+    scalars = ("friction_a", "friction_b")
+
+    def big_strided(a: np.ndarray) -> np.ndarray:
+        holder = np.zeros((a.shape[0] * 2, 5) if a.ndim == 2 else (a.shape[0] * 3,))
+        view = holder[::2, 1:5:2] if a.ndim == 2 else holder[::3]
+        view[...] = a
+        assert not view.flags.c_contiguous
+        return view
+
+    conversions = {
+        "fortran": lambda a: np.asfortranarray(a),
+        "strided": big_strided,
+        "transposed view": lambda a: np.ascontiguousarray(a.T).T,
+        "list": lambda a: a.tolist(),
+        "float32": lambda a: a.astype(np.float32),
+        "longdouble": lambda a: a.astype(np.longdouble),
+        "big-endian": lambda a: a.astype(">f8"),
+        "read-only": lambda a: np.lib.stride_tricks.as_strided(a, writeable=False),
+    }
+    for name, convert in conversions.items():
+        kwargs = dict(batch)
+        for k in rows + scalars:
+            kwargs[k] = convert(batch[k])
+        t = bc.collision_times(**kwargs)
+        np.testing.assert_array_equal(bits(t), bits(ref), err_msg=name)
+    # The Fortran-ordered array really is Fortran-ordered, and the core refuses it directly
+    # (it would read it column by column).
+    fortran = np.asfortranarray(batch["pos_a"])
+    assert fortran.flags.f_contiguous and not fortran.flags.c_contiguous
+    with pytest.raises(ValueError, match="pos_a: expected a C-contiguous"):
+        _core.collision_times(
+            fortran, *(batch[k] for k in ARGS[1:3]), *(batch[k] for k in ARGS[3:])
+        )
+
+
+def test_integer_inputs() -> None:
+    t = bc.collision_times(
+        np.array([[0, 0]], dtype=np.int64), [[2, 0]], 0, [[3, 0]], [[0, 0]], 0, 1
+    )
+    assert t[0] == 1.0
+
+
+def test_scalar_call_matches_batch_on_random_pairs() -> None:
+    batch = random_batch(500, seed=11)
+    t = bc.collision_times(**batch)
+    for i in range(len(t)):
+        one = bc.collision_time(*(batch[k][i] for k in ARGS[:-1]), batch["radius"])
+        assert bits(np.array([one]))[0] == bits(t)[i]
+
+
+def test_contact_distance_at_collision_time() -> None:
+    batch = random_batch(5000, seed=13)
+    t = bc.collision_times(**batch)
+    hit = np.isfinite(t) & (t > 0)
+    assert hit.sum() > 500
+    a = bc.positions_at(batch["pos_a"][hit], batch["vel_a"][hit], batch["friction_a"][hit], t[hit])
+    b = bc.positions_at(batch["pos_b"][hit], batch["vel_b"][hit], batch["friction_b"][hit], t[hit])
+    distance = np.hypot(*(a - b).T)
+    # The answer is the exact contact time to the floor of its conditioning: the distance
+    # then equals the radius closely for all but near-grazing contacts.
+    close = np.abs(distance - batch["radius"]) <= 1e-9 * batch["radius"]
+    assert close.mean() > 0.99
+
+
+# --- positions_at ------------------------------------------------------------------------
+
+
+def test_positions_at() -> None:
+    pos = [[1, 1], [1, 1], [1, 1], [0, 0], [5, -1]]
+    vel = [[2, 0], [2, 0], [2, 0], [3, 4], [0, 0]]
+    friction = [0.5, 0.5, 0.5, 0.0, 0.7]
+    t = [2.0, 4.0, 100.0, 2.0, 3.0]
+    expected = [[4, 1], [5, 1], [5, 1], [6, 8], [5, -1]]
+    np.testing.assert_array_equal(bc.positions_at(pos, vel, friction, t), expected)
+    # Negative times count as 0; one time for all balls broadcasts.
+    np.testing.assert_array_equal(bc.positions_at(pos, vel, friction, -1.0), pos)
+    stopped = bc.positions_at([[1, 1]] * 3, [[2, 0]] * 3, 0.5, [4.0, 4.5, 1e9])
+    np.testing.assert_array_equal(stopped, [[5, 1]] * 3)  # a stopped ball stays put
+
+
+# --- real_roots --------------------------------------------------------------------------
+
+
+def test_real_roots_well_conditioned_vs_numpy_roots() -> None:
+    rng = np.random.default_rng(17)
+    for k in (1, 2, 3, 4):
+        roots = np.sort(
+            rng.choice(np.arange(-20, 21), size=(500, k)) / 4 + rng.random((500, 1)), axis=1
+        )
+        # Keep the roots at least 0.2 apart: well conditioned.
+        keep = np.all(np.diff(roots, axis=1) >= 0.2, axis=1)
+        roots = roots[keep]
+        lead = rng.uniform(0.5, 2, len(roots)) * rng.choice([-1, 1], len(roots))
+        coeffs = np.array([a * np.poly(r) for a, r in zip(lead, roots)])
+        got = bc.real_roots(coeffs)
+        assert got.shape == (len(roots), k)
+        np.testing.assert_allclose(got, roots, rtol=1e-10, atol=1e-12)
+        via_numpy = np.array([np.sort(np.roots(c).real) for c in coeffs])
+        np.testing.assert_allclose(got, via_numpy, rtol=1e-9, atol=1e-10)
+
+
+def test_real_roots_complex_pairs_are_not_real_roots() -> None:
+    # (x² + 1)(x − 2)(x + 3) and (x² + 2x + 5)(x² + 1): 2 and 0 real roots.
+    c1 = np.poly([1j, -1j, 2, -3]).real
+    c2 = np.poly([-1 + 2j, -1 - 2j, 1j, -1j]).real
+    got = bc.real_roots([c1, c2])
+    np.testing.assert_allclose(got[0, :2], [-3, 2], rtol=1e-14)
+    assert np.isnan(got[0, 2:]).all() and np.isnan(got[1]).all()
+    assert np.isnan(bc.real_roots([1, 0, 1])).all()
+
+
+def test_real_roots_double_root() -> None:
+    np.testing.assert_array_equal(bc.real_roots([1.0, -2.0, 1.0]), [1.0, 1.0])  # (x − 1)²
+    np.testing.assert_array_equal(bc.real_roots([[4.0, -4.0, 1.0]]), [[0.5, 0.5]])  # (2x − 1)²
+    # (x − 1)²(x − 3)² and (x − 1)²(x + 2): double roots kept with their multiplicity.
+    quartic = bc.real_roots(np.poly([1, 1, 3, 3]))
+    np.testing.assert_allclose(quartic, [1, 1, 3, 3], rtol=1e-7)
+    cubic = bc.real_roots(np.poly([1, 1, -2]))
+    np.testing.assert_allclose(cubic, [-2, 1, 1], rtol=1e-7)
+
+
+def test_real_roots_leading_zeros_lower_the_degree() -> None:
+    got = bc.real_roots([[0, 0, 1, -3, 2], [0, 0, 0, 2, -1], [0, 0, 0, 0, 5], [0, 0, 0, 0, 0]])
+    np.testing.assert_array_equal(got[0], [1, 2, np.nan, np.nan])
+    np.testing.assert_array_equal(got[1], [0.5, np.nan, np.nan, np.nan])
+    assert np.isnan(got[2:]).all()  # constants have no isolated roots
+
+
+def test_real_roots_accepts_lists_ints_and_layouts() -> None:
+    coeffs = np.array([[1, -10, 35, -50, 24], [2, 0, -2, 0, 0]], dtype=np.int32)
+    ref = bc.real_roots(coeffs.astype(np.float64))
+    np.testing.assert_array_equal(ref, [[1, 2, 3, 4], [-1, 0, 0, 1]])
+    for variant in (coeffs, coeffs.tolist(), np.asfortranarray(coeffs), coeffs[:, ::1].T.copy().T):
+        np.testing.assert_array_equal(bc.real_roots(variant), ref)
+
+
+# --- errors ------------------------------------------------------------------------------
+
+
+def valid(n: int = 4) -> dict:
+    return {
+        "pos_a": np.zeros((n, 2)),
+        "vel_a": np.ones((n, 2)),
+        "friction_a": np.full(n, 0.1),
+        "pos_b": np.full((n, 2), 3.0),
+        "vel_b": np.zeros((n, 2)),
+        "friction_b": np.full(n, 0.1),
+        "radius": np.full(n, 0.5),
+        "t_max": np.full(n, np.inf),
+    }
+
+
+def raises(exc: type, message: str, **kwargs):
+    with pytest.raises(exc, match="^" + re.escape(message)):
+        bc.collision_times(**kwargs)
+
+
+@pytest.mark.parametrize("name", ["pos_a", "vel_a", "pos_b", "vel_b"])
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_non_finite_rows(name: str, bad: float) -> None:
+    kwargs = valid()
+    kwargs[name][2, 1] = bad
+    raises(ValueError, f"{name}[2]: must be finite", **kwargs)
+
+
+@pytest.mark.parametrize("name", ["friction_a", "friction_b", "radius"])
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_non_finite_values(name: str, bad: float) -> None:
+    kwargs = valid()
+    kwargs[name][1] = bad
+    raises(ValueError, f"{name}[1]: must be finite", **kwargs)
+    kwargs[name] = bad  # a scalar: the first pair is the first bad one
+    raises(ValueError, f"{name}[0]: must be finite", **kwargs)
+
+
+def test_bad_values_name_argument_and_index() -> None:
+    kwargs = valid()
+    kwargs["friction_b"][3] = -0.5
+    raises(ValueError, "friction_b[3]: friction must be ≥ 0, got -0.5", **kwargs)
+    kwargs = valid()
+    kwargs["radius"][2] = 0.0
+    raises(ValueError, "radius[2]: radius (sum of the two radii) must be > 0, got 0", **kwargs)
+    kwargs["radius"] = -1.0
+    raises(ValueError, "radius[0]: radius (sum of the two radii) must be > 0, got -1", **kwargs)
+    for t_max in (-1.0, np.nan):
+        kwargs = valid()
+        kwargs["t_max"][1] = t_max
+        raises(ValueError, "t_max[1]: t_max must be ≥ 0", **kwargs)
+
+
+def test_first_bad_index_wins_across_arguments_and_threads() -> None:
+    n = 10_000  # several chunks, computed in parallel
+    kwargs = valid(n)
+    kwargs["pos_a"][7000] = np.nan
+    kwargs["friction_b"][5003] = -1.0
+    kwargs["radius"][9000] = 0.0
+    for threads in (1, 2, None):
+        raises(ValueError, "friction_b[5003]:", **kwargs, num_threads=threads)
+
+
+@pytest.mark.parametrize(
+    ("name", "value", "message"),
+    [
+        ("pos_a", np.zeros(4), "pos_a: expected shape (N, 2), got (4,)"),
+        ("vel_a", np.zeros((4, 3)), "vel_a: expected shape (N, 2), got (4, 3)"),
+        ("pos_b", np.zeros((4, 2, 1)), "pos_b: expected shape (N, 2), got (4, 2, 1)"),
+        ("vel_b", 1.0, "vel_b: expected shape (N, 2), got ()"),
+        ("pos_b", np.zeros((3, 2)), "pos_b: has 3 rows, expected 4"),
+        ("vel_b", np.zeros((5, 2)), "vel_b: has 5 rows, expected 4"),
+        ("friction_a", np.zeros(3), "friction_a: has 3 rows, expected 4"),
+        ("radius", np.ones(5), "radius: has 5 rows, expected 4"),
+        ("t_max", np.ones(1), "t_max: has 1 rows, expected 4"),
+        ("friction_b", np.zeros((4, 1)), "friction_b: expected a scalar or shape (N,)"),
+        ("pos_a", [[0, 0], [1]], "pos_a: cannot be read as an array of numbers"),
+    ],
+)
+def test_wrong_shapes(name: str, value: object, message: str) -> None:
+    raises(ValueError, message, **{**valid(), name: value})
+
+
+@pytest.mark.parametrize("name", [*ARGS, "t_max"])
+@pytest.mark.parametrize(
+    "value",
+    [
+        "abc",
+        None,
+        np.array([["a", "b"]] * 4),
+        np.array([[None, 1.0]] * 4, dtype=object),
+        np.ones((4, 2), dtype=complex),
+        np.ones((4, 2), dtype=bool),
+        np.zeros(4, dtype="datetime64[s]"),
+    ],
+)
+def test_wrong_types(name: str, value: object) -> None:
+    with pytest.raises(TypeError, match=f"^{name}: expected real numbers"):
+        bc.collision_times(**{**valid(), name: value})
+
+
+def test_num_threads_errors() -> None:
+    for bad in (0, -1, -(2**70)):
+        with pytest.raises(ValueError, match=r"^num_threads: must be None"):
+            bc.collision_times(**valid(), num_threads=bad)
+    for bad in (1.5, "2", True):
+        with pytest.raises(TypeError, match=r"^num_threads: expected None or an int"):
+            bc.collision_times(**valid(), num_threads=bad)
+    big = bc.collision_times(**valid(), num_threads=2**70)  # capped to the cores there are
+    np.testing.assert_array_equal(big, bc.collision_times(**valid()))
+    with pytest.raises(ValueError, match=r"^num_threads"):
+        _core.collision_times(*valid().values(), 0)
+
+
+def test_scalar_call_errors_name_the_argument_without_index() -> None:
+    args = [[0, 0], [1, 0], 0.1, [3, 0], [0, 0], 0.1, 0.5]
+    cases = [
+        (0, [np.nan, 0], ValueError, "pos_a: must be finite, got NaN"),
+        (4, [0, np.inf], ValueError, "vel_b: must be finite, got inf"),
+        (2, -0.5, ValueError, "friction_a: friction must be ≥ 0, got -0.5"),
+        (6, 0.0, ValueError, "radius: radius (sum of the two radii) must be > 0, got 0"),
+        (3, [1, 2, 3], ValueError, "pos_b: expected a 2-vector (x, y), got shape (3,)"),
+        (5, [0.1, 0.2], ValueError, "friction_b: expected a scalar, got shape (2,)"),
+        (1, ["a", "b"], TypeError, "vel_a: expected real numbers"),
+    ]
+    for index, value, exc, message in cases:
+        bad = list(args)
+        bad[index] = value
+        with pytest.raises(exc, match="^" + re.escape(message)):
+            bc.collision_time(*bad)
+    with pytest.raises(ValueError, match=r"^t_max: t_max must be ≥ 0"):
+        bc.collision_time(*args, t_max=-1.0)
+
+
+def test_positions_at_errors() -> None:
+    pos, vel = np.zeros((3, 2)), np.ones((3, 2))
+    with pytest.raises(ValueError, match=r"^t\[1\]: must be finite"):
+        bc.positions_at(pos, vel, 0.1, [0.0, np.inf, 1.0])
+    with pytest.raises(ValueError, match=r"^friction\[2\]: friction must be ≥ 0"):
+        bc.positions_at(pos, vel, [0.1, 0.1, -0.1], 1.0)
+    with pytest.raises(ValueError, match=r"^vel\[0\]: must be finite"):
+        bc.positions_at(pos, np.full((3, 2), np.nan), 0.1, 1.0)
+    with pytest.raises(ValueError, match=r"^vel: has 2 rows, expected 3"):
+        bc.positions_at(pos, vel[:2], 0.1, 1.0)
+    with pytest.raises(TypeError, match=r"^t: expected real numbers"):
+        bc.positions_at(pos, vel, 0.1, "now")
+
+
+def test_real_roots_errors() -> None:
+    with pytest.raises(ValueError, match=r"^coeffs\[1\]: must be finite, got NaN"):
+        bc.real_roots([[1, 2, 3], [1, np.nan, 2], [np.inf, 0, 0]])
+    with pytest.raises(ValueError, match=r"^coeffs\[0\]: must be finite, got -inf"):
+        bc.real_roots([1, -np.inf])
+    for shape in [(3, 1), (3, 6), (0, 0)]:
+        with pytest.raises(ValueError, match=r"^coeffs: expected shape \(N, k\+1\)"):
+            bc.real_roots(np.ones(shape))
+    with pytest.raises(ValueError, match=r"^coeffs: expected shape"):
+        bc.real_roots(np.ones((2, 2, 2)))
+    with pytest.raises(TypeError, match=r"^coeffs: expected real numbers"):
+        bc.real_roots([["a", "b"]])
+
+
+def test_core_type_errors_name_the_argument() -> None:
+    a = np.zeros((2, 2))
+    with pytest.raises(TypeError, match=r"^pos_a: expected a 2-D float64 array"):
+        _core.collision_times([[0, 0]], a, 0.1, a, a, 0.1, 1.0)
+    with pytest.raises(TypeError, match=r"^friction_b: expected a float or a 1-D float64 array"):
+        _core.collision_times(a, a, 0.1, a, a, np.zeros(2, dtype=np.float32), 1.0)
+    with pytest.raises(TypeError, match=r"^coeffs: expected a 2-D float64 array"):
+        _core.real_roots(np.zeros(3))
+    with pytest.raises(ValueError, match=r"^vel_b: expected a C-contiguous"):
+        _core.collision_times(a, a, 0.1, a, np.zeros((4, 2))[::2], 0.1, 1.0)
+
+
+# --- the GIL -----------------------------------------------------------------------------
+
+
+def test_gil_is_released_during_a_batch() -> None:
+    batch = {
+        k: (np.ascontiguousarray(v) if isinstance(v, np.ndarray) else v)
+        for k, v in random_batch(300_000, seed=19).items()
+    }
+    count = [0]
+    stop = threading.Event()
+
+    def counter() -> None:
+        while not stop.is_set():
+            count[0] += 1
+
+    worker = threading.Thread(target=counter)
+    worker.start()
+    try:
+        # The counter's pace when this thread does not hold the GIL (sleep releases it).
+        start, begin = count[0], time.perf_counter()
+        time.sleep(0.2)
+        rate = (count[0] - start) / (time.perf_counter() - begin)
+        start, begin = count[0], time.perf_counter()
+        _core.collision_times(*(batch[k] for k in ARGS), None, 1)
+        elapsed = time.perf_counter() - begin
+        during = count[0] - start
+    finally:
+        stop.set()
+        worker.join()
+    assert elapsed > 0.02, "the batch was too quick to tell"
+    # Holding the GIL, the call would let the counter advance for at most a switch
+    # interval (5 ms); released, it keeps its pace.
+    assert during > 0.3 * rate * elapsed, (during, rate, elapsed)
+
+
+# --- the package -------------------------------------------------------------------------
+
+
+def test_version_and_public_api() -> None:
+    assert re.fullmatch(r"\d+\.\d+\.\d+.*", bc.__version__)
+    assert bc.__version__ == _core.__version__
+    assert set(bc.__all__) == {
+        "__version__",
+        "collision_time",
+        "collision_times",
+        "positions_at",
+        "real_roots",
+    }
+
+
+def test_docstring_examples() -> None:
+    result = doctest.testmod(bc, optionflags=doctest.NORMALIZE_WHITESPACE)
+    assert result.attempted >= 10 and result.failed == 0
+
+
+def test_typed_package() -> None:
+    package = Path(bc.__file__).parent
+    assert (package / "py.typed").exists()
+    assert (package / "_core.pyi").exists()
