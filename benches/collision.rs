@@ -1,0 +1,158 @@
+//! Collision-time kernel benchmarks on the sets of issue 5: random table pairs, all-grazing
+//! pairs, a ball at rest, and batch throughput with one thread and all threads.
+//!
+//! `cargo bench --bench collision`; criterion prints the median time per iteration, and the
+//! throughput in pairs per second (elements/s).
+
+use std::hint::black_box;
+use std::num::NonZeroUsize;
+
+use ballcollide::batch::{Pairs, PerPair, Threads, collision_times};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+
+const RADIUS: f64 = 2.0 * 0.028575;
+
+/// xorshift64*: deterministic inputs without extra dependencies.
+struct Rng(u64);
+impl Rng {
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let bits = self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11;
+        lo + (hi - lo) * (bits as f64 / (1u64 << 53) as f64)
+    }
+}
+
+/// Structure of the pair sets, owned.
+struct Set {
+    pos_a: Vec<[f64; 2]>,
+    vel_a: Vec<[f64; 2]>,
+    mu_a: Vec<f64>,
+    pos_b: Vec<[f64; 2]>,
+    vel_b: Vec<[f64; 2]>,
+    mu_b: Vec<f64>,
+}
+
+impl Set {
+    fn pairs(&self) -> Pairs<'_> {
+        Pairs {
+            pos_a: &self.pos_a,
+            vel_a: &self.vel_a,
+            friction_a: PerPair::Each(&self.mu_a),
+            pos_b: &self.pos_b,
+            vel_b: &self.vel_b,
+            friction_b: PerPair::Each(&self.mu_b),
+            radius: PerPair::All(RADIUS),
+            t_max: PerPair::All(f64::INFINITY),
+        }
+    }
+}
+
+#[derive(Clone, Copy)]
+enum Kind {
+    /// Both balls anywhere on a 2.54 × 1.27 m table, speeds 0–3 m/s, friction 0.05–2 m/s².
+    RandomTable,
+    /// B at rest, A aimed so that the closest approach is within 1e-2 … 1e-12 of the radius.
+    Grazing,
+    /// Cue ball (A) to an object ball at rest (B).
+    AtRest,
+}
+
+fn set(kind: Kind, n: usize, seed: u64) -> Set {
+    let mut rng = Rng(seed);
+    let mut s = Set {
+        pos_a: Vec::with_capacity(n),
+        vel_a: Vec::with_capacity(n),
+        mu_a: Vec::with_capacity(n),
+        pos_b: Vec::with_capacity(n),
+        vel_b: Vec::with_capacity(n),
+        mu_b: Vec::with_capacity(n),
+    };
+    for _ in 0..n {
+        let pa = [rng.uniform(0.0, 2.54), rng.uniform(0.0, 1.27)];
+        let pb = [rng.uniform(0.0, 2.54), rng.uniform(0.0, 1.27)];
+        let speed = rng.uniform(0.0, 3.0);
+        let mu = rng.uniform(0.05, 2.0);
+        let (va, vb, mu_b) = match kind {
+            Kind::RandomTable => {
+                let (ta, tb) = (rng.uniform(0.0, 6.3), rng.uniform(0.0, 6.3));
+                let sb = rng.uniform(0.0, 3.0);
+                (
+                    [speed * ta.cos(), speed * ta.sin()],
+                    [sb * tb.cos(), sb * tb.sin()],
+                    rng.uniform(0.05, 2.0),
+                )
+            }
+            Kind::Grazing | Kind::AtRest => {
+                let (dx, dy) = (pb[0] - pa[0], pb[1] - pa[1]);
+                let dist = dx.hypot(dy).max(2.0 * RADIUS);
+                let offset = match kind {
+                    Kind::Grazing => {
+                        let delta = 10f64.powf(rng.uniform(-12.0, -2.0));
+                        RADIUS
+                            * (1.0
+                                + if rng.uniform(0.0, 1.0) < 0.5 {
+                                    delta
+                                } else {
+                                    -delta
+                                })
+                    }
+                    _ => rng.uniform(-1.5, 1.5) * RADIUS,
+                };
+                let angle = dy.atan2(dx) + (offset / dist).clamp(-1.0, 1.0).asin();
+                // Fast enough to reach the target before stopping.
+                let speed = (2.0 * mu * dist).sqrt() * rng.uniform(1.05, 2.0);
+                ([speed * angle.cos(), speed * angle.sin()], [0.0, 0.0], 0.0)
+            }
+        };
+        s.pos_a.push(pa);
+        s.vel_a.push(va);
+        s.mu_a.push(mu);
+        s.pos_b.push(pb);
+        s.vel_b.push(vb);
+        s.mu_b.push(mu_b);
+    }
+    s
+}
+
+fn kernel(c: &mut Criterion) {
+    let one = Threads::AtMost(NonZeroUsize::MIN);
+    let mut group = c.benchmark_group("kernel_1_thread");
+    let n = 4096;
+    group.throughput(Throughput::Elements(n as u64));
+    for (name, kind) in [
+        ("random_table", Kind::RandomTable),
+        ("grazing", Kind::Grazing),
+        ("at_rest", Kind::AtRest),
+    ] {
+        let s = set(kind, n, 7);
+        let mut out = vec![0.0; n];
+        group.bench_function(name, |bench| {
+            bench.iter(|| collision_times(black_box(&s.pairs()), &mut out, one))
+        });
+    }
+    group.finish();
+}
+
+fn throughput(c: &mut Criterion) {
+    let mut group = c.benchmark_group("batch_random_table");
+    group.sample_size(10);
+    for n in [1_000, 100_000, 1_000_000] {
+        let s = set(Kind::RandomTable, n, 11);
+        let mut out = vec![0.0; n];
+        group.throughput(Throughput::Elements(n as u64));
+        for (label, threads) in [
+            ("1_thread", Threads::AtMost(NonZeroUsize::MIN)),
+            ("all_threads", Threads::All),
+        ] {
+            group.bench_with_input(BenchmarkId::new(label, n), &n, |bench, _| {
+                bench.iter(|| collision_times(black_box(&s.pairs()), &mut out, threads))
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, kernel, throughput);
+criterion_main!(benches);
