@@ -1,7 +1,7 @@
 //! Real roots of a cubic: one root by safeguarded Newton iteration (Kahan), deflation to a
 //! stable quadratic, and a polishing step; plus the scaling helpers the quartic shares.
 
-use super::horner::{RootBuf, is_root_within, polish_roots};
+use super::horner::{RootBuf, pair_within_rounding, polish_roots};
 use super::scaling::{exponent, scale};
 use super::{RealRoots, solve_linear, solve_quadratic};
 
@@ -14,8 +14,9 @@ use super::{RealRoots, solve_linear, solve_quadratic};
 const SPLIT_BITS: f64 = 64.0;
 
 /// A backward-error allowance, in units of ε/2, under which a complex pair `u ± iv` is taken as
-/// the real double root `u` (see [`is_root_within`]): a few roundings of the coefficients.
-pub(super) const TOUCH_FACTOR: f64 = 8.0;
+/// the real double root `u` (see [`pair_within_rounding`]): a few roundings of the
+/// coefficients, i.e. within about √8 conditioning floors of the real axis.
+pub(super) const TOUCH_FACTOR: f64 = 4.0;
 
 /// The real roots of `a·x³ + b·x² + c·x + d = 0`, ascending, with multiplicity.
 ///
@@ -152,13 +153,16 @@ fn eval_deflate(p: &[f64; 4], x: f64) -> (f64, f64, f64, f64) {
 }
 
 /// Appends the roots of the quadratic factor `a·y² + b·y + c` of the polynomial `p`; a complex
-/// pair `u ± iv` at which `p` vanishes within a few roundings is appended as the double root
-/// `u` (an exact double root that rounding pushed off the real axis).
+/// pair `u ± iv` that a few roundings of `p`'s coefficients can turn into a real double root is
+/// appended as the double root `u` (an exact double root that rounding pushed off the real
+/// axis).
 pub(super) fn push_quadratic_roots(p: &[f64], a: f64, b: f64, c: f64, roots: &mut RootBuf) {
     let q = solve_quadratic(a, b, c);
     if q.is_empty() && a != 0.0 {
         let u = -b / (2.0 * a);
-        if u.is_finite() && is_root_within(p, u, TOUCH_FACTOR) {
+        // v² = c/a − u², with the square's rounding error recovered by the FMA.
+        let v = (-u).mul_add(u, c / a).max(0.0).sqrt();
+        if u.is_finite() && pair_within_rounding(p, u, v, TOUCH_FACTOR) {
             roots.push(u);
             roots.push(u);
         }

@@ -54,16 +54,46 @@ pub(crate) fn abs_sum(coeffs: &[f64], x: f64) -> f64 {
     coeffs.iter().fold(0.0, |acc, &c| acc.mul_add(ax, c.abs()))
 }
 
-/// Whether `x` is a root of `p` up to a relative change of `factor·ε` in each coefficient:
-/// `|p(x)| ≤ factor·ε·Σ|cᵢ||x|ⁱ` (Oettli–Prager backward error for one point).
+/// Whether the complex pair `u ± iv` of roots of `p` is, as far as the coefficients can tell,
+/// a real double root at `u`: whether a relative change of `factor·ε/2` in each coefficient
+/// can move the root `z = u + iv` onto the real axis.
 ///
-/// The solvers use it to decide that a pair of complex roots `u ± iv` with a tiny `v` is a real
-/// double root at `u` that rounding pushed off the real axis: if `p(u)` is zero within what one
-/// rounding of the coefficients can change, the data cannot tell the two apart, and exact
-/// multiple roots such as `(x − 1)⁴` then come back real.
-pub(crate) fn is_root_within(coeffs: &[f64], x: f64, factor: f64) -> bool {
-    let (p, _) = eval_compensated(coeffs, x);
-    p.abs() <= factor * f64::EPSILON * 0.5 * abs_sum(coeffs, x)
+/// With the Taylor coefficients `t_k = p⁽ᵏ⁾(z)/k!`, the root moves by at least `Δ` only if
+/// `Σ_{k≥1} |t_k|·Δᵏ` reaches the change `factor·ε/2·Σ|cᵢ||z|ⁱ` of `p`; so the pair can
+/// collapse when that sum, taken at `Δ = v`, is below it. This is the conditioning band of a
+/// double root (its width grows like √ε), and it looks at the pair itself: a pair whose real
+/// part happens to be another, simple, root is not mistaken for a double root.
+///
+/// The solvers use it so that exact multiple roots such as `(x − 1)⁴`, which rounding pushes a
+/// little off the real axis, come back real.
+pub(crate) fn pair_within_rounding(coeffs: &[f64], u: f64, v: f64, factor: f64) -> bool {
+    let n = coeffs.len();
+    if n < 2 || !(u.is_finite() && v.is_finite()) {
+        return false;
+    }
+    // Taylor coefficients at z by repeated complex synthetic division (degree ≤ 4).
+    let mut work = [(0.0_f64, 0.0_f64); 5];
+    for (w, &c) in work.iter_mut().zip(coeffs) {
+        *w = (c, 0.0);
+    }
+    let n = n.min(work.len());
+    let mut moved = 0.0;
+    let mut vk = 1.0;
+    for k in 0..n {
+        // After k divisions the first n − k entries are the quotient so far; the remainder of
+        // the next division is t_k.
+        let mut acc = (0.0, 0.0);
+        for w in work.iter_mut().take(n - k) {
+            acc = (acc.0 * u - acc.1 * v + w.0, acc.0 * v + acc.1 * u + w.1);
+            *w = acc;
+        }
+        if k > 0 {
+            moved += acc.0.hypot(acc.1) * vk;
+        }
+        vk *= v;
+    }
+    let size = abs_sum(coeffs, u.hypot(v));
+    moved <= factor * f64::EPSILON * 0.5 * size
 }
 
 /// Refines each root in `roots` by guarded Newton steps on `p` (compensated residual).
@@ -165,9 +195,16 @@ mod tests {
     }
 
     #[test]
-    fn root_within_rounding() {
-        // x² − 2 at the float nearest √2: zero as far as the coefficients can tell.
-        assert!(is_root_within(&[1.0, 0.0, -2.0], 2f64.sqrt(), 4.0));
-        assert!(!is_root_within(&[1.0, 0.0, -2.0], 1.4143, 4.0));
+    fn pair_within_rounding_is_the_double_root_band() {
+        // (x − 1)² + v²: with v = 1e-9 the pair is a double root as far as rounding goes
+        // (the band is about √ε ≈ 1e-8), with v = 1e-6 it is not.
+        for (v, inside) in [(1e-9, true), (1e-6, false)] {
+            let c = [1.0, -2.0, 1.0 + v * v];
+            assert_eq!(pair_within_rounding(&c, 1.0, v, 8.0), inside, "v = {v}");
+        }
+        // (x − 1)(x² − 2x + 1 + 1e14): the pair 1 ± 1e7·i has real part 1, a simple root;
+        // p(1) = 0 but the pair is far from double.
+        let c = [1.0, -3.0, 1e14 + 3.0, -(1e14 + 1.0)];
+        assert!(!pair_within_rounding(&c, 1.0, 1e7, 8.0));
     }
 }

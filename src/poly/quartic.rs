@@ -555,12 +555,13 @@ fn csqrt(z: C) -> C {
 
 #[cfg(test)]
 mod tests {
-    use super::super::cubic::TOUCH_FACTOR;
-    use super::super::horner::is_root_within;
+    use super::super::horner::eval_compensated;
     use super::*;
 
+    /// `|p(x)|` within a few roundings of the size of its terms.
     fn is_root(p: &[f64; 5], x: f64) -> bool {
-        is_root_within(p, x, TOUCH_FACTOR)
+        let size: f64 = p.iter().fold(0.0, |acc, &c| acc * x.abs() + c.abs());
+        eval_compensated(p, x).0.abs() <= 4.0 * f64::EPSILON * size
     }
 
     #[test]
