@@ -160,8 +160,14 @@ pub(super) fn push_quadratic_roots(p: &[f64], a: f64, b: f64, c: f64, roots: &mu
     let q = solve_quadratic(a, b, c);
     if q.is_empty() && a != 0.0 {
         let u = -b / (2.0 * a);
-        // v² = c/a − u², with the square's rounding error recovered by the FMA.
-        let v = (-u).mul_add(u, c / a).max(0.0).sqrt();
+        // v² = c/a − u²; when it cancels (a near-double pair, where the decision is made) the
+        // square's rounding error is recovered by a fused multiply-add.
+        let ca = c / a;
+        let mut v2 = ca - u * u;
+        if v2.abs() < 1e-6 * ca.abs() {
+            v2 = (-u).mul_add(u, ca);
+        }
+        let v = v2.max(0.0).sqrt();
         if u.is_finite() && pair_within_rounding(p, u, v, TOUCH_FACTOR) {
             roots.push(u);
             roots.push(u);
@@ -176,17 +182,23 @@ pub(super) fn push_quadratic_roots(p: &[f64], a: f64, b: f64, c: f64, roots: &mu
 /// non-zero) are at most about `2^s` in magnitude: the largest `⌈(e_k − e_n)/(n − k)⌉` over
 /// the non-zero coefficients (Fujiwara's bound in powers of two).
 pub(super) fn root_exponent(coeffs: &[f64]) -> Option<i32> {
-    let n = coeffs.len().checked_sub(1)? as i32;
     let en = exponent(*coeffs.first()?)?;
     let mut s = i32::MIN;
     for (i, &c) in coeffs.iter().enumerate().skip(1) {
         if let Some(ek) = exponent(c) {
+            // ⌈num / (n − k)⌉ with n − k = i ∈ 1..=4; constant divisors compile to shifts and
+            // multiplications, where a variable one would be a slow integer division.
             let num = ek - en;
-            let den = i as i32; // = n − k for the coefficient of degree k = n − i
-            s = s.max(-((-num).div_euclid(den)));
+            let up = match i {
+                1 => num,
+                2 => (num + 1) >> 1,
+                3 => -((-num).div_euclid(3)),
+                4 => (num + 3) >> 2,
+                _ => -((-num).div_euclid(i as i32)),
+            };
+            s = s.max(up);
         }
     }
-    let _ = n;
     Some(if s == i32::MIN { 0 } else { s })
 }
 
@@ -213,6 +225,16 @@ pub(super) fn scaled<const N: usize>(coeffs: &[f64; N], s: i32) -> [f64; N] {
 /// `2^-SPLIT_BITS` relative.
 pub(super) fn split_point(coeffs: &[f64]) -> Option<usize> {
     let n = coeffs.len().checked_sub(1)?;
+    // Fast path: an edge slope is at most the exponent range, so slopes can differ by more
+    // than SPLIT_BITS only if the exponents span more than SPLIT_BITS / 2.
+    let (mut lo, mut hi) = (i32::MAX, i32::MIN);
+    for e in coeffs.iter().filter_map(|&c| exponent(c)) {
+        lo = lo.min(e);
+        hi = hi.max(e);
+    }
+    if f64::from(hi.saturating_sub(lo)) <= SPLIT_BITS / 2.0 {
+        return None;
+    }
     // Hull vertices as (degree, exponent), degree ascending (array index n − k).
     let mut hull: [(usize, f64); 5] = [(0, 0.0); 5];
     let mut len = 0;

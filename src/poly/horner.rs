@@ -33,14 +33,14 @@ pub(crate) fn eval_compensated(coeffs: &[f64], x: f64) -> (f64, f64) {
     let mut err = 0.0_f64;
     let mut ds = 0.0_f64;
     for &c in rest {
-        ds = ds.mul_add(x, s);
+        ds = ds * x + s;
         // s·x + c with both rounding errors captured exactly (TwoProduct by FMA, TwoSum).
         let p = s * x;
         let pe = s.mul_add(x, -p);
         let t = p + c;
         let z = t - p;
         let se = (p - (t - z)) + (c - z);
-        err = err.mul_add(x, pe + se);
+        err = err * x + (pe + se);
         s = t;
     }
     (s + err, ds)
@@ -50,8 +50,10 @@ pub(crate) fn eval_compensated(coeffs: &[f64], x: f64) -> (f64, f64) {
 /// changes `p(x)` by at most `δ` times this, so it is the yardstick for "`p(x)` is zero as far
 /// as the coefficients can tell".
 pub(crate) fn abs_sum(coeffs: &[f64], x: f64) -> f64 {
+    // Plain arithmetic: a magnitude, needed to a few ulp only (and a fused multiply-add is a
+    // library call on baseline x86-64).
     let ax = x.abs();
-    coeffs.iter().fold(0.0, |acc, &c| acc.mul_add(ax, c.abs()))
+    coeffs.iter().fold(0.0, |acc, &c| acc * ax + c.abs())
 }
 
 /// Whether the complex pair `u ± iv` of roots of `p` is, as far as the coefficients can tell,
@@ -69,6 +71,16 @@ pub(crate) fn abs_sum(coeffs: &[f64], x: f64) -> f64 {
 pub(crate) fn pair_within_rounding(coeffs: &[f64], u: f64, v: f64, factor: f64) -> bool {
     let n = coeffs.len();
     if n < 2 || !(u.is_finite() && v.is_finite()) {
+        return false;
+    }
+    // Quick rejection, which settles almost every pair: the top Taylor term alone,
+    // |c_n|·vⁿ, already exceeds the allowance (bounded above using |z| ≤ |u| + v).
+    let allowance = |size: f64| factor * f64::EPSILON * 0.5 * size;
+    let mut top = coeffs[0].abs();
+    for _ in 1..n {
+        top *= v;
+    }
+    if top > allowance(abs_sum(coeffs, u.abs() + v)) {
         return false;
     }
     // Taylor coefficients at z by repeated complex synthetic division (degree ≤ 4).
@@ -92,8 +104,7 @@ pub(crate) fn pair_within_rounding(coeffs: &[f64], u: f64, v: f64, factor: f64) 
         }
         vk *= v;
     }
-    let size = abs_sum(coeffs, u.hypot(v));
-    moved <= factor * f64::EPSILON * 0.5 * size
+    moved <= allowance(abs_sum(coeffs, u.hypot(v)))
 }
 
 /// Refines each root in `roots` by guarded Newton steps on `p` (compensated residual).

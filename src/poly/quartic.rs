@@ -164,8 +164,9 @@ fn factor(a: f64, b: f64, c: f64, d: f64) -> [f64; 4] {
     let d2_direct = 2.0 * b / 3.0 - phi - l1 * l1;
     let d_minus_l3sq = d - l3 * l3;
     let mut best: Option<(f64, f64, f64)> = None;
+    let inv = [recip(b), recip(c), recip(d)];
     let mut consider = |d2: f64, l2: f64| {
-        let err = ldlt_error(b, c, d, d2, l1, l2, l3);
+        let err = ldlt_error(b, c, d, inv, d2, l1, l2, l3);
         if err.is_finite() && best.is_none_or(|(e, _, _)| err < e) {
             best = Some((err, d2, l2));
         }
@@ -291,33 +292,34 @@ fn real_branch(a: f64, b: f64, c: f64, d: f64, l1: f64, l2: f64, l3: f64, g: f64
     let (b1, b2) = balance_product(l3 + g * l2, l3 - g * l2, d);
     // Each candidate solves one of α₁ + α₂ = a, β₁ + α₁α₂ + β₂ = b, α₁β₂ + β₁α₂ = c for the
     // smaller α (the larger one is the accurate sum l₁ ± γ without cancellation).
-    let pick = |cands: [Option<f64>; 3], set: &dyn Fn(f64) -> [f64; 4]| -> f64 {
-        let mut best = (f64::INFINITY, f64::NAN);
-        for x in cands.into_iter().flatten() {
-            let f = set(x);
-            let err = rel(f[0] + f[2], a)
-                + rel(f[1] + f[0] * f[2] + f[3], b)
-                + rel(f[0] * f[3] + f[1] * f[2], c);
-            if err < best.0 || best.1.is_nan() {
-                best = (err, x);
+    let pick =
+        |cands: [Option<f64>; 3], set: fn(f64, [f64; 4]) -> [f64; 4], base: [f64; 4]| -> f64 {
+            let mut best = (f64::INFINITY, f64::NAN);
+            for x in cands.into_iter().flatten() {
+                let f = set(x, base);
+                let err = rel(f[0] + f[2], a)
+                    + rel(f[1] + f[0] * f[2] + f[3], b)
+                    + rel(f[0] * f[3] + f[1] * f[2], c);
+                if err < best.0 || best.1.is_nan() {
+                    best = (err, x);
+                }
             }
-        }
-        best.1
-    };
+            best.1
+        };
     if a1.abs() < a2.abs() {
         let cands = [
             (b2 != 0.0).then(|| (c - b1 * a2) / b2),
             (a2 != 0.0).then(|| (b - b1 - b2) / a2),
             Some(a - a2),
         ];
-        a1 = pick(cands, &|x| [x, b1, a2, b2]);
+        a1 = pick(cands, |x, f| [x, f[1], f[2], f[3]], [a1, b1, a2, b2]);
     } else {
         let cands = [
             (b1 != 0.0).then(|| (c - a1 * b2) / b1),
             (a1 != 0.0).then(|| (b - b1 - b2) / a1),
             Some(a - a1),
         ];
-        a2 = pick(cands, &|x| [a1, b1, x, b2]);
+        a2 = pick(cands, |x, f| [f[0], f[1], x, f[3]], [a1, b1, a2, b2]);
     }
     [a1, b1, a2, b2]
 }
@@ -359,7 +361,7 @@ fn resolvent_dominant_root(a: f64, b: f64, c: f64, d: f64) -> f64 {
 
     let mut x = depressed_cubic_dominant_root(g, h);
     // Newton refinement, stopped as soon as the residual no longer decreases.
-    let f = |x: f64| x.mul_add(x * x + g, h);
+    let f = |x: f64| x * (x * x + g) + h;
     let mut fx = f(x);
     let scale = (x * x * x).abs().max((g * x).abs()).max(h.abs());
     if fx.abs() > f64::EPSILON * scale {
@@ -412,18 +414,20 @@ fn depressed_cubic_dominant_root(g: f64, h: f64) -> f64 {
 }
 
 /// Backward error of an LDLᵀ candidate: how well `d₂ + l₁² + 2l₃`, `2d₂l₂ + 2l₁l₃` and
-/// `d₂l₂² + l₃²` reproduce `b`, `c`, `d` (eqs. 29–30 of the paper).
-fn ldlt_error(b: f64, c: f64, d: f64, d2: f64, l1: f64, l2: f64, l3: f64) -> f64 {
-    rel(d2 + l1 * l1 + 2.0 * l3, b)
-        + rel(2.0 * d2 * l2 + 2.0 * l1 * l3, c)
-        + rel(d2 * l2 * l2 + l3 * l3, d)
+/// `d₂l₂² + l₃²` reproduce `b`, `c`, `d` (eqs. 29–30 of the paper); `inv` holds the
+/// reciprocals of `b, c, d` as made by [`recip`].
+#[allow(clippy::too_many_arguments)]
+fn ldlt_error(b: f64, c: f64, d: f64, inv: [f64; 3], d2: f64, l1: f64, l2: f64, l3: f64) -> f64 {
+    ((d2 + l1 * l1 + 2.0 * l3 - b) * inv[0]).abs()
+        + ((2.0 * d2 * l2 + 2.0 * l1 * l3 - c) * inv[1]).abs()
+        + ((d2 * l2 * l2 + l3 * l3 - d) * inv[2]).abs()
 }
 
 /// Sum of the relative errors with which real factors `[α₁, β₁, α₂, β₂]` reproduce the
 /// monic quartic's `a, b, c, d`.
 fn coefficient_error(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> f64 {
     let r = residual(a, b, c, d, f);
-    rel_residual(r, [a, b, c, d])
+    rel_residual(r, [recip(a), recip(b), recip(c), recip(d)])
 }
 
 /// `|x − reference| / |reference|`, or `|x|` for a zero reference.
@@ -435,37 +439,47 @@ fn rel(x: f64, reference: f64) -> f64 {
     }
 }
 
-/// The residuals of `α₁ + α₂ = a`, `β₁ + α₁α₂ + β₂ = b`, `α₁β₂ + β₁α₂ = c`, `β₁β₂ = d`, with
-/// fused multiply-adds so that a tiny residual is not lost to the rounding of a product.
+/// The residuals of `α₁ + α₂ = a`, `β₁ + α₁α₂ + β₂ = b`, `α₁β₂ + β₁α₂ = c`, `β₁β₂ = d`.
+///
+/// Plain arithmetic: its rounding (ε times the size of the terms) is the backward error that
+/// one rounding of the coefficients makes anyway, and the real roots are refined afterwards
+/// against the original quartic with a compensated residual. (Fused multiply-adds would be
+/// library calls on baseline x86-64, and this is the hot loop.)
 fn residual(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
     let [a1, b1, a2, b2] = f;
     [
         (a1 - a) + a2,
-        a1.mul_add(a2, (b1 - b) + b2),
-        a1.mul_add(b2, b1.mul_add(a2, -c)),
-        b1.mul_add(b2, -d),
+        a1 * a2 + ((b1 - b) + b2),
+        a1 * b2 + (b1 * a2 - c),
+        b1 * b2 - d,
     ]
 }
 
-/// Sum of residuals, each relative to its coefficient (absolute for a zero coefficient).
-fn rel_residual(r: [f64; 4], coef: [f64; 4]) -> f64 {
-    r.iter()
-        .zip(coef)
-        .map(|(&ri, ci)| if ci == 0.0 { ri.abs() } else { (ri / ci).abs() })
-        .sum()
+/// Sum of residuals, each relative to its coefficient (absolute for a zero coefficient);
+/// `inv` holds the reciprocals of the coefficients (or 1 for a zero one), so that this hot
+/// test multiplies instead of dividing.
+fn rel_residual(r: [f64; 4], inv: [f64; 4]) -> f64 {
+    (r[0] * inv[0]).abs() + (r[1] * inv[1]).abs() + (r[2] * inv[2]).abs() + (r[3] * inv[3]).abs()
+}
+
+/// `1/x`, or 1 for `x = 0` (relative errors become absolute ones there).
+fn recip(x: f64) -> f64 {
+    if x == 0.0 { 1.0 } else { 1.0 / x }
 }
 
 /// Newton's method on the four equations tying the factors to the coefficients (sec. 2.3 of
 /// the paper), stopped when the relative residual no longer decreases; the iterate with the
 /// smallest absolute residual is kept.
 fn polish_factors(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
-    let coef = [a, b, c, d];
+    let coef = [recip(a), recip(b), recip(c), recip(d)];
     let mut x = f;
     let mut r = residual(a, b, c, d, x);
     let mut err_rel = rel_residual(r, coef);
     let abs_sum = |r: [f64; 4]| r.iter().map(|v| v.abs()).sum::<f64>();
     let mut best = (abs_sum(r), x);
-    if !best.0.is_finite() || best.0 == 0.0 {
+    // Already at rounding level (each relative residual about an ulp): a Newton step could
+    // not do better, only confirm it.
+    if !best.0.is_finite() || best.0 == 0.0 || err_rel <= 4.0 * f64::EPSILON {
         return x;
     }
     for _ in 0..20 {
@@ -513,9 +527,10 @@ fn factor_newton_step(f: [f64; 4], r: [f64; 4]) -> Option<[f64; 4]> {
     if det == 0.0 || !det.is_finite() {
         return None;
     }
-    let u1 = (s1 * (a2 * b1 - a1 * b2) + s2 * db + s3 * (a1 - a2)) / det;
-    let v1 = (da * (s2 * b1 - a1 * s3) - s1 * db * b1 + db * s3) / det;
-    let v2 = (da * (a2 * s3 - s2 * b2) - db * s3 + s1 * db * b2) / det;
+    let inv = 1.0 / det;
+    let u1 = (s1 * (a2 * b1 - a1 * b2) + s2 * db + s3 * (a1 - a2)) * inv;
+    let v1 = (da * (s2 * b1 - a1 * s3) - s1 * db * b1 + db * s3) * inv;
+    let v2 = (da * (a2 * s3 - s2 * b2) - db * s3 + s1 * db * b2) * inv;
     let u2 = ra - u1;
     Some([u1, v1, u2, v2])
 }
@@ -544,7 +559,8 @@ fn csqrt(z: C) -> C {
     if x == 0.0 && y == 0.0 {
         return (0.0, 0.0);
     }
-    let m = x.hypot(y);
+    // Inputs are of order one here (scaled quartic), so the plain modulus cannot overflow.
+    let m = (x * x + y * y).sqrt();
     let t = ((x.abs() + m) / 2.0).sqrt();
     if x >= 0.0 {
         (t, y / (2.0 * t))
