@@ -75,7 +75,8 @@ impl Gap {
 
     /// The coefficients `[a, b, c, d, e]` of `g(s) = a·s⁴ + b·s³ + c·s² + d·s + e`, highest
     /// degree first (SPEC's formula with `Δp`, `Δv`, `Δf` the offset, velocity and
-    /// acceleration).
+    /// acceleration), each formed in plain float arithmetic. [`Gap::value`] is the accurate
+    /// way to evaluate `g`; the coefficients serve bounds and the full quartic solve.
     pub fn quartic(&self) -> [f64; 5] {
         let (p, v, f) = (self.offset, self.velocity, self.acceleration);
         [
@@ -83,7 +84,7 @@ impl Gap {
             v.dot(&f),
             v.norm_squared() + p.dot(&f),
             2.0 * p.dot(&v),
-            self.value(0.0),
+            p.norm_squared() - self.radius * self.radius,
         ]
     }
 
@@ -122,6 +123,26 @@ impl Gap {
     /// `½·g″(s) = |d′(s)|² + d(s)·d″`: the derivative of [`Gap::half_slope`].
     pub fn half_curvature(&self, s: f64) -> f64 {
         self.relative_velocity(s).norm_squared() + self.separation(s).dot(&self.acceleration)
+    }
+
+    /// A bound on the rounding error of [`Gap::half_slope`] for `0 ≤ s ≤ 1` (time scaled to
+    /// the window): below it, the slope's sign is rounding noise, and locating a critical
+    /// point more closely gains nothing (the gap is flat there to second order).
+    ///
+    /// `d(s)` is formed with an error below `2ε·S`, where `S` sums the magnitudes of all
+    /// components of its three terms, and `d′(s)` with one below `2ε·S′`; `d·d′` inherits them.
+    pub(crate) fn half_slope_noise(&self) -> f64 {
+        let rate = self.velocity.abs().sum() + self.acceleration.abs().sum();
+        let size = self.offset.abs().sum() + rate;
+        4.0 * f64::EPSILON * size * rate
+    }
+
+    /// A bound on the rounding error of [`Gap::value`] for `0 ≤ s ≤ 1` where `|d(s)| ≈ r`
+    /// (near a contact): `2r·2ε·S + 2ε·r²`, with `S` as in [`Gap::half_slope_noise`].
+    pub(crate) fn value_noise(&self) -> f64 {
+        let size =
+            self.offset.abs().sum() + self.velocity.abs().sum() + self.acceleration.abs().sum();
+        2.0 * f64::EPSILON * self.radius * (2.0 * size + self.radius)
     }
 }
 

@@ -63,7 +63,7 @@ impl Ball {
                 InputErrorKind::NegativeFriction(friction),
             ));
         }
-        let speed = velocity.x.hypot(velocity.y);
+        let speed = norm(velocity);
         // τ = |v|/μ: 0 for a ball at rest (even when μ = 0), ∞ for a frictionless mover, and
         // ∞ too when |v|/μ overflows (the ball then never stops within float time).
         let stop_time = if speed == 0.0 { 0.0 } else { speed / friction };
@@ -165,7 +165,9 @@ impl Ball {
     pub fn position_at(&self, t: f64) -> Vector2<f64> {
         let t = t.max(0.0);
         let tau = self.stop_time;
-        if tau.is_infinite() {
+        if t == 0.0 {
+            self.position
+        } else if tau.is_infinite() {
             self.position + self.velocity * t
         } else if t >= tau {
             self.position + self.velocity * (0.5 * tau)
@@ -178,12 +180,23 @@ impl Ball {
     pub fn velocity_at(&self, t: f64) -> Vector2<f64> {
         let t = t.max(0.0);
         let tau = self.stop_time;
-        if tau.is_infinite() {
+        if tau.is_infinite() || t == 0.0 {
             self.velocity
         } else if t >= tau {
             Vector2::zeros()
         } else {
             self.velocity * ((tau - t) / tau)
         }
+    }
+}
+
+/// `|v|`: `√(x² + y²)` where the squares neither overflow nor lose bits to underflow (a few
+/// times faster than `hypot`, and within an ulp), `hypot` elsewhere.
+fn norm(v: Vector2<f64>) -> f64 {
+    let sum = v.x * v.x + v.y * v.y;
+    if (1e-290..=1e290).contains(&sum) {
+        sum.sqrt()
+    } else {
+        v.x.hypot(v.y)
     }
 }

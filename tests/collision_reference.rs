@@ -67,6 +67,7 @@ struct Stats {
     hits: usize,
     ambiguous: usize,
     ratios: Vec<f64>,
+    worst: (f64, usize),
     failures: Vec<String>,
 }
 
@@ -103,6 +104,9 @@ fn matches_the_high_precision_reference() {
                 let tolerance = (64.0 * case.floor).max(4.0 * ulp(t_ref));
                 let scale = case.floor.max(ulp(t_ref));
                 stats.ratios.push(err / scale);
+                if err / scale > stats.worst.0 {
+                    stats.worst = (err / scale, case.line);
+                }
                 if err > tolerance && !case.ambiguous {
                     stats.failures.push(format!(
                         "line {}: t = {t:e}, t_ref = {t_ref:e}, error/floor = {:.1}",
@@ -122,21 +126,22 @@ fn matches_the_high_precision_reference() {
     assert!(total >= 20_000, "only {total} reference cases");
 
     eprintln!(
-        "{:<22} {:>6} {:>6} {:>6} {:>12} {:>12} {:>6}",
-        "category", "cases", "hits", "ambig", "p99.9 err/fl", "max err/fl", "fails"
+        "{:<22} {:>6} {:>6} {:>6} {:>12} {:>12} {:>6} {:>7}",
+        "category", "cases", "hits", "ambig", "p99.9 err/fl", "max err/fl", "fails", "at line"
     );
     let mut failures = Vec::new();
     for (name, stats) in &mut by_category {
         stats.ratios.sort_by(f64::total_cmp);
         eprintln!(
-            "{:<22} {:>6} {:>6} {:>6} {:>12.2} {:>12.2} {:>6}",
+            "{:<22} {:>6} {:>6} {:>6} {:>12.2} {:>12.2} {:>6} {:>7}",
             name,
             stats.cases,
             stats.hits,
             stats.ambiguous,
             percentile(&stats.ratios, 0.999),
             stats.ratios.last().copied().unwrap_or(0.0),
-            stats.failures.len()
+            stats.failures.len(),
+            stats.worst.1
         );
         failures.extend(stats.failures.iter().map(|f| format!("{name}: {f}")));
     }

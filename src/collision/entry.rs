@@ -10,7 +10,7 @@ use crate::poly::{bracketed_newton, solve_quadratic};
 /// point, found by bracketed Newton on the accurate `d·d′` form. Never divides by the leading
 /// coefficient, so equal friction vectors (a cubic that is really a linear function) need no
 /// special case.
-pub(crate) fn critical_points(gap: &Gap, end: f64) -> ([f64; 3], usize) {
+pub(crate) fn critical_points(gap: &Gap, end: f64, noise: f64) -> ([f64; 3], usize) {
     let (v, f) = (gap.velocity, gap.acceleration);
     let turning = solve_quadratic(
         1.5 * f.norm_squared(),
@@ -32,6 +32,7 @@ pub(crate) fn critical_points(gap: &Gap, end: f64) -> ([f64; 3], usize) {
                 slope_left,
                 slope_right,
                 0.5 * (left + right),
+                noise,
             );
             if x > 0.0 && x < end && count < out.len() {
                 out[count] = x;
@@ -70,23 +71,20 @@ pub(crate) fn first_entry(gap: &Gap, end: f64, previous_positive: bool) -> Windo
     if previous_positive && g_start < 0.0 {
         return WindowSearch::Entry(0.0);
     }
-    let (critical, count) = critical_points(gap, end);
+    let (critical, count) = critical_points(gap, end, gap.half_slope_noise());
     let mut seen_positive = previous_positive || g_start > 0.0;
     let (mut left, mut g_left) = (0.0, g_start);
-    for (k, &right) in critical[..count].iter().chain([end].iter()).enumerate() {
+    for &right in critical[..count].iter().chain([end].iter()) {
         let g_right = gap.value(right);
         if seen_positive && g_left >= 0.0 && g_right < 0.0 {
             if g_left == 0.0 {
                 return WindowSearch::Entry(left);
             }
-            let right_is_minimum = k < count;
             return WindowSearch::Entry(entry_root(
                 gap,
-                left,
-                right,
-                g_left,
-                g_right,
-                right_is_minimum,
+                (left, right),
+                (g_left, g_right),
+                gap.value_noise(),
             ));
         }
         seen_positive |= g_right > 0.0;
@@ -99,24 +97,27 @@ pub(crate) fn first_entry(gap: &Gap, end: f64, previous_positive: bool) -> Windo
 
 /// The root of `g` in `(left, right)`, where `g(left) > 0 > g(right)` and `g` is monotone.
 ///
-/// When `right` is a local minimum the root may be near-double (a grazing contact): Newton
-/// then starts from the quadratic Taylor estimate `m − √(−2g(m)/g″(m))`, which is already
-/// close, instead of crawling in from the far end.
+/// Newton starts from the root of the quadratic Taylor model of `g` at `right`. Where `right`
+/// is a local minimum, or the end of a window where a ball comes to rest (the slope vanishes
+/// there too), the root may be near-double (a grazing contact, or a contact just before a
+/// stop): the model is then already close, where Newton from afar would crawl in, and where
+/// `g` is within rounding of zero over a band far wider than the root's accuracy.
 fn entry_root(
     gap: &Gap,
-    left: f64,
-    right: f64,
-    g_left: f64,
-    g_right: f64,
-    right_is_minimum: bool,
+    (left, right): (f64, f64),
+    (g_left, g_right): (f64, f64),
+    noise: f64,
 ) -> f64 {
-    let mut start = left + (right - left) * (g_left / (g_left - g_right));
-    if right_is_minimum {
-        let curvature = gap.half_curvature(right);
-        if curvature > 0.0 {
-            start = right - (-g_right / curvature).sqrt();
-        }
-    }
+    let model = solve_quadratic(
+        gap.half_curvature(right),
+        2.0 * gap.half_slope(right),
+        g_right,
+    );
+    let start = model
+        .iter()
+        .map(|delta| right + delta)
+        .find(|&x| x > left && x < right)
+        .unwrap_or(left + (right - left) * (g_left / (g_left - g_right)));
     bracketed_newton(
         |u| (gap.value(u), 2.0 * gap.half_slope(u)),
         left,
@@ -124,5 +125,6 @@ fn entry_root(
         g_left,
         g_right,
         start,
+        noise,
     )
 }
