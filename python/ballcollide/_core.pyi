@@ -12,7 +12,7 @@ _F64Array1 = npt.NDArray[np.float64]
 _F64Array2 = npt.NDArray[np.float64]
 _PerPair = float | npt.NDArray[np.float64]
 
-__all__ = ["__version__", "collision_times", "collision_time", "positions_at", "real_roots"]
+__all__ = ["__version__", "collision_time", "collision_times", "positions_at", "real_roots"]
 
 __version__: str
 

@@ -308,7 +308,7 @@ def test_any_coefficients_give_roots_or_a_clear_error(coeffs: np.ndarray) -> Non
 
 @given(
     st.integers(1, 4).flatmap(
-        lambda k: hnp.arrays(np.float64, (k + 1,), elements=st.floats(-100, 100))
+        lambda k: hnp.arrays(np.float64, (k + 1,), elements=st.floats(-100, 100).map(_clean))
     )
 )
 def test_real_roots_are_roots(coeffs: np.ndarray) -> None:
@@ -321,7 +321,13 @@ def test_real_roots_are_roots(coeffs: np.ndarray) -> None:
             continue
         terms = [Fraction(c) * Fraction(x) ** (k - i) for i, c in enumerate(coeffs)]
         size = sum(abs(term) for term in terms)
-        assert abs(sum(terms)) <= Fraction(1000) * Fraction(EPS) * size, (x, coeffs)
+        # A root below the smallest subnormal rounds to 0: allow for that as well.
+        slope = sum(
+            abs(Fraction(c)) * (k - i) * abs(Fraction(x)) ** max(k - i - 1, 0)
+            for i, c in enumerate(coeffs)
+        )
+        tolerance = Fraction(1000) * Fraction(EPS) * size + slope * Fraction(2.0**-1074)
+        assert abs(sum(terms)) <= tolerance, (x, coeffs)
 
 
 @pytest.mark.parametrize("k", [1, 2, 3, 4])
@@ -335,3 +341,16 @@ def test_real_roots_well_separated_match_numpy(k: int, data: st.DataObject) -> N
     expected = np.sort(np.roots(coeffs).real)
     np.testing.assert_allclose(got, expected, rtol=1e-7, atol=1e-9)
     np.testing.assert_allclose(got, roots, rtol=1e-7, atol=1e-9)
+
+
+@pytest.mark.xfail(
+    reason="solve_quadratic rescales c into the subnormal range when a is subnormal, so the "
+    "small root loses bits (relative error up to ~1e-11); reported to the poly owner",
+    strict=False,
+)
+def test_small_quadratic_root_with_subnormal_leading_coefficient() -> None:
+    for c in (1e-302, 3e-302, 1.234e-300):
+        # 5e-324·x² + x + c: the small root is −c·(1 + O(1e-625)), i.e. exactly −c in float64
+        # (the other is −2e323, reported as −inf).
+        roots = bc.real_roots([5e-324, 1.0, c])
+        assert roots[1] == -c, (c, roots)
