@@ -220,6 +220,8 @@ def collision_times(
     Notes
     -----
     The GIL is released while the pairs are computed, so other Python threads keep running.
+    C-ordered float64 inputs are read in place, without a copy: do not modify them from
+    another thread during the call.
 
     Examples
     --------
