@@ -16,7 +16,7 @@ pair of roots falls in between, continuously. Tests assert |error| ≤ K·floor.
 Usage:  pip install python-flint mpmath
         python3 tools/poly_reference.py [--out tests/data/poly_cases.txt] [--seed 2024]
                                         [--jobs 2] [--scale 1.0]
-Generation takes about two minutes on two cores; it is not run in CI (the output is committed).
+Generation takes about seven minutes on two cores; it is not run in CI (the output is committed).
 """
 
 import argparse
@@ -482,6 +482,57 @@ def grazing(rng):
         return gap_coeffs(pa, va, fa, pb, vb, fb)
 
 
+def signed_mag(rng, lo, hi):
+    m = 10.0 ** rng.uniform(lo, hi)
+    return m if rng.random() < 0.5 else -m
+
+
+def from_float_roots(rng, roots, lead=1.0):
+    """Coefficients of lead·Π(x − rᵢ) for (possibly complex) roots, computed in float64: the
+    rounded polynomial is the test case, its exact roots the reference."""
+    c = [complex(lead)]
+    for r in roots:
+        nxt = c + [0j]
+        for i in range(1, len(nxt)):
+            nxt[i] -= r * c[i - 1]
+        c = nxt
+    return [float(x.real) for x in c]
+
+
+def cubic_random(rng):
+    """Random signs and magnitudes over 1e-20…1e20: scaling and splitting."""
+    return [signed_mag(rng, -20, 20) for _ in range(4)]
+
+
+def quartic_random(rng):
+    return [signed_mag(rng, -30, 30) for _ in range(5)]
+
+
+def clustered_roots(rng, n):
+    """n roots around a random centre, some clustered (relative gaps 1e-8…1e-1), some in
+    complex pairs close to the real axis."""
+    centre = signed_mag(rng, -3, 3)
+    roots = []
+    while len(roots) < n:
+        eta = 10.0 ** rng.uniform(-8, -1) * rng.choice([-1, 1])
+        if n - len(roots) >= 2 and rng.random() < 0.3:
+            im = abs(centre) * 10.0 ** rng.uniform(-8, -1)
+            roots += [complex(centre * (1 + eta), im), complex(centre * (1 + eta), -im)]
+        elif rng.random() < 0.2:
+            roots.append(complex(signed_mag(rng, -3, 3)))
+        else:
+            roots.append(complex(centre * (1 + eta)))
+    return roots
+
+
+def cubic_clustered(rng):
+    return from_float_roots(rng, clustered_roots(rng, 3), lead=signed_mag(rng, -2, 2))
+
+
+def quartic_clustered(rng):
+    return from_float_roots(rng, clustered_roots(rng, 4), lead=signed_mag(rng, -2, 2))
+
+
 GENERATORS = {
     "ball-random": (ball_random, 40000),
     "ball-aimed": (ball_aimed, 10000),
@@ -489,6 +540,10 @@ GENERATORS = {
     "ball-rest": (ball_rest, 25000),
     "ball-equal-friction": (ball_equal_friction, 2000),
     "grazing": (grazing, 10000),
+    "cubic-random": (cubic_random, 2000),
+    "cubic-clustered": (cubic_clustered, 2000),
+    "quartic-random-coeffs": (quartic_random, 2000),
+    "quartic-clustered": (quartic_clustered, 2000),
 }
 
 

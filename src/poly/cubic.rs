@@ -1,7 +1,7 @@
 //! Real roots of a cubic: one root by safeguarded Newton iteration (Kahan), deflation to a
 //! stable quadratic, and a polishing step; plus the scaling helpers the quartic shares.
 
-use super::horner::{RootBuf, pair_within_rounding, polish_roots};
+use super::horner::{RootBuf, eval_compensated, pair_within_rounding, polish_roots};
 use super::scaling::{exponent, scale};
 use super::{RealRoots, solve_linear, solve_quadratic};
 
@@ -86,7 +86,7 @@ fn cubic_scaled(p: [f64; 4]) -> RootBuf {
     let [a, b, c, d] = p;
     // Start at the inflection point; the sign of p there says on which side a root lies.
     let mut x = -(b / a) / 3.0;
-    let (mut q, mut dq, mut b1, mut c2) = eval_deflate(&p, x);
+    let (mut q, mut dq, mut b1, mut c2) = eval_newton(&p, x);
     if q != 0.0 {
         // Kahan's bound: x − s·r lies beyond the root on that side (r ≥ its distance from the
         // inflection point), where the cubic is convex towards the root, so Newton's iterates
@@ -105,7 +105,7 @@ fn cubic_scaled(p: [f64; 4]) -> RootBuf {
             // convergence is linear (ratio 2/3), so 200 steps reach any float.
             let mut last = (q, dq, b1, c2);
             for _ in 0..200 {
-                let cur = eval_deflate(&p, x0);
+                let cur = eval_newton(&p, x0);
                 if cur.0 == 0.0 {
                     x = x0;
                     last = cur;
@@ -139,6 +139,16 @@ fn cubic_scaled(p: [f64; 4]) -> RootBuf {
     push_quadratic_roots(&p, a, b1, c2, &mut roots);
     polish_roots(&p, roots.as_mut_slice());
     roots
+}
+
+/// [`eval_deflate`] with `p(x)` from compensated Horner: near a cluster of roots plain
+/// Horner's rounding noise would hide the sign of `p` (which picks the side the iteration
+/// starts from) and stop the iteration far from the root; the compensated value stays
+/// accurate down to about ε² of the size of the terms.
+fn eval_newton(p: &[f64; 4], x: f64) -> (f64, f64, f64, f64) {
+    let (_, dq, b1, c2) = eval_deflate(p, x);
+    let (q, _) = eval_compensated(p, x);
+    (q, dq, b1, c2)
 }
 
 /// `p(x)`, `p′(x)` and the quotient `a·y² + b1·y + c2` of `p` by `(y − x)`.

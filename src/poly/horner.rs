@@ -123,7 +123,7 @@ pub(crate) fn polish_roots(coeffs: &[f64], roots: &mut [f64]) {
         }
         let mut x = roots[i];
         let (mut px, mut dpx) = eval_compensated(coeffs, x);
-        for _ in 0..4 {
+        for _ in 0..8 {
             if px == 0.0 || dpx == 0.0 || !px.is_finite() || !dpx.is_finite() {
                 break;
             }

@@ -37,8 +37,9 @@
 //!   `b = d = 0` → a quadratic in `x²`), and the coefficients and the variable are rescaled by
 //!   exact powers of two so the roots are of order one (the paper divides by the leading
 //!   coefficient and rescales by a constant only after an overflow). Roots that are more than
-//!   2⁶⁴ apart in magnitude are split into separate lower-degree problems first (see
-//!   [`split_point`]), so a tiny leading coefficient never loses the ordinary roots.
+//!   2⁶⁴ apart in magnitude are split into separate lower-degree problems first (read off the
+//!   Newton polygon of the coefficients), so a tiny leading coefficient never loses the
+//!   ordinary roots.
 //! - The complex-factor branches are turned into the real quadratic factors of the conjugate
 //!   root pairs, which are polished the same way; a complex pair at whose real part the
 //!   quartic vanishes within a few roundings is an exact double root pushed off the real axis
@@ -55,8 +56,11 @@ const SQRT_EPS: f64 = 1.490_116_119_384_765_6e-8;
 
 /// The real roots of `a·x⁴ + b·x³ + c·x² + d·x + e = 0`, ascending, with multiplicity.
 ///
-/// Algorithm 1010 of ACM TOMS with both published Remarks (see the [module
-/// documentation](self) for the method and what is added to it). Roots come out accurate to a
+/// Algorithm 1010 of ACM TOMS with both published Remarks: an LDLᵀ factorisation into two
+/// quadratics from the dominant root of a resolvent cubic, a backward-error-driven choice
+/// among equivalent formulas, the Remarks' corrected switch to the `d₂ ≈ 0` branch, and
+/// Newton-polished factors (the method and what this implementation adds to it are described
+/// at the top of `src/poly/quartic.rs`). Roots come out accurate to a
 /// small multiple of what the float coefficients determine: a few ulp for well-separated
 /// roots, about `√ε` relative for a double root, `ε^(1/m)` for an `m`-fold one.
 ///
@@ -164,9 +168,8 @@ fn factor(a: f64, b: f64, c: f64, d: f64) -> [f64; 4] {
     let d2_direct = 2.0 * b / 3.0 - phi - l1 * l1;
     let d_minus_l3sq = d - l3 * l3;
     let mut best: Option<(f64, f64, f64)> = None;
-    let inv = [recip(b), recip(c), recip(d)];
     let mut consider = |d2: f64, l2: f64| {
-        let err = ldlt_error(b, c, d, inv, d2, l1, l2, l3);
+        let err = ldlt_error(b, c, d, d2, l1, l2, l3);
         if err.is_finite() && best.is_none_or(|(e, _, _)| err < e) {
             best = Some((err, d2, l2));
         }
@@ -235,7 +238,8 @@ enum Factors {
 }
 
 impl Factors {
-    /// Sum of relative errors with which the factors reproduce `a, b, c, d`.
+    /// Backward error with which the factors reproduce `a, b, c, d` (each coefficient's error
+    /// relative to the size of its terms, see [`term_rel`]).
     fn error(self, a: f64, b: f64, c: f64, d: f64) -> f64 {
         match self {
             Factors::Real(f) => coefficient_error(a, b, c, d, f),
@@ -245,10 +249,14 @@ impl Factors {
             } => {
                 // (x² + αx + β)(x² + ᾱx + β̄) = x⁴ + 2Re α·x³ + (|α|² + 2Re β)·x²
                 //                                 + 2Re(α·β̄)·x + |β|².
-                rel(2.0 * ar, a)
-                    + rel(ar * ar + ai * ai + 2.0 * br, b)
-                    + rel(2.0 * (ar * br + ai * bi), c)
-                    + rel(br * br + bi * bi, d)
+                let (m2, n2) = (ar * ar + ai * ai, br * br + bi * bi);
+                term_rel(2.0 * ar - a, 2.0 * ar.abs() + a.abs())
+                    + term_rel(m2 + 2.0 * br - b, m2 + 2.0 * br.abs() + b.abs())
+                    + term_rel(
+                        2.0 * (ar * br + ai * bi) - c,
+                        2.0 * ((ar * br).abs() + (ai * bi).abs()) + c.abs(),
+                    )
+                    + term_rel(n2 - d, n2 + d.abs())
             }
         }
     }
@@ -297,9 +305,16 @@ fn real_branch(a: f64, b: f64, c: f64, d: f64, l1: f64, l2: f64, l3: f64, g: f64
             let mut best = (f64::INFINITY, f64::NAN);
             for x in cands.into_iter().flatten() {
                 let f = set(x, base);
-                let err = rel(f[0] + f[2], a)
-                    + rel(f[1] + f[0] * f[2] + f[3], b)
-                    + rel(f[0] * f[3] + f[1] * f[2], c);
+                let [x1, y1, x2, y2] = f;
+                let err = term_rel(x1 + x2 - a, x1.abs() + x2.abs() + a.abs())
+                    + term_rel(
+                        y1 + x1 * x2 + y2 - b,
+                        y1.abs() + (x1 * x2).abs() + y2.abs() + b.abs(),
+                    )
+                    + term_rel(
+                        x1 * y2 + y1 * x2 - c,
+                        (x1 * y2).abs() + (y1 * x2).abs() + c.abs(),
+                    );
                 if err < best.0 || best.1.is_nan() {
                     best = (err, x);
                 }
@@ -337,7 +352,8 @@ fn balance_product(b1: f64, b2: f64, d: f64) -> (f64, f64) {
 }
 
 /// The dominant (largest-magnitude) root `φ₀` of the resolvent cubic `det M(φ) = 0`, i.e.
-/// `φ³ + g·φ + h = 0`, refined by Newton's method.
+/// `φ³ + g·φ + h = 0`, refined by Newton's method (up to 16 steps, stopped as soon as the
+/// residual no longer decreases).
 ///
 /// `g` and `h` are invariant under a shift `x → y + σ` of the quartic, so they are computed
 /// from the shifted quartic whose `y²` coefficient vanishes (σ a root of `6σ² + 3aσ + b`, the
@@ -365,7 +381,7 @@ fn resolvent_dominant_root(a: f64, b: f64, c: f64, d: f64) -> f64 {
     let mut fx = f(x);
     let scale = (x * x * x).abs().max((g * x).abs()).max(h.abs());
     if fx.abs() > f64::EPSILON * scale {
-        for _ in 0..8 {
+        for _ in 0..16 {
             let df = 3.0 * x * x + g;
             if df == 0.0 {
                 break;
@@ -385,8 +401,9 @@ fn resolvent_dominant_root(a: f64, b: f64, c: f64, d: f64) -> f64 {
     x
 }
 
-/// The root of largest magnitude of `x³ + g·x + h`, in closed form (trigonometric when there
-/// are three real roots, Cardano with the cancellation-free sign choice otherwise).
+/// The root of largest magnitude of `x³ + g·x + h`, or a start for Newton's method that
+/// converges to it: Cardano's formula with the cancellation-free sign choice when there is
+/// one real root, the bound `2√Q` on the right side when there are three.
 fn depressed_cubic_dominant_root(g: f64, h: f64) -> f64 {
     let q = -g / 3.0;
     let r = h / 2.0;
@@ -397,15 +414,12 @@ fn depressed_cubic_dominant_root(g: f64, h: f64) -> f64 {
     let q3 = q * q * q;
     let r2 = r * r;
     if r2 < q3 {
-        // Three real roots −2√Q·cos((θ + 2πk)/3), cos θ = R/Q^(3/2); k = 0 is the largest in
-        // magnitude when θ < π/2, otherwise k = 1.
-        let theta = (r / q3.sqrt()).clamp(-1.0, 1.0).acos();
-        let m = -2.0 * q.sqrt();
-        if theta < std::f64::consts::FRAC_PI_2 {
-            m * (theta / 3.0).cos()
-        } else {
-            m * ((theta + 2.0 * std::f64::consts::PI) / 3.0).cos()
-        }
+        // Three real roots −2√Q·cos((θ + 2πk)/3), cos θ = R/Q^(3/2): the dominant one has the
+        // sign of −R and a magnitude in [√3·√Q, 2√Q]. Instead of the closed form (acos and
+        // cos, the costliest part of the solver), start at the bound −sign(R)·2√Q: beyond the
+        // root, on its convex side, so the Newton refinement that follows converges to it
+        // monotonically and quadratically from within 15 %.
+        -(2.0 * q.sqrt()).copysign(r)
     } else {
         let big = -(r.abs() + (r2 - q3).sqrt()).cbrt().copysign(r);
         let small = if big == 0.0 { 0.0 } else { q / big };
@@ -414,29 +428,40 @@ fn depressed_cubic_dominant_root(g: f64, h: f64) -> f64 {
 }
 
 /// Backward error of an LDLᵀ candidate: how well `d₂ + l₁² + 2l₃`, `2d₂l₂ + 2l₁l₃` and
-/// `d₂l₂² + l₃²` reproduce `b`, `c`, `d` (eqs. 29–30 of the paper); `inv` holds the
-/// reciprocals of `b, c, d` as made by [`recip`].
-#[allow(clippy::too_many_arguments)]
-fn ldlt_error(b: f64, c: f64, d: f64, inv: [f64; 3], d2: f64, l1: f64, l2: f64, l3: f64) -> f64 {
-    ((d2 + l1 * l1 + 2.0 * l3 - b) * inv[0]).abs()
-        + ((2.0 * d2 * l2 + 2.0 * l1 * l3 - c) * inv[1]).abs()
-        + ((d2 * l2 * l2 + l3 * l3 - d) * inv[2]).abs()
+/// `d₂l₂² + l₃²` reproduce `b`, `c`, `d` (eqs. 29–30 of the paper), each error relative to
+/// the size of its terms (see [`term_rel`]).
+fn ldlt_error(b: f64, c: f64, d: f64, d2: f64, l1: f64, l2: f64, l3: f64) -> f64 {
+    let (t1, t2, t3) = (l1 * l1, 2.0 * d2 * l2, d2 * l2 * l2);
+    term_rel(
+        d2 + t1 + 2.0 * l3 - b,
+        d2.abs() + t1 + 2.0 * l3.abs() + b.abs(),
+    ) + term_rel(
+        t2 + 2.0 * l1 * l3 - c,
+        t2.abs() + 2.0 * (l1 * l3).abs() + c.abs(),
+    ) + term_rel(t3 + l3 * l3 - d, t3.abs() + l3 * l3 + d.abs())
 }
 
-/// Sum of the relative errors with which real factors `[α₁, β₁, α₂, β₂]` reproduce the
-/// monic quartic's `a, b, c, d`.
+/// `|r| / size`: a residual relative to the magnitude of the terms it was formed from (0 when
+/// they are all zero).
+///
+/// The paper measures each error relative to its coefficient, and absolutely for a zero one;
+/// that breaks down when a coefficient is tiny next to its terms (a coefficient `1e-57` next
+/// to terms of order one makes every rounding look like a relative error of `1e40`, and then
+/// the wrong candidate is chosen and the Newton polishing stops at once). Relative to the
+/// terms, the measure is the componentwise backward error, which is what rounding can achieve.
+fn term_rel(r: f64, size: f64) -> f64 {
+    if size > 0.0 { r.abs() / size } else { 0.0 }
+}
+
+/// Backward error with which real factors `[α₁, β₁, α₂, β₂]` reproduce the monic quartic's
+/// `a, b, c, d`: the sum of the residuals, each relative to the size of its terms.
 fn coefficient_error(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> f64 {
+    let [a1, b1, a2, b2] = f;
     let r = residual(a, b, c, d, f);
-    rel_residual(r, [recip(a), recip(b), recip(c), recip(d)])
-}
-
-/// `|x − reference| / |reference|`, or `|x|` for a zero reference.
-fn rel(x: f64, reference: f64) -> f64 {
-    if reference == 0.0 {
-        x.abs()
-    } else {
-        ((x - reference) / reference).abs()
-    }
+    term_rel(r[0], a1.abs() + a2.abs() + a.abs())
+        + term_rel(r[1], b1.abs() + (a1 * a2).abs() + b2.abs() + b.abs())
+        + term_rel(r[2], (a1 * b2).abs() + (b1 * a2).abs() + c.abs())
+        + term_rel(r[3], (b1 * b2).abs() + d.abs())
 }
 
 /// The residuals of `α₁ + α₂ = a`, `β₁ + α₁α₂ + β₂ = b`, `α₁β₂ + β₁α₂ = c`, `β₁β₂ = d`.
@@ -455,34 +480,21 @@ fn residual(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
     ]
 }
 
-/// Sum of residuals, each relative to its coefficient (absolute for a zero coefficient);
-/// `inv` holds the reciprocals of the coefficients (or 1 for a zero one), so that this hot
-/// test multiplies instead of dividing.
-fn rel_residual(r: [f64; 4], inv: [f64; 4]) -> f64 {
-    (r[0] * inv[0]).abs() + (r[1] * inv[1]).abs() + (r[2] * inv[2]).abs() + (r[3] * inv[3]).abs()
-}
-
-/// `1/x`, or 1 for `x = 0` (relative errors become absolute ones there).
-fn recip(x: f64) -> f64 {
-    if x == 0.0 { 1.0 } else { 1.0 / x }
-}
-
 /// Newton's method on the four equations tying the factors to the coefficients (sec. 2.3 of
-/// the paper), stopped when the relative residual no longer decreases; the iterate with the
-/// smallest absolute residual is kept.
+/// the paper), stopped when the backward error no longer decreases; the best iterate is kept.
+/// (The paper stops on the coefficient-relative error and keeps the smallest absolute one;
+/// both are measured here relative to the terms, see [`term_rel`].)
 fn polish_factors(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
-    let coef = [recip(a), recip(b), recip(c), recip(d)];
     let mut x = f;
-    let mut r = residual(a, b, c, d, x);
-    let mut err_rel = rel_residual(r, coef);
-    let abs_sum = |r: [f64; 4]| r.iter().map(|v| v.abs()).sum::<f64>();
-    let mut best = (abs_sum(r), x);
-    // Already at rounding level (each relative residual about an ulp): a Newton step could
-    // not do better, only confirm it.
-    if !best.0.is_finite() || best.0 == 0.0 || err_rel <= 4.0 * f64::EPSILON {
+    let mut err = coefficient_error(a, b, c, d, x);
+    let mut best = (err, x);
+    // Already at rounding level (each residual about an ulp of its terms): a Newton step
+    // could not do better, only confirm it.
+    if !err.is_finite() || err <= 4.0 * f64::EPSILON {
         return x;
     }
     for _ in 0..20 {
+        let r = residual(a, b, c, d, x);
         let Some(step) = factor_newton_step(x, r) else {
             break;
         };
@@ -495,17 +507,15 @@ fn polish_factors(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
         if !next.iter().all(|v| v.is_finite()) {
             break;
         }
-        x = next;
-        r = residual(a, b, c, d, x);
-        let e_abs = abs_sum(r);
-        if e_abs < best.0 {
-            best = (e_abs, x);
+        let e = coefficient_error(a, b, c, d, next);
+        if e < best.0 {
+            best = (e, next);
         }
-        let e_rel = rel_residual(r, coef);
-        if e_abs == 0.0 || e_rel >= err_rel || e_rel.is_nan() {
+        if e == 0.0 || e >= err || e.is_nan() {
             break;
         }
-        err_rel = e_rel;
+        x = next;
+        err = e;
     }
     best.1
 }
