@@ -73,7 +73,6 @@ pub fn solve_quadratic(a: f64, b: f64, c: f64) -> RealRoots {
         .max()
         .unwrap_or(0);
     let (a1, b1, c1) = (scale(a, 2 * s - ek), scale(b, s - ek), scale(c, -ek));
-    let unscale = |y: f64| scale(y, s);
 
     let disc = discriminant(a1, b1, c1);
     let mut roots = RealRoots::empty();
@@ -81,14 +80,33 @@ pub fn solve_quadratic(a: f64, b: f64, c: f64) -> RealRoots {
         return roots;
     }
     if disc == 0.0 {
-        let x = unscale(-b1 / (2.0 * a1));
+        let x = scale(-0.5 * (b1 / a1), s);
         roots.push(x);
         roots.push(x);
         return roots;
     }
+    if b1 == 0.0 {
+        // ±√(−c/a): exactly opposite, whatever the sign of the zero. Both scaled coefficients
+        // are within a factor 4 of 1 here, so the quotient is accurate.
+        let x = scale((-c1 / a1).sqrt(), s);
+        roots.push(-x);
+        roots.push(x);
+        return roots;
+    }
     let q = -0.5 * (b1 + disc.sqrt().copysign(b1));
-    roots.push(unscale(q / a1));
-    roots.push(unscale(c1 / q));
+    // x₁ = q/a and x₂ = c/q. A scaled coefficient that fell into the subnormal range has lost
+    // bits (roots far apart in magnitude): divide by the original one then, and apply the
+    // scaling to the quotient instead (q = q₁·2^(ek−s) in original units).
+    roots.push(if a1.is_normal() {
+        scale(q / a1, s)
+    } else {
+        scale(q / a, ek - s)
+    });
+    roots.push(if c1.is_normal() {
+        scale(c1 / q, s)
+    } else {
+        scale(c / q, s - ek)
+    });
     roots.sort();
     roots
 }
@@ -130,6 +148,24 @@ mod tests {
         let h = 2f64.powi(-29);
         let r = solve_quadratic(1.0, 2.0 + h, 1.0 + h);
         assert_eq!(r.as_slice(), &[-(1.0 + h), -1.0]);
+    }
+
+    #[test]
+    fn the_sign_of_a_zero_coefficient_does_not_matter() {
+        let plus = solve_quadratic(0.3, 0.0, -0.7);
+        let minus = solve_quadratic(0.3, -0.0, -0.7);
+        assert_eq!(plus, minus);
+        assert_eq!(plus[0], -plus[1]);
+    }
+
+    #[test]
+    fn roots_far_apart_keep_their_bits() {
+        // 5e-324·x² + x + 1e-302: the small root is −1e-302·(1 + 5e-626): exactly −1e-302
+        // in float64. The scaled constant term would be subnormal.
+        let r = solve_quadratic(5e-324, 1.0, 1e-302);
+        assert_eq!(r.len(), 2);
+        assert_eq!(r[0], f64::NEG_INFINITY);
+        assert_eq!(r[1], -1e-302);
     }
 
     #[test]

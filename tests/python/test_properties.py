@@ -343,11 +343,6 @@ def test_real_roots_well_separated_match_numpy(k: int, data: st.DataObject) -> N
     np.testing.assert_allclose(got, roots, rtol=1e-7, atol=1e-9)
 
 
-@pytest.mark.xfail(
-    reason="solve_quadratic rescales c into the subnormal range when a is subnormal, so the "
-    "small root loses bits (relative error up to ~1e-11); reported to the poly owner",
-    strict=False,
-)
 def test_small_quadratic_root_with_subnormal_leading_coefficient() -> None:
     for c in (1e-302, 3e-302, 1.234e-300):
         # 5e-324·x² + x + c: the small root is −c·(1 + O(1e-625)), i.e. exactly −c in float64
