@@ -46,6 +46,13 @@ pub struct InputError {
 
 impl InputError {
     /// An error about `argument`.
+    ///
+    /// ```
+    /// use ballcollide::{InputError, InputErrorKind};
+    /// let err = InputError::new("radius", InputErrorKind::NonPositiveRadius(0.0));
+    /// assert_eq!(err.index(), None);
+    /// assert_eq!(err.to_string(), "radius: radius (sum of the two radii) must be > 0, got 0");
+    /// ```
     pub const fn new(argument: &'static str, kind: InputErrorKind) -> Self {
         Self {
             argument,
@@ -55,6 +62,13 @@ impl InputError {
     }
 
     /// The same error, located at `index` of a batch.
+    ///
+    /// ```
+    /// use ballcollide::{InputError, InputErrorKind};
+    /// let err = InputError::new("t_max", InputErrorKind::InvalidHorizon(-1.0)).at(7);
+    /// assert_eq!(err.index(), Some(7));
+    /// assert!(err.to_string().starts_with("t_max[7]: "));
+    /// ```
     pub const fn at(self, index: usize) -> Self {
         Self {
             index: Some(index),
@@ -63,21 +77,34 @@ impl InputError {
     }
 
     /// The same error, about another argument name (e.g. `position` → `pos_a`).
+    ///
+    /// ```
+    /// use ballcollide::{InputError, InputErrorKind};
+    /// let err = InputError::new("position", InputErrorKind::NotFinite(f64::NAN)).renamed("pos_a");
+    /// assert_eq!(err.argument(), "pos_a");
+    /// ```
     pub const fn renamed(self, argument: &'static str) -> Self {
         Self { argument, ..self }
     }
 
-    /// The name of the offending argument.
+    /// The name of the offending argument (see [`InputError::new`]).
     pub const fn argument(&self) -> &'static str {
         self.argument
     }
 
-    /// The index of the first offending element, for batch calls.
+    /// The index of the first offending element, for batch calls (see [`InputError::at`]).
     pub const fn index(&self) -> Option<usize> {
         self.index
     }
 
     /// What is wrong.
+    ///
+    /// ```
+    /// use ballcollide::{Ball, InputErrorKind};
+    /// use nalgebra::Vector2;
+    /// let err = Ball::new(Vector2::zeros(), Vector2::zeros(), f64::INFINITY).unwrap_err();
+    /// assert_eq!(err.kind(), InputErrorKind::NotFinite(f64::INFINITY));
+    /// ```
     pub const fn kind(&self) -> InputErrorKind {
         self.kind
     }
