@@ -1,0 +1,283 @@
+"""Collision times of pairs held in Dask arrays: lazy, chunked, out of core, distributed.
+
+:func:`collision_times` takes the arguments of :func:`ballcollide.collision_times` as Dask
+arrays, numpy arrays or array-likes (mixed freely), split into chunks along the pair axis,
+and returns a lazy Dask array of times. Each chunk of pairs is computed by one call of
+:func:`ballcollide.collision_times` — the same kernel, so every time is bit for bit the one
+an in-memory call gives — on one thread per chunk by default, so that a Dask worker with
+``k`` threads keeps ``k`` cores busy and no more.
+
+This module needs Dask's arrays: ``pip install 'ballcollide[dask]'``. Importing
+``ballcollide`` alone never imports Dask.
+
+>>> import dask.array as da
+>>> import numpy as np
+>>> import ballcollide.dask as bcd
+>>> pos_a = da.zeros((3, 2), chunks=2)  # chunks of 2 pairs: blocks of 2 and 1 rows
+>>> vel_a = np.array([[1.0, 0.0], [1.0, 0.0], [2.0, 0.0]])  # numpy arrays mix in
+>>> pos_b = da.from_array(np.array([[1.0, 0.0], [1.0, 5.0], [1.0, 0.0]]), chunks=2)
+>>> t = bcd.collision_times(pos_a, vel_a, 0.0, pos_b, np.zeros((3, 2)), 0.0, 0.5)
+>>> t
+dask.array<collision_times, shape=(3,), dtype=float64, chunksize=(2,), chunktype=numpy.ndarray>
+>>> t.compute()
+array([0.5 ,  inf, 0.25])
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Sequence
+from typing import Any, Union
+
+import numpy as np
+import numpy.typing as npt
+
+try:
+    import dask.array as da
+except ImportError as e:  # dask, or its array dependencies, missing
+    raise ImportError(
+        f"ballcollide.dask needs Dask's arrays ({e}); install them with "
+        "`pip install 'ballcollide[dask]'` (or `pip install 'dask[array]'`)"
+    ) from e
+
+from . import _real_array, _threads
+from . import collision_time as _collision_time
+from . import collision_times as _collision_times
+
+__all__ = ["collision_times"]
+
+#: A Dask array, a numpy array or anything ``numpy.asarray`` reads.
+ArrayInput = Union["da.Array", npt.ArrayLike]
+#: A scalar (the same for every pair), or one value per pair (shape ``(N,)``).
+PerPairInput = Union[float, "da.Array", npt.ArrayLike]
+
+_ROWS = ("pos_a", "vel_a", "pos_b", "vel_b")
+_NAMES = ("pos_a", "vel_a", "friction_a", "pos_b", "vel_b", "friction_b", "radius", "t_max")
+# Where an error of the kernel names an element: "friction_b[7]: friction must be ≥ 0 …".
+_INDEXED = re.compile(r"(?P<name>[a-z_]+)\[(?P<index>[0-9]+)\]")
+
+
+def _checked(name: str, x: Any) -> da.Array | np.ndarray:
+    """``x`` as a Dask or numpy array of real numbers with the right number of dimensions."""
+    a: da.Array | np.ndarray
+    if isinstance(x, da.Array):
+        if x.dtype.kind not in "fiu":
+            raise TypeError(f"{name}: expected real numbers, got an array of dtype {x.dtype}")
+        a = x
+    else:
+        a = _real_array(name, x)
+    if name in _ROWS:
+        if a.ndim != 2 or a.shape[1] != 2:
+            raise ValueError(f"{name}: expected shape (N, 2), got {a.shape}")
+    elif a.ndim > 1:
+        raise ValueError(f"{name}: expected a scalar or shape (N,), got shape {a.shape}")
+    if a.ndim > 0 and math.isnan(a.shape[0]):
+        raise ValueError(
+            f"{name}: its chunk sizes are unknown (shape {a.shape}); "
+            f"call {name}.compute_chunk_sizes() first"
+        )
+    return a
+
+
+def _pair_chunks(arrays: Sequence[da.Array | np.ndarray], n: int) -> tuple[int, ...]:
+    """The pair-axis chunks: the first Dask argument's, or Dask's "auto" for numpy only."""
+    for a in arrays:
+        if isinstance(a, da.Array) and a.ndim > 0:
+            chunks: tuple[int, ...] = a.chunks[0]
+            return chunks
+    # Dask is typed but not these functions: each untyped call below is marked as such.
+    auto = da.core.normalize_chunks(  # type: ignore[no-untyped-call]
+        ("auto", -1), shape=(n, 2), dtype=np.float64
+    )
+    return tuple(auto[0])
+
+
+def _block(
+    pos_a: np.ndarray,
+    vel_a: np.ndarray,
+    friction_a: float | np.ndarray,
+    pos_b: np.ndarray,
+    vel_b: np.ndarray,
+    friction_b: float | np.ndarray,
+    radius: float | np.ndarray,
+    t_max: float | np.ndarray,
+    *,
+    num_threads: int | None,
+    block_info: dict[Any, Any] | None = None,
+) -> npt.NDArray[np.float64]:
+    """One chunk of pairs: one call of the kernel; errors name the global index."""
+    args = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max)
+    # Per-pair arrays arrive as (n, 1) blocks (see collision_times), scalars as floats or
+    # 0-d arrays.
+    fa, fb, r, tm = (_flat(x) for x in (friction_a, friction_b, radius, t_max))
+    try:
+        return _collision_times(
+            pos_a, vel_a, fa, pos_b, vel_b, fb, r, t_max=tm, num_threads=num_threads
+        )
+    except ValueError as e:
+        scalars = {name for name, x in zip(_NAMES, args) if np.ndim(x) == 0}
+        # Where this chunk starts in the whole result (map_blocks tells it).
+        start = 0 if block_info is None else int(block_info[None]["array-location"][0][0])
+        raise type(e)(_global_message(str(e), start, scalars)) from None
+
+
+def _flat(x: float | np.ndarray) -> float | np.ndarray:
+    return np.reshape(x, -1) if np.ndim(x) == 2 else x
+
+
+def _global_message(message: str, start: int, scalars: set[str]) -> str:
+    """The kernel's message with the block's index made global (dropped for scalars)."""
+    m = _INDEXED.match(message)
+    if m is None or m["name"] not in _NAMES:
+        return message
+    name = m["name"]
+    where = name if name in scalars else f"{name}[{start + int(m['index'])}]"
+    return where + message[m.end() :]
+
+
+def collision_times(
+    pos_a: ArrayInput,
+    vel_a: ArrayInput,
+    friction_a: PerPairInput,
+    pos_b: ArrayInput,
+    vel_b: ArrayInput,
+    friction_b: PerPairInput,
+    radius: PerPairInput,
+    *,
+    t_max: PerPairInput = np.inf,
+    num_threads: int | None = 1,
+) -> da.Array:
+    """The collision times of N pairs held in Dask arrays, as a lazy Dask array.
+
+    The arguments and the result are those of :func:`ballcollide.collision_times`, with
+    Dask arrays allowed wherever arrays are: pair ``i`` is ball A (``pos_a[i]``,
+    ``vel_a[i]``, ``friction_a``) against ball B (``pos_b[i]``, ``vel_b[i]``,
+    ``friction_b``) at contact distance ``radius``, and its time is ``inf`` if they never
+    touch (or not before ``t_max``). Nothing is computed until the result is (``.compute()``,
+    ``.sum()``, ``.to_zarr()`` …); each chunk of pairs is then one call of
+    :func:`ballcollide.collision_times`, so the times are bit for bit those of one in-memory
+    call, whatever the chunks and the scheduler.
+
+    Parameters
+    ----------
+    pos_a, vel_a, pos_b, vel_b
+        Shape ``(N, 2)``: Dask arrays, numpy arrays or array-likes of real numbers.
+    friction_a, friction_b, radius, t_max
+        Scalars (one value for all pairs; a 0-d Dask array too) or shape ``(N,)``.
+    num_threads
+        Threads of the kernel for each chunk: ``1`` (default) — Dask already runs one chunk
+        per worker thread, so more would oversubscribe the cores; ``None`` for all cores
+        (rayon's pool, sized by ``RAYON_NUM_THREADS`` if set), e.g. with one worker thread
+        per process; or an int ``n ≥ 1``. The times do not depend on it.
+
+    Returns
+    -------
+    dask.array.Array
+        Shape ``(N,)``, float64, lazy; chunked along the pairs like the arguments.
+
+    Chunks
+    ------
+    The pairs are chunked like the first Dask argument with at least one dimension, in
+    argument order; other Dask arguments are rechunked to match, and numpy arguments are
+    split the same way (they are embedded in the task graph: keep big inputs in Dask). With
+    numpy arguments only, Dask's ``"auto"`` chunks are used. The two columns of an
+    ``(N, 2)`` argument are always put in one chunk. Chunks may be of any size, even empty.
+
+    Raises
+    ------
+    ValueError, TypeError
+        At once, for what can be seen without computing: a wrong shape, a length that
+        differs from ``pos_a``'s, a non-real dtype, unknown chunk sizes, a bad scalar
+        (``radius ≤ 0`` …) or ``num_threads``. Bad values inside arrays (NaN or infinite
+        numbers, a negative friction, ``radius ≤ 0``, a negative ``t_max``) raise
+        ``ValueError`` when the result is computed, naming the argument and the index of
+        the bad pair in the whole array (the first one of its chunk; if several chunks have
+        bad pairs, whichever fails first is reported).
+
+    Examples
+    --------
+    >>> import dask.array as da
+    >>> import numpy as np
+    >>> import ballcollide.dask as bcd
+    >>> # 10 pairs in chunks of 4: ball A shot at 1 m/s at a resting ball B at x = 2.5 … 11.5,
+    >>> # slowed at 1/16 m/s² (per pair here) so that it stops at x = 8.
+    >>> n = 10
+    >>> pos_a = da.zeros((n, 2), chunks=(4, 2))
+    >>> vel_a = da.broadcast_to(da.from_array([1.0, 0.0]), (n, 2)).rechunk((4, 2))
+    >>> pos_b = np.column_stack([np.arange(2.5, 2.5 + n), np.zeros(n)])
+    >>> friction = da.full(n, 1 / 16, chunks=4)
+    >>> t = bcd.collision_times(pos_a, vel_a, friction, pos_b, np.zeros((n, 2)), 0.0, 1.0)
+    >>> t.chunks
+    ((4, 4, 2),)
+    >>> np.isfinite(t).sum().compute()  # contact at x_B − 1 < 8: balls B at x ≤ 8.5 are hit
+    np.int64(7)
+    >>> # A bad value in a later chunk: the error names the pair's index in the whole array.
+    >>> bad = friction.copy()
+    >>> bad[6] = -1.0
+    >>> bcd.collision_times(pos_a, vel_a, bad, pos_b, np.zeros((n, 2)), 0.0, 1.0).compute()
+    Traceback (most recent call last):
+    ...
+    ValueError: friction_a[6]: friction must be ≥ 0, got -1
+    """
+    threads = _threads(num_threads)
+    args = [
+        _checked(name, x)
+        for name, x in zip(
+            _NAMES, (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max)
+        )
+    ]
+    n = args[0].shape[0]
+    for name, a in zip(_NAMES, args):
+        if a.ndim > 0 and a.shape[0] != n:
+            raise ValueError(f"{name}: has {a.shape[0]} rows, expected {n}")
+
+    # Bad scalars fail now, as the kernel words it (a one-pair call, no index).
+    scalar = {
+        name: float(a)
+        for name, a in zip(_NAMES, args)
+        if not isinstance(a, da.Array) and a.ndim == 0
+    }
+    _collision_time(
+        (0.0, 0.0),
+        (0.0, 0.0),
+        scalar.get("friction_a", 0.0),
+        (0.0, 0.0),
+        (0.0, 0.0),
+        scalar.get("friction_b", 0.0),
+        scalar.get("radius", 1.0),
+        t_max=scalar.get("t_max", np.inf),
+    )
+
+    chunks = _pair_chunks(args, n)
+    blocks: list[Any] = []
+    for name, a in zip(_NAMES, args):
+        if name in scalar:
+            blocks.append(scalar[name])
+        elif a.ndim == 0:  # a 0-d Dask array: one value, broadcast to every chunk
+            blocks.append(a)
+        elif name in _ROWS:
+            blocks.append(_rechunked(a, (chunks, (2,))))
+        else:  # (N,) as (N, 1), so that map_blocks lines its pairs up with the rows'
+            blocks.append(_rechunked(a[:, np.newaxis], (chunks, (1,))))
+
+    out: da.Array = da.map_blocks(  # type: ignore[no-untyped-call]
+        _block,
+        *blocks,
+        num_threads=threads,
+        drop_axis=1,
+        dtype=np.float64,
+        meta=np.empty((0,), dtype=np.float64),
+        token="collision_times",
+    )
+    return out
+
+
+def _rechunked(a: da.Array | np.ndarray, chunks: tuple[tuple[int, ...], ...]) -> da.Array:
+    if isinstance(a, da.Array):
+        if a.chunks == chunks:
+            return a
+        rechunked: da.Array = a.rechunk(chunks)  # type: ignore[no-untyped-call]
+        return rechunked
+    whole: da.Array = da.from_array(a, chunks=chunks)  # type: ignore[no-untyped-call]
+    return whole
