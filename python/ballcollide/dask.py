@@ -176,8 +176,8 @@ def collision_times(
     dask.array.Array
         Shape ``(N,)``, float64, lazy; chunked along the pairs like the arguments.
 
-    Chunks
-    ------
+    Notes
+    -----
     The pairs are chunked like the first Dask argument with at least one dimension, in
     argument order; other Dask arguments are rechunked to match, and numpy arguments are
     split the same way (they are embedded in the task graph: keep big inputs in Dask). With
