@@ -176,14 +176,6 @@ def collision_times(
     dask.array.Array
         Shape ``(N,)``, float64, lazy; chunked along the pairs like the arguments.
 
-    Notes
-    -----
-    The pairs are chunked like the first Dask argument with at least one dimension, in
-    argument order; other Dask arguments are rechunked to match, and numpy arguments are
-    split the same way (they are embedded in the task graph: keep big inputs in Dask). With
-    numpy arguments only, Dask's ``"auto"`` chunks are used. The two columns of an
-    ``(N, 2)`` argument are always put in one chunk. Chunks may be of any size, even empty.
-
     Raises
     ------
     ValueError, TypeError
@@ -194,6 +186,14 @@ def collision_times(
         ``ValueError`` when the result is computed, naming the argument and the index of
         the bad pair in the whole array (the first one of its chunk; if several chunks have
         bad pairs, whichever fails first is reported).
+
+    Notes
+    -----
+    The pairs are chunked like the first Dask argument with at least one dimension, in
+    argument order; other Dask arguments are rechunked to match, and numpy arguments are
+    split the same way (they are embedded in the task graph: keep big inputs in Dask). With
+    numpy arguments only, Dask's ``"auto"`` chunks are used. The two columns of an
+    ``(N, 2)`` argument are always put in one chunk. Chunks may be of any size, even empty.
 
     Examples
     --------
