@@ -1,0 +1,821 @@
+"""ballcollide side by side with what users run today, on the same pairs, in the same run.
+
+Methods (each skipped, with a message, when its package is missing):
+
+- ``ballcollide``: ``collision_times`` on 1 thread and on all threads (full semantics: every
+  time window, stop times, entry direction).
+- ``numpy.roots loop``: per pair, the gap quartic of SPEC.md on each time window (both balls
+  moving, then only the slower-stopping one), ``numpy.roots``, real roots (``|Im z| ≤ 1e-8
+  max(1, |z|)``) inside the window, first root where ``g′ < 0`` (entry), and the ``t = 0``
+  rule (touching and approaching). It covers every window, so it answers the same question as
+  ballcollide; a double root (grazing contact) is decided by the sign of ``g′`` in rounding.
+- ``numpy eigvals batched``: the companion matrices of all first-window quartics as one
+  ``(N, 4, 4)`` stack through ``np.linalg.eigvals``, then the same filter, vectorised. It
+  covers the **first window only** (until the first ball stops) and degree 4 (rows with
+  ``a = 0`` go through the loop solver above).
+- ``pooltool solve_many``: pooltool-billiards 0.6's batch quartic solver (a numba port of
+  Algorithm 1010, ``pooltool.ptmath.roots.quartic.solve_many``) on the same coefficients, and
+  its own root choice ``get_real_positive_smallest_roots`` (smallest real root ``≥ 0``; no
+  stop time, no direction: its event loop re-solves after every motion change). Its answers
+  are compared on the first window: a root after the first stop counts as "no contact".
+- ``pooltool per-pair``: ``pooltool.evolution.event_based.solve.ball_ball_collision_time``
+  (what its simulator calls, one pair at a time) in a Python loop, compared the same way.
+
+Loop-based peers run on the first ``--loop-pairs`` pairs and batched peers on the first
+``--batch-pairs`` pairs of the same set; ns/pair is each method's median over repeats divided
+by the pairs it ran, and ratios are taken against ballcollide on 1 thread in the same run.
+Hit/miss disagreements are counted against ballcollide on the pairs the peer ran; a
+disagreement is "clear" when ballcollide's own hit/miss does not change with the radius scaled
+by 1 ± 1e-6 (not a grazing contact). A few disagreements are settled by evaluating the motion
+in mpmath (50 digits, from the exact binary inputs) at the disputed times.
+
+``--overhead`` measures ``collision_times`` from Python on 10⁶ pairs against the Rust kernel
+(``examples/kernel_timing.rs``) on the very same data, both on 1 thread.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import importlib
+import os
+import shlex
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+import ballcollide as bc
+
+RADIUS = 2 * 0.028575  # contact distance: two pool balls of radius 28.575 mm
+TABLE = (2.54, 1.27)  # playing area of a 9-ft table, m
+IMAG_TOL = 1e-8  # numpy peers: a root is real when |Im z| ≤ IMAG_TOL · max(1, |z|)
+CONTACT_TOL = 1e-7  # mpmath check: |distance − radius| ≤ 0.1 µm counts as touching
+ROOT = Path(__file__).resolve().parent.parent
+SETS = ("random", "grazing", "at_rest", "parallel")
+
+
+@dataclasses.dataclass
+class Pairs:
+    """A batch of ball pairs in ballcollide's layout (radius shared by all pairs)."""
+
+    pos_a: np.ndarray
+    vel_a: np.ndarray
+    mu_a: np.ndarray
+    pos_b: np.ndarray
+    vel_b: np.ndarray
+    mu_b: np.ndarray
+    radius: float = RADIUS
+
+    def __len__(self) -> int:
+        return len(self.mu_a)
+
+    def head(self, n: int) -> Pairs:
+        """The first ``n`` pairs (views, no copy)."""
+        return Pairs(
+            self.pos_a[:n],
+            self.vel_a[:n],
+            self.mu_a[:n],
+            self.pos_b[:n],
+            self.vel_b[:n],
+            self.mu_b[:n],
+            self.radius,
+        )
+
+    def with_radius(self, radius: float) -> Pairs:
+        """The same pairs with another contact distance."""
+        return dataclasses.replace(self, radius=radius)
+
+
+# ---------------------------------------------------------------------------------------------
+# Data sets (the same recipes as benches/collision.rs, drawn with numpy)
+
+
+def _polar(speed: np.ndarray, angle: np.ndarray) -> np.ndarray:
+    return np.stack([speed * np.cos(angle), speed * np.sin(angle)], axis=1)
+
+
+def _on_table(rng: np.random.Generator, n: int) -> np.ndarray:
+    return np.stack([rng.uniform(0, TABLE[0], n), rng.uniform(0, TABLE[1], n)], axis=1)
+
+
+def random_table(rng: np.random.Generator, n: int) -> Pairs:
+    """Both balls anywhere on the table, speeds 0–3 m/s, friction 0.05–2 m/s²."""
+    pa, pb = _on_table(rng, n), _on_table(rng, n)
+    va = _polar(rng.uniform(0, 3, n), rng.uniform(0, 2 * np.pi, n))
+    vb = _polar(rng.uniform(0, 3, n), rng.uniform(0, 2 * np.pi, n))
+    return Pairs(pa, va, rng.uniform(0.05, 2, n), pb, vb, rng.uniform(0.05, 2, n))
+
+
+def aimed(rng: np.random.Generator, n: int, grazing: bool) -> Pairs:
+    """A (friction 0.05–2) shot at B at rest, fast enough to reach it before stopping.
+
+    ``grazing``: the straight line passes B's centre at ``radius · (1 ± δ)``, δ log-uniform in
+    1e-12 … 1e-2; otherwise at a uniform offset in ±1.5 radius (cue ball to object ball).
+    """
+    pa, pb = _on_table(rng, n), _on_table(rng, n)
+    d = pb - pa
+    dist = np.maximum(np.hypot(d[:, 0], d[:, 1]), 2 * RADIUS)
+    if grazing:
+        delta = 10.0 ** rng.uniform(-12, -2, n)
+        offset = RADIUS * (1 + np.where(rng.uniform(0, 1, n) < 0.5, delta, -delta))
+    else:
+        offset = rng.uniform(-1.5, 1.5, n) * RADIUS
+    angle = np.arctan2(d[:, 1], d[:, 0]) + np.arcsin(np.clip(offset / dist, -1, 1))
+    mu = rng.uniform(0.05, 2, n)
+    speed = np.sqrt(2 * mu * dist) * rng.uniform(1.05, 2, n)
+    zeros = np.zeros((n, 2))
+    return Pairs(pa, _polar(speed, angle), mu, pb, zeros, np.zeros(n))
+
+
+def parallel(rng: np.random.Generator, n: int) -> Pairs:
+    """Equal friction vectors: both balls roll along +x with the same μ (so ``a = b = 0``).
+
+    B is on A's line (within ±1.5 radius sideways) half of the time, so the faster ball behind
+    sometimes catches the other up.
+    """
+    pa = _on_table(rng, n)
+    pb = _on_table(rng, n)
+    near = rng.uniform(0, 1, n) < 0.5
+    pb[near, 1] = pa[near, 1] + rng.uniform(-1.5, 1.5, near.sum()) * RADIUS
+    zeros = np.zeros(n)
+    va = np.stack([rng.uniform(0, 3, n), zeros], axis=1)
+    vb = np.stack([rng.uniform(0, 3, n), zeros], axis=1)
+    mu = rng.uniform(0.05, 2, n)
+    return Pairs(pa, va, mu, pb, vb, mu.copy())
+
+
+def make_set(name: str, n: int, seed: int) -> Pairs:
+    """The named data set of ``n`` pairs."""
+    rng = np.random.default_rng(seed)
+    if name == "random":
+        return random_table(rng, n)
+    if name == "parallel":
+        return parallel(rng, n)
+    return aimed(rng, n, grazing=name == "grazing")
+
+
+# ---------------------------------------------------------------------------------------------
+# ballcollide
+
+
+def bc_times(p: Pairs, threads: int | None) -> np.ndarray:
+    """ballcollide's collision times (``inf`` for none)."""
+    return bc.collision_times(
+        p.pos_a, p.vel_a, p.mu_a, p.pos_b, p.vel_b, p.mu_b, p.radius, num_threads=threads
+    )
+
+
+# ---------------------------------------------------------------------------------------------
+# The gap quartic, per SPEC.md
+
+
+def accelerations(vel: np.ndarray, mu: np.ndarray) -> np.ndarray:
+    """Friction acceleration vectors ``−μ v/|v|`` (zero for a ball at rest)."""
+    speed = np.hypot(vel[..., 0], vel[..., 1])[..., None]
+    unit = np.divide(vel, speed, out=np.zeros_like(vel), where=speed > 0)
+    return -np.asarray(mu)[..., None] * unit
+
+
+def stop_times(vel: np.ndarray, mu: np.ndarray) -> np.ndarray:
+    """``τ = |v|/μ`` (0 at rest, ``inf`` without friction)."""
+    speed = np.hypot(vel[..., 0], vel[..., 1])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(speed == 0, 0.0, speed / mu)
+
+
+def gap_coefficients(dp: np.ndarray, dv: np.ndarray, df: np.ndarray, radius: float) -> np.ndarray:
+    """Coefficients (highest first, shape ``(…, 5)``) of ``g(t) = |Δp + Δv t + ½Δf t²|² − R²``."""
+
+    def dot(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        return np.asarray(x[..., 0] * y[..., 0] + x[..., 1] * y[..., 1])
+
+    return np.stack(
+        [
+            0.25 * dot(df, df),
+            dot(dv, df),
+            dot(dv, dv) + dot(dp, df),
+            2 * dot(dp, dv),
+            dot(dp, dp) - radius * radius,
+        ],
+        axis=-1,
+    )
+
+
+def window_end(vel: np.ndarray, mu: np.ndarray) -> np.ndarray:
+    """When a ball's motion changes: its stop time, ``inf`` if it never moves."""
+    tau = stop_times(vel, mu)
+    return np.where(tau == 0, np.inf, tau)
+
+
+def first_window(p: Pairs) -> tuple[np.ndarray, np.ndarray]:
+    """The first-window quartics of all pairs and the window ends.
+
+    The first window lasts until the first *moving* ball stops (a ball at rest from the
+    start changes nothing), so with one ball at rest it covers the whole motion.
+    """
+    fa, fb = accelerations(p.vel_a, p.mu_a), accelerations(p.vel_b, p.mu_b)
+    coeffs = gap_coefficients(p.pos_a - p.pos_b, p.vel_a - p.vel_b, fa - fb, p.radius)
+    tau = np.minimum(window_end(p.vel_a, p.mu_a), window_end(p.vel_b, p.mu_b))
+    return coeffs, tau
+
+
+def first_window_only(times: np.ndarray, p: Pairs) -> np.ndarray:
+    """``times`` with contacts at or after the first stop replaced by ``inf``."""
+    _, tau = first_window(p)
+    return np.where(times < tau, times, np.inf)
+
+
+# ---------------------------------------------------------------------------------------------
+# numpy.roots in a loop (all windows)
+
+
+def entry_root(c: np.ndarray, length: float, at_start: bool) -> float:
+    """First + → − crossing of the polynomial ``c`` in ``[0, length)``, or ``inf``."""
+    if at_start and c[4] <= 0 and c[3] < 0:  # touching or overlapping, and approaching
+        return 0.0
+    if not np.any(c):
+        return np.inf
+    z = np.roots(c)
+    real = np.sort(z[np.abs(z.imag) <= IMAG_TOL * np.maximum(1, np.abs(z))].real)
+    slope = np.polyder(c)
+    for t in real[(real >= 0) & (real < length)]:
+        if np.polyval(slope, t) < 0:
+            return float(t)
+    return np.inf
+
+
+def state_at(p: np.ndarray, v: np.ndarray, mu: float, t: float) -> tuple[np.ndarray, np.ndarray]:
+    """Position and velocity at ``t`` of a ball (stopped balls stay put, velocity 0)."""
+    tau = float(stop_times(v, np.asarray(mu)))
+    acc = accelerations(v, np.asarray(mu))
+    s = min(t, tau)
+    pos = p + v * s + 0.5 * acc * s * s
+    return pos, (v + acc * s if t < tau else np.zeros(2))
+
+
+def loop_pair(
+    pa: np.ndarray,
+    va: np.ndarray,
+    mua: float,
+    pb: np.ndarray,
+    vb: np.ndarray,
+    mub: float,
+    radius: float,
+) -> float:
+    """One pair's collision time with numpy.roots, window by window."""
+    ta, tb = float(stop_times(va, np.asarray(mua))), float(stop_times(vb, np.asarray(mub)))
+    edges = sorted({0.0, min(ta, tb), max(ta, tb)})
+    for start, end in zip(edges, [*edges[1:], np.inf]):
+        if start == end or (start >= ta and start >= tb):
+            continue
+        xa, ua = state_at(pa, va, mua, start)
+        xb, ub = state_at(pb, vb, mub, start)
+        fa = accelerations(ua, np.asarray(mua))
+        fb = accelerations(ub, np.asarray(mub))
+        c = gap_coefficients(xa - xb, ua - ub, fa - fb, radius)
+        t = entry_root(c, end - start, at_start=start == 0.0)
+        if t < np.inf:
+            return start + t
+    return np.inf
+
+
+def numpy_roots_loop(p: Pairs) -> np.ndarray:
+    """numpy.roots in a Python loop, every window (full semantics)."""
+    return np.array(
+        [
+            loop_pair(
+                p.pos_a[i], p.vel_a[i], p.mu_a[i], p.pos_b[i], p.vel_b[i], p.mu_b[i], p.radius
+            )
+            for i in range(len(p))
+        ]
+    )
+
+
+# ---------------------------------------------------------------------------------------------
+# numpy batched companion eigenvalues (first window)
+
+
+def first_entries(roots: np.ndarray, coeffs: np.ndarray, tau: np.ndarray) -> np.ndarray:
+    """Per row: the smallest real root in ``[0, tau)`` where ``g′ < 0``, else ``inf``."""
+    real = np.abs(roots.imag) <= IMAG_TOL * np.maximum(1, np.abs(roots))
+    t = roots.real
+    a, b, c, d = (coeffs[:, k, None] for k in range(4))
+    slope = ((4 * a * t + 3 * b) * t + 2 * c) * t + d
+    ok = real & (t >= 0) & (t < tau[:, None]) & (slope < 0)
+    return np.where(ok, t, np.inf).min(axis=1)
+
+
+def eigvals_batched(p: Pairs) -> np.ndarray:
+    """Companion-matrix eigenvalues of all first-window quartics at once."""
+    coeffs, tau = first_window(p)
+    out = np.full(len(p), np.inf)
+    quartic = coeffs[:, 0] > 0
+    c = coeffs[quartic]
+    companion = np.zeros((len(c), 4, 4))
+    companion[:, 0, :] = -c[:, 1:] / c[:, :1]
+    companion[:, [1, 2, 3], [0, 1, 2]] = 1.0
+    out[quartic] = first_entries(np.linalg.eigvals(companion), c, tau[quartic])
+    for i in np.flatnonzero(~quartic):  # a = 0: equal friction vectors, degree ≤ 2
+        out[i] = entry_root(coeffs[i], tau[i], at_start=False)
+    touching = (coeffs[:, 4] <= 0) & (coeffs[:, 3] < 0)
+    return np.where(touching, 0.0, out)
+
+
+# ---------------------------------------------------------------------------------------------
+# pooltool
+
+
+def load_pooltool() -> dict[str, Any] | None:
+    """pooltool-billiards' solver functions, or ``None`` (with a message) when absent."""
+    try:
+        quartic = importlib.import_module("pooltool.ptmath.roots.quartic")
+        core = importlib.import_module("pooltool.ptmath.roots.core")
+        solve = importlib.import_module("pooltool.evolution.event_based.solve")
+        const = importlib.import_module("pooltool.constants")
+        version = importlib.import_module("importlib.metadata").version("pooltool-billiards")
+    except Exception as e:  # not installed, or installed without its runtime deps
+        print(f"# skipped pooltool: cannot import it ({type(e).__name__}: {e})")
+        return None
+    return {
+        "version": version,
+        "solve_many": quartic.solve_many,
+        "smallest": core.get_real_positive_smallest_roots,
+        "pair_time": solve.ball_ball_collision_time,
+        "rolling": const.rolling,
+        "stationary": const.stationary,
+    }
+
+
+def pooltool_batch(pt: dict[str, Any], p: Pairs) -> np.ndarray:
+    """pooltool's batch solver and root choice on the first-window quartics."""
+    coeffs, _ = first_window(p)
+    return np.asarray(pt["smallest"](pt["solve_many"](coeffs)))
+
+
+def rvw(pos: np.ndarray, vel: np.ndarray, radius: float) -> np.ndarray:
+    """pooltool's ball state: rows position (z = radius), velocity, angular velocity."""
+    out = np.zeros((len(pos), 3, 3))
+    out[:, 0, :2], out[:, 0, 2], out[:, 1, :2] = pos, radius, vel
+    return out
+
+
+def pooltool_pairs(pt: dict[str, Any], p: Pairs) -> Callable[[], np.ndarray]:
+    """A loop over pooltool's per-pair ``ball_ball_collision_time`` (rolling balls, g = 1)."""
+    r = 0.5 * p.radius
+    ra, rb = rvw(p.pos_a, p.vel_a, r), rvw(p.pos_b, p.vel_b, r)
+
+    def state(v: np.ndarray) -> int:
+        return int(pt["rolling"] if np.any(v != 0) else pt["stationary"])
+
+    sa = [state(v) for v in p.vel_a]
+    sb = [state(v) for v in p.vel_b]
+    mua, mub = p.mu_a.tolist(), p.mu_b.tolist()
+    f = pt["pair_time"]
+
+    def run() -> np.ndarray:
+        return np.array(
+            [
+                f(ra[i], rb[i], sa[i], sb[i], mua[i], mub[i], 1.0, 1.0, 1.0, 1.0, r)
+                for i in range(len(sa))
+            ]
+        )
+
+    return run
+
+
+def compile_seconds(fn: Callable[[], object]) -> float:
+    """Wall time of one call (numba's first call compiles or loads its cache)."""
+    start = time.perf_counter()
+    fn()
+    return time.perf_counter() - start
+
+
+# ---------------------------------------------------------------------------------------------
+# Timing and comparison
+
+
+def median_time(fn: Callable[[], np.ndarray], repeats: int) -> tuple[float, np.ndarray]:
+    """Median wall time over ``repeats`` calls (after one warm-up call) and the last result."""
+    result = fn()
+    samples = []
+    for _ in range(max(1, repeats)):
+        start = time.perf_counter()
+        result = fn()
+        samples.append(time.perf_counter() - start)
+    return float(np.median(samples)), result
+
+
+@dataclasses.dataclass
+class Row:
+    """One method's measurement and its agreement with ballcollide."""
+
+    method: str
+    pairs: int
+    seconds: float
+    hits: int
+    disagree: int = 0
+    clear: int = 0
+    worst_dt: float = 0.0
+    worst_rel: float = 0.0
+
+    @property
+    def ns(self) -> float:
+        return self.seconds / self.pairs * 1e9
+
+
+def disagreements(
+    peer: np.ndarray, ref: np.ndarray, stable: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, float, float, int]:
+    """Hit/miss disagreements, those on stable pairs, the worst time differences (absolute,
+    relative to the larger time) where both hit, and the pair with the worst absolute one."""
+    differ = np.isfinite(peer) != np.isfinite(ref)
+    both = np.flatnonzero(np.isfinite(peer) & np.isfinite(ref))
+    if both.size == 0:
+        return np.flatnonzero(differ), np.flatnonzero(differ & stable), 0.0, 0.0, -1
+    dt = np.abs(peer[both] - ref[both])
+    rel = dt / np.maximum(np.maximum(ref[both], peer[both]), 1e-300)
+    worst = int(both[np.argmax(dt)])
+    return (
+        np.flatnonzero(differ),
+        np.flatnonzero(differ & stable),
+        float(dt.max()),
+        float(rel.max()),
+        worst,
+    )
+
+
+def stable_pairs(p: Pairs, threads: int | None) -> np.ndarray:
+    """Pairs whose ballcollide hit/miss survives scaling the radius by 1 ± 1e-6."""
+    lo = np.isfinite(bc_times(p.with_radius(p.radius * (1 - 1e-6)), threads))
+    hi = np.isfinite(bc_times(p.with_radius(p.radius * (1 + 1e-6)), threads))
+    return np.asarray(lo == hi)
+
+
+# ---------------------------------------------------------------------------------------------
+# mpmath verdicts
+
+
+def mp_gap(p: Pairs, i: int, t: float) -> tuple[float, float]:
+    """Exact (50-digit) ``|d(t)| − radius`` and ``d·d′`` of pair ``i`` at time ``t``."""
+    import mpmath as mp
+
+    mp.mp.dps = 50
+
+    def ball(pos: np.ndarray, vel: np.ndarray, mu: float) -> tuple[Any, Any]:
+        px, py, vx, vy = (mp.mpf(float(x)) for x in (*pos, *vel))
+        speed = mp.sqrt(vx * vx + vy * vy)
+        if speed == 0:
+            return (px, py), (mp.mpf(0), mp.mpf(0))
+        m = mp.mpf(float(mu))
+        s = min(mp.mpf(t), speed / m) if m > 0 else mp.mpf(t)
+        k = 1 - m * s / speed
+        x = (px + vx * s - m * vx / speed * s * s / 2, py + vy * s - m * vy / speed * s * s / 2)
+        moving = m == 0 or mp.mpf(t) < speed / m
+        return x, ((vx * k, vy * k) if moving else (mp.mpf(0), mp.mpf(0)))
+
+    (xa, ya), (ua, wa) = ball(p.pos_a[i], p.vel_a[i], p.mu_a[i])
+    (xb, yb), (ub, wb) = ball(p.pos_b[i], p.vel_b[i], p.mu_b[i])
+    dx, dy, du, dw = xa - xb, ya - yb, ua - ub, wa - wb
+    return float(mp.sqrt(dx * dx + dy * dy) - mp.mpf(p.radius)), float(dx * du + dy * dw)
+
+
+def valid_contact(p: Pairs, i: int, t: float) -> bool:
+    """Whether ``t`` is a real contact: touching (or overlapping at 0) and approaching."""
+    gap, approach = mp_gap(p, i, t)
+    touching = gap <= CONTACT_TOL if t == 0 else abs(gap) <= CONTACT_TOL
+    return touching and approach < 0
+
+
+def verdict(p: Pairs, i: int, t_bc: float, t_peer: float) -> str:
+    """Who is right on a hit/miss disagreement, from the high-precision motion."""
+    claims = {name: t for name, t in (("ballcollide", t_bc), ("peer", t_peer)) if t < np.inf}
+    ok = {name: valid_contact(p, i, t) for name, t in claims.items()}
+    parts, gaps = [], {}
+    for name, t in claims.items():
+        gap, approach = mp_gap(p, i, t)
+        gaps[name] = abs(gap)
+        parts.append(f"{name} t={t:.17g}: |d|-R={gap:.3e} m, d·d'={approach:.3e}")
+    right = sorted((t, name) for name, t in claims.items() if ok[name])
+    if len(right) == 2:  # both touch within CONTACT_TOL: the closer to |d| = R is better
+        who = "both touch; closer to |d| = R: " + min(gaps, key=gaps.__getitem__)
+    elif right:
+        who = right[0][1]  # the only real contact: the other's miss or claim is wrong
+    else:
+        who = "ballcollide" if "ballcollide" not in claims else "peer"
+    return f"pair {i}: " + "; ".join(parts) + f" => right: {who}"
+
+
+# ---------------------------------------------------------------------------------------------
+# Report
+
+
+def fmt_row(r: Row, base: float, compared: bool) -> str:
+    """One table line: ns/pair, ballcollide's speed-up over this method, agreement."""
+    ratio = r.ns / base
+    agree = f"{r.disagree:>7d} {r.clear:>6d} {r.worst_dt:>10.2e} {r.worst_rel:>9.2e}"
+    return f"| {r.method:<44s} | {r.pairs:>9d} | {r.ns:>10.1f} | {ratio:>8.2f} | {r.hits:>7d} |" + (
+        f" {agree} |" if compared else f" {'—':>7s} {'—':>6s} {'—':>10s} {'—':>9s} |"
+    )
+
+
+HEADER = (
+    "| method                                       |     pairs |    ns/pair | ÷ bc-1t  |"
+    "    hits | disagree  clear   worst|Δt| worst rel |\n"
+    "|----------------------------------------------|-----------|------------|----------|"
+    "---------|---------------------------------------|"
+)
+
+
+@dataclasses.dataclass
+class Peer:
+    """A peer: a name, a subsample size, a function, and how its answers are compared."""
+
+    name: str
+    pairs: int
+    run: Callable[[Pairs], Callable[[], np.ndarray]]
+    first_window: bool
+    repeats: int
+
+
+def measure_peer(
+    peer: Peer, data: Pairs, ref: np.ndarray, stable: np.ndarray, checks: int
+) -> tuple[Row, list[str]]:
+    """Time a peer on its subsample and compare its answers with ballcollide's."""
+    sub = data.head(peer.pairs)
+    seconds, out = median_time(peer.run(sub), peer.repeats)
+    want = ref[: peer.pairs]
+    if peer.first_window:
+        want, out = first_window_only(want, sub), first_window_only(out, sub)
+    idx, clear, worst, worst_rel, at = disagreements(out, want, stable[: peer.pairs])
+    row = Row(
+        peer.name,
+        len(sub),
+        seconds,
+        int(np.isfinite(out).sum()),
+        len(idx),
+        len(clear),
+        worst,
+        worst_rel,
+    )
+    notes = [verdict(sub, int(i), want[i], out[i]) for i in idx[:checks]]
+    if len(idx):
+        overlap = int((first_window(sub.head(len(sub)))[0][idx, 4] <= 0).sum())
+        notes.insert(0, f"{len(idx)} hit/miss disagreements, {overlap} of them overlapping at t=0")
+    if worst > 0:
+        notes.append("worst time difference: " + verdict(sub, at, want[at], out[at]))
+    return row, notes
+
+
+def run_set(name: str, args: argparse.Namespace, pt: dict[str, Any] | None) -> None:
+    """Measure every method on one data set and print the table."""
+    data = make_set(name, args.pairs, args.seed)
+    one, t1 = median_time(lambda: bc_times(data, 1), args.repeats)
+    allt, _ = median_time(lambda: bc_times(data, None), args.repeats)
+    stable = stable_pairs(data, None)
+    rows = [
+        Row("ballcollide collision_times, 1 thread", len(data), one, int(np.isfinite(t1).sum())),
+        Row(
+            f"ballcollide collision_times, {os.cpu_count()} threads",
+            len(data),
+            allt,
+            int(np.isfinite(t1).sum()),
+        ),
+    ]
+    loops = min(args.loop_pairs, len(data))
+    batch = min(args.batch_pairs, len(data))
+    loop_reps = max(1, min(args.repeats, 3))
+    peers = [
+        Peer(
+            "numpy.roots loop (all windows)",
+            loops,
+            lambda s: lambda: numpy_roots_loop(s),
+            False,
+            loop_reps,
+        ),
+        Peer(
+            "numpy eigvals batched (first window)",
+            batch,
+            lambda s: lambda: eigvals_batched(s),
+            True,
+            args.repeats,
+        ),
+    ]
+    if pt is not None:
+        peers += [
+            Peer(
+                f"pooltool {pt['version']} solve_many (first window)",
+                batch,
+                lambda s: lambda: pooltool_batch(pt, s),
+                True,
+                args.repeats,
+            ),
+            Peer(
+                "pooltool ball_ball_collision_time loop (1st w.)",
+                loops,
+                lambda s: pooltool_pairs(pt, s),
+                True,
+                loop_reps,
+            ),
+        ]
+    notes: list[str] = []
+    for peer in peers:
+        row, why = measure_peer(peer, data, t1, stable, args.checks)
+        rows.append(row)
+        notes += [f"  {peer.name}: {w}" for w in why]
+    print(
+        f"\n## set: {name} — {len(data)} pairs, seed {args.seed}, "
+        f"{int(np.isfinite(t1).sum())} hits, {int((~stable).sum())} near-grazing (unstable)"
+    )
+    print(HEADER)
+    for k, r in enumerate(rows):
+        print(fmt_row(r, rows[0].ns, compared=k >= 2))
+    if notes:
+        print("mpmath checks of disagreements (first few per method):")
+        print("\n".join(notes))
+
+
+# ---------------------------------------------------------------------------------------------
+# Python overhead over the Rust kernel
+
+
+def write_raw(p: Pairs, path: Path) -> None:
+    """The pairs in ``examples/kernel_timing.rs``'s raw little-endian format."""
+    parts = [p.pos_a, p.vel_a, p.mu_a, p.pos_b, p.vel_b, p.mu_b, np.array([p.radius])]
+    with path.open("wb") as f:
+        f.write(np.uint64(len(p)).astype("<u8").tobytes())
+        for x in parts:
+            f.write(np.ascontiguousarray(x, dtype="<f8").tobytes())
+
+
+def kernel_command(args: argparse.Namespace, path: Path, threads: str) -> list[str]:
+    """How to run the Rust timing example."""
+    tail = [str(path), threads, str(args.repeats)]
+    if args.kernel_bin:
+        return [args.kernel_bin, *tail]
+    return ["cargo", "run", "-q", "--release", "--example", "kernel_timing", "--", *tail]
+
+
+def rust_kernel(args: argparse.Namespace, path: Path, threads: str) -> dict[str, str] | None:
+    """Run the Rust example; its ``key=value`` fields, or ``None`` (with a message)."""
+    cmd = kernel_command(args, path, threads)
+    print(f"$ {shlex.join(cmd)}")
+    try:
+        done = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, check=True)
+    except (OSError, subprocess.CalledProcessError) as e:
+        print(f"# skipped the Rust kernel timing: {e}")
+        return None
+    print(done.stdout.strip())
+    return dict(field.split("=", 1) for field in done.stdout.split())
+
+
+def overhead(args: argparse.Namespace) -> None:
+    """``collision_times`` from Python vs the Rust kernel on the same 10⁶ pairs."""
+    data = make_set("random", args.overhead_pairs, args.seed)
+    print(f"\n## Python overhead: {len(data)} random pairs, 1 thread, median of {args.repeats}")
+    py_s, times = median_time(lambda: bc_times(data, 1), args.repeats)
+    py_ns = py_s / len(data) * 1e9
+    finite = times[np.isfinite(times)]
+    print(f"python: median_ns_per_pair={py_ns:.4f} hits={finite.size} sum={finite.sum():.17e}")
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "pairs.bin"
+        write_raw(data, path)
+        rust = rust_kernel(args, path, "1")
+    if rust is None:
+        return
+    rust_ns = float(rust["median_ns_per_pair"])
+    same = int(rust["hits"]) == finite.size and float(rust["sum"]) == float(finite.sum())
+    print(f"same answers (hit count and sum of times): {same}")
+    print(f"overhead = (python − rust)/rust = {(py_ns - rust_ns) / rust_ns * 100:+.2f} %")
+
+
+# ---------------------------------------------------------------------------------------------
+# Plot: ns/pair against N
+
+
+def scaling(
+    args: argparse.Namespace, pt: dict[str, Any] | None
+) -> dict[str, list[tuple[int, float]]]:
+    """ns/pair against N for ballcollide and the batched peers (random set)."""
+    curves: dict[str, list[tuple[int, float]]] = {}
+    big = make_set("random", args.plot_max, args.seed + 1)
+    methods: list[tuple[str, int, Callable[[Pairs], np.ndarray]]] = [
+        ("ballcollide, 1 thread", args.plot_max, lambda s: bc_times(s, 1)),
+        (f"ballcollide, {os.cpu_count()} threads", args.plot_max, lambda s: bc_times(s, None)),
+        ("numpy eigvals batched", args.plot_peer_max, eigvals_batched),
+    ]
+    if pt is not None:
+        methods.append(("pooltool solve_many", args.plot_peer_max, lambda s: pooltool_batch(pt, s)))
+    for label, top, fn in methods:
+        for n in (10**k for k in range(2, 9)):
+            if n > top:
+                break
+            sub = big.head(n)
+            reps = max(3, min(args.repeats, int(2e6 // n)))
+            seconds, _ = median_time(lambda sub=sub, fn=fn: fn(sub), reps)
+            curves.setdefault(label, []).append((n, seconds / n * 1e9))
+            print(f"plot: {label:<28s} N={n:>9d} {seconds / n * 1e9:>10.1f} ns/pair ({reps} reps)")
+    return curves
+
+
+def plot(curves: dict[str, list[tuple[int, float]]], path: str) -> None:
+    """Log-log plot of the curves, saved as a small PNG."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=90)
+    for label, pts in curves.items():
+        ns, ys = zip(*pts)
+        ax.loglog(ns, ys, marker="o", label=label)
+    ax.set_xlabel("pairs per call (N)")
+    ax.set_ylabel("ns per pair (median)")
+    ax.set_title("Random table pairs: collision times, ns/pair against N")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+    print(f"plot written to {path}")
+
+
+# ---------------------------------------------------------------------------------------------
+# Command line
+
+
+def parse(argv: Sequence[str] | None) -> argparse.Namespace:
+    """Command-line options."""
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--pairs", type=int, default=1_000_000, help="pairs per set (ballcollide)")
+    ap.add_argument("--loop-pairs", type=int, default=2_000, help="subsample for loop peers")
+    ap.add_argument("--batch-pairs", type=int, default=200_000, help="subsample, batched peers")
+    ap.add_argument("--repeats", type=int, default=7, help="timed repeats (median)")
+    ap.add_argument("--seed", type=int, default=2024)
+    ap.add_argument("--sets", default="random", help=f"comma list of {SETS} or 'all'")
+    ap.add_argument("--checks", type=int, default=3, help="mpmath checks per method")
+    ap.add_argument("--quick", action="store_true", help="small sizes, no pooltool (smoke test)")
+    ap.add_argument("--no-pooltool", action="store_true", help="skip pooltool")
+    ap.add_argument("--plot", metavar="FILE.png", help="also plot ns/pair against N")
+    ap.add_argument("--plot-max", type=int, default=1_000_000, help="largest N, ballcollide")
+    ap.add_argument("--plot-peer-max", type=int, default=1_000_000, help="largest N, peers")
+    ap.add_argument("--overhead", action="store_true", help="Python vs Rust kernel, 1 thread")
+    ap.add_argument("--overhead-pairs", type=int, default=1_000_000)
+    ap.add_argument("--kernel-bin", help="prebuilt examples/kernel_timing binary (else cargo)")
+    args = ap.parse_args(argv)
+    if args.quick:
+        args.pairs, args.loop_pairs, args.batch_pairs = 5_000, 300, 5_000
+        args.repeats, args.no_pooltool = 3, True
+    args.sets = SETS if args.sets == "all" else tuple(args.sets.split(","))
+    unknown = set(args.sets) - set(SETS)
+    if unknown:
+        ap.error(f"unknown sets {sorted(unknown)}; choose from {SETS}")
+    return args
+
+
+def setup_pooltool(args: argparse.Namespace) -> dict[str, Any] | None:
+    """Import pooltool and warm its numba functions up, reporting the first-call time."""
+    if args.no_pooltool:
+        print("# skipped pooltool (--no-pooltool / --quick)")
+        return None
+    start = time.perf_counter()
+    pt = load_pooltool()
+    if pt is None:
+        return None
+    print(f"# pooltool-billiards {pt['version']}: import {time.perf_counter() - start:.1f} s")
+    tiny = make_set("random", 4, 0)
+    first = compile_seconds(lambda: pooltool_batch(pt, tiny))
+    first += compile_seconds(lambda: pooltool_pairs(pt, tiny)())
+    print(f"# pooltool first calls (numba compile or cache load, not timed below): {first:.1f} s")
+    return pt
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the comparison."""
+    args = parse(argv)
+    print(
+        f"# ballcollide {bc.__version__}, numpy {np.__version__}, python "
+        f"{sys.version.split()[0]}, {os.cpu_count()} CPUs; ns/pair = median of "
+        f"{args.repeats} repeats / pairs; '÷ bc-1t' = ns/pair ÷ ballcollide's 1-thread ns/pair"
+    )
+    print(f"# load average {os.getloadavg()[0]:.1f} at start")
+    print(
+        f"# loop peers on the first {args.loop_pairs} pairs, batched peers on the first "
+        f"{args.batch_pairs}; numpy eigvals and pooltool are compared on the first window"
+    )
+    pt = setup_pooltool(args)
+    for name in args.sets:
+        run_set(name, args, pt)
+    if args.overhead:
+        overhead(args)
+    if args.plot:
+        plot(scaling(args, pt), args.plot)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
