@@ -9,7 +9,8 @@
 //! - [`Ball`] ([`motion`]): one ball's state and trajectory;
 //! - [`Gap`] ([`coefficients`]): the relative motion of two balls and its gap quartic;
 //! - [`collision_time`] ([`collision`]): the first contact of two balls;
-//! - [`poly`]: real-root solvers for polynomials of degree ≤ 4.
+//! - [`poly`]: real-root solvers for polynomials of degree ≤ 4;
+//! - [`scene`]: many balls at once: earliest collisions, with a broad phase.
 //!
 //! ```
 //! use ballcollide::{Ball, collision_time};
@@ -28,6 +29,7 @@ pub mod collision;
 pub mod error;
 pub mod motion;
 pub mod poly;
+pub mod scene;
 #[cfg(feature = "python")]
 mod python;
 
