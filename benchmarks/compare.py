@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
+import functools
 import importlib
 import os
 import shlex
@@ -179,7 +180,7 @@ def accelerations(vel: np.ndarray, mu: np.ndarray) -> np.ndarray:
     """Friction acceleration vectors ``−μ v/|v|`` (zero for a ball at rest)."""
     speed = np.hypot(vel[..., 0], vel[..., 1])[..., None]
     unit = np.divide(vel, speed, out=np.zeros_like(vel), where=speed > 0)
-    return -np.asarray(mu)[..., None] * unit
+    return np.asarray(-np.asarray(mu)[..., None] * unit)
 
 
 def stop_times(vel: np.ndarray, mu: np.ndarray) -> np.ndarray:
@@ -308,7 +309,7 @@ def first_entries(roots: np.ndarray, coeffs: np.ndarray, tau: np.ndarray) -> np.
     a, b, c, d = (coeffs[:, k, None] for k in range(4))
     slope = ((4 * a * t + 3 * b) * t + 2 * c) * t + d
     ok = real & (t >= 0) & (t < tau[:, None]) & (slope < 0)
-    return np.where(ok, t, np.inf).min(axis=1)
+    return np.asarray(np.where(ok, t, np.inf).min(axis=1))
 
 
 def eigvals_batched(p: Pairs) -> np.ndarray:
@@ -675,23 +676,41 @@ def rust_kernel(args: argparse.Namespace, path: Path, threads: str) -> dict[str,
 
 
 def overhead(args: argparse.Namespace) -> None:
-    """``collision_times`` from Python vs the Rust kernel on the same 10⁶ pairs."""
+    """``collision_times`` from Python vs the Rust kernel on the same 10⁶ pairs, 1 thread.
+
+    Python and Rust alternate for ``--overhead-rounds`` rounds (each the median of
+    ``--repeats`` calls), so that a change of load on shared cores hits both alike.
+    """
     data = make_set("random", args.overhead_pairs, args.seed)
     print(f"\n## Python overhead: {len(data)} random pairs, 1 thread, median of {args.repeats}")
-    py_s, times = median_time(lambda: bc_times(data, 1), args.repeats)
-    py_ns = py_s / len(data) * 1e9
+    times = bc_times(data, 1)
     finite = times[np.isfinite(times)]
-    print(f"python: median_ns_per_pair={py_ns:.4f} hits={finite.size} sum={finite.sum():.17e}")
+    total = float(np.cumsum(finite)[-1]) if finite.size else 0.0  # in order, like the Rust sum
+    print(f"python: hits={finite.size} sum={total:.17e}")
+    one = data.head(1)
+    fixed, _ = median_time(lambda: bc_times(one, 1), 1000)
+    print(f"python: one call on 1 pair (fixed cost per call) {fixed * 1e6:.2f} µs")
+    py, rs = [], []
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "pairs.bin"
         write_raw(data, path)
-        rust = rust_kernel(args, path, "1")
-    if rust is None:
-        return
-    rust_ns = float(rust["median_ns_per_pair"])
-    same = int(rust["hits"]) == finite.size and float(rust["sum"]) == float(finite.sum())
-    print(f"same answers (hit count and sum of times): {same}")
-    print(f"overhead = (python − rust)/rust = {(py_ns - rust_ns) / rust_ns * 100:+.2f} %")
+        for k in range(args.overhead_rounds):
+            py_s, _ = median_time(lambda: bc_times(data, 1), args.repeats)
+            rust = rust_kernel(args, path, "1")
+            if rust is None:
+                return
+            py.append(py_s / len(data) * 1e9)
+            rs.append(float(rust["median_ns_per_pair"]))
+            same = int(rust["hits"]) == finite.size and float(rust["sum"]) == total
+            print(
+                f"round {k + 1}: python {py[-1]:.3f} ns/pair, rust {rs[-1]:.3f} ns/pair, "
+                f"overhead {(py[-1] - rs[-1]) / rs[-1] * 100:+.2f} %, same answers: {same}"
+            )
+    p_ns, r_ns = float(np.median(py)), float(np.median(rs))
+    print(
+        f"median over rounds: python {p_ns:.3f} ns/pair, rust {r_ns:.3f} ns/pair, "
+        f"overhead = (python − rust)/rust = {(p_ns - r_ns) / r_ns * 100:+.2f} %"
+    )
 
 
 # ---------------------------------------------------------------------------------------------
@@ -717,7 +736,7 @@ def scaling(
                 break
             sub = big.head(n)
             reps = max(3, min(args.repeats, int(2e6 // n)))
-            seconds, _ = median_time(lambda sub=sub, fn=fn: fn(sub), reps)
+            seconds, _ = median_time(functools.partial(fn, sub), reps)
             curves.setdefault(label, []).append((n, seconds / n * 1e9))
             print(f"plot: {label:<28s} N={n:>9d} {seconds / n * 1e9:>10.1f} ns/pair ({reps} reps)")
     return curves
@@ -765,6 +784,7 @@ def parse(argv: Sequence[str] | None) -> argparse.Namespace:
     ap.add_argument("--plot-peer-max", type=int, default=1_000_000, help="largest N, peers")
     ap.add_argument("--overhead", action="store_true", help="Python vs Rust kernel, 1 thread")
     ap.add_argument("--overhead-pairs", type=int, default=1_000_000)
+    ap.add_argument("--overhead-rounds", type=int, default=3, help="Python/Rust alternations")
     ap.add_argument("--kernel-bin", help="prebuilt examples/kernel_timing binary (else cargo)")
     args = ap.parse_args(argv)
     if args.quick:
