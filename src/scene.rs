@@ -210,7 +210,7 @@ pub fn pairwise_collision_times(
 /// ];
 /// let (t, i, j) = earliest_collision(&balls, &[0.1; 3], &SceneOptions::default())?.unwrap();
 /// assert_eq!((i, j), (0, 2));
-/// assert!((t - (1.0 - 0.8_f64.sqrt())).abs() < 1e-15); // 2(t − t²/4) = 0.8
+/// assert!((t - (2.0 - 2.4_f64.sqrt())).abs() < 1e-15); // 1 − 2(t − t²/4) = 0.2
 ///
 /// let soon = SceneOptions { t_max: 0.1, ..Default::default() };
 /// assert_eq!(earliest_collision(&balls, &[0.1; 3], &soon)?, None);
