@@ -68,16 +68,17 @@ pub fn solve_cubic(a: f64, b: f64, c: f64, d: f64) -> RealRoots {
         return roots;
     }
     let coeffs = [a, b, c, d];
-    if let Some(i) = split_point(&coeffs) {
+    let exps = exponents(&coeffs);
+    if let Some(i) = split_point(&exps) {
         return merge(
             solve_low_degree(&coeffs[..=i]),
             solve_low_degree(&coeffs[i..]),
         );
     }
-    let Some(s) = root_exponent(&coeffs) else {
+    let (Some(en), Some(s)) = (exps[0], root_exponent(&exps)) else {
         return RealRoots::empty(); // unreachable: a and d are finite and non-zero
     };
-    cubic_scaled(scaled(&coeffs, s)).unscaled(s)
+    cubic_scaled(scaled(&coeffs, en, s)).unscaled(s)
 }
 
 /// The roots of a cubic whose coefficients `p` have been scaled so that `p[0] ∈ [1, 2)`,
@@ -167,7 +168,16 @@ fn eval_deflate(p: &[f64; 4], x: f64) -> (f64, f64, f64, f64) {
 /// appended as the double root `u` (an exact double root that rounding pushed off the real
 /// axis).
 pub(super) fn push_quadratic_roots(p: &[f64], a: f64, b: f64, c: f64, roots: &mut RootBuf) {
-    let q = solve_quadratic(a, b, c);
+    // A discriminant negative by far more than its rounding error (8ε of its terms, where the
+    // stable solver's own is about 2ε) means a complex pair, which `solve_quadratic` would
+    // report as no root: skip it (most ball–ball quartics have only complex roots).
+    let (bb, ac4) = (b * b, 4.0 * a * c);
+    let surely_complex = (bb - ac4) < -8.0 * f64::EPSILON * (bb + ac4.abs());
+    let q = if surely_complex {
+        RealRoots::empty()
+    } else {
+        solve_quadratic(a, b, c)
+    };
     if q.is_empty() && a != 0.0 {
         let u = -b / (2.0 * a);
         // v² = c/a − u²; when it cancels (a near-double pair, where the decision is made) the
@@ -188,14 +198,20 @@ pub(super) fn push_quadratic_roots(p: &[f64], a: f64, b: f64, c: f64, roots: &mu
     }
 }
 
-/// The exponent `s` such that the roots of `coeffs` (highest degree first, leading one
-/// non-zero) are at most about `2^s` in magnitude: the largest `⌈(e_k − e_n)/(n − k)⌉` over
+/// The binary exponents of the coefficients ([`exponent`]; `None` for a zero), computed once
+/// for [`split_point`], [`root_exponent`] and [`scaled`].
+pub(super) fn exponents<const N: usize>(coeffs: &[f64; N]) -> [Option<i32>; N] {
+    coeffs.map(exponent)
+}
+
+/// The exponent `s` such that the roots of the polynomial with coefficient exponents `exps`
+/// (highest degree first, leading one non-zero) are at most about `2^s` in magnitude: the largest `⌈(e_k − e_n)/(n − k)⌉` over
 /// the non-zero coefficients (Fujiwara's bound in powers of two).
-pub(super) fn root_exponent(coeffs: &[f64]) -> Option<i32> {
-    let en = exponent(*coeffs.first()?)?;
+pub(super) fn root_exponent(exps: &[Option<i32>]) -> Option<i32> {
+    let en = (*exps.first()?)?;
     let mut s = i32::MIN;
-    for (i, &c) in coeffs.iter().enumerate().skip(1) {
-        if let Some(ek) = exponent(c) {
+    for (i, &e) in exps.iter().enumerate().skip(1) {
+        if let Some(ek) = e {
             // ⌈num / (n − k)⌉ with n − k = i ∈ 1..=4; constant divisors compile to shifts and
             // multiplications, where a variable one would be a slow integer division.
             let num = ek - en;
@@ -213,9 +229,9 @@ pub(super) fn root_exponent(coeffs: &[f64]) -> Option<i32> {
 }
 
 /// The coefficients of `p(2^s·y)`, divided by a power of two so that the leading one lies in
-/// `[1, 2)`: all exact (barring underflow of coefficients that are negligible).
-pub(super) fn scaled<const N: usize>(coeffs: &[f64; N], s: i32) -> [f64; N] {
-    let en = exponent(coeffs[0]).unwrap_or(0);
+/// `[1, 2)` (`en` is the leading coefficient's exponent): all exact (barring underflow of
+/// coefficients that are negligible).
+pub(super) fn scaled<const N: usize>(coeffs: &[f64; N], en: i32, s: i32) -> [f64; N] {
     let mut out = [0.0; N];
     for (i, (o, &c)) in out.iter_mut().zip(coeffs).enumerate() {
         // Degree k = N − 1 − i; the factor is 2^(s·k − s·(N − 1) − en) = 2^(−s·i − en).
@@ -224,7 +240,7 @@ pub(super) fn scaled<const N: usize>(coeffs: &[f64; N], s: i32) -> [f64; N] {
     out
 }
 
-/// Where to split a polynomial (highest degree first) whose roots form two groups more than
+/// Where to split a polynomial (given by its coefficient exponents, highest degree first) whose roots form two groups more than
 /// [`SPLIT_BITS`] apart in magnitude, as read off its Newton polygon: the index `i` such that
 /// `coeffs[..=i]` has the large roots and `coeffs[i..]` the small ones.
 ///
@@ -233,12 +249,12 @@ pub(super) fn scaled<const N: usize>(coeffs: &[f64; N], s: i32) -> [f64; N] {
 /// slope jumps by more than `SPLIT_BITS` separates two groups, and at it each group's
 /// polynomial is the part of the coefficients on its side, up to terms smaller than
 /// `2^-SPLIT_BITS` relative.
-pub(super) fn split_point(coeffs: &[f64]) -> Option<usize> {
-    let n = coeffs.len().checked_sub(1)?;
+pub(super) fn split_point(exps: &[Option<i32>]) -> Option<usize> {
+    let n = exps.len().checked_sub(1)?;
     // Fast path: an edge slope is at most the exponent range, so slopes can differ by more
     // than SPLIT_BITS only if the exponents span more than SPLIT_BITS / 2.
     let (mut lo, mut hi) = (i32::MAX, i32::MIN);
-    for e in coeffs.iter().filter_map(|&c| exponent(c)) {
+    for &e in exps.iter().flatten() {
         lo = lo.min(e);
         hi = hi.max(e);
     }
@@ -249,7 +265,7 @@ pub(super) fn split_point(coeffs: &[f64]) -> Option<usize> {
     let mut hull: [(usize, f64); 5] = [(0, 0.0); 5];
     let mut len = 0;
     for k in 0..=n {
-        let Some(e) = exponent(coeffs[n - k]) else {
+        let Some(e) = exps[n - k] else {
             continue;
         };
         let pt = (k, e as f64);
@@ -307,16 +323,19 @@ mod tests {
     #[test]
     fn split_point_finds_separated_groups() {
         // 1e-300·x⁴ + x³ + x² + x + 1: one root near −1e300, three of order one.
-        assert_eq!(split_point(&[1e-300, 1.0, 1.0, 1.0, 1.0]), Some(1));
-        assert_eq!(split_point(&[1.0, -6.0, 11.0, -6.0]), None);
+        assert_eq!(
+            split_point(&exponents(&[1e-300, 1.0, 1.0, 1.0, 1.0])),
+            Some(1)
+        );
+        assert_eq!(split_point(&exponents(&[1.0, -6.0, 11.0, -6.0])), None);
         // Roots 1e-200 and 1e200.
-        assert_eq!(split_point(&[1.0, -1e200, 1.0]), Some(1));
+        assert_eq!(split_point(&exponents(&[1.0, -1e200, 1.0])), Some(1));
     }
 
     #[test]
     fn root_exponent_bounds_the_roots() {
         // Roots 1e3, 2e3, 3e3: 2^s ≥ 3e3 and not hugely more.
-        let s = root_exponent(&[1.0, -6e3, 11e6, -6e9]).unwrap_or(0);
+        let s = root_exponent(&exponents(&[1.0, -6e3, 11e6, -6e9])).unwrap_or(0);
         assert!((12..=14).contains(&s), "{s}");
     }
 

@@ -83,6 +83,7 @@ pub(crate) fn pair_within_rounding(coeffs: &[f64], u: f64, v: f64, factor: f64) 
     if top > allowance(abs_sum(coeffs, u.abs() + v)) {
         return false;
     }
+
     // Taylor coefficients at z by repeated complex synthetic division (degree ≤ 4).
     let mut work = [(0.0_f64, 0.0_f64); 5];
     for (w, &c) in work.iter_mut().zip(coeffs) {

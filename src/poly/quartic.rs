@@ -47,7 +47,7 @@
 //! - Every real root is finally refined by guarded Newton steps on the (exactly scaled)
 //!   original quartic with a compensated residual.
 
-use super::cubic::{merge, push_quadratic_roots, root_exponent, scaled, split_point};
+use super::cubic::{exponents, merge, push_quadratic_roots, root_exponent, scaled, split_point};
 use super::horner::{RootBuf, polish_roots};
 use super::{RealRoots, solve_cubic, solve_linear, solve_quadratic};
 
@@ -102,16 +102,17 @@ pub fn solve_quartic(a: f64, b: f64, c: f64, d: f64, e: f64) -> RealRoots {
         return biquadratic(a, c, e);
     }
     let coeffs = [a, b, c, d, e];
-    if let Some(i) = split_point(&coeffs) {
+    let exps = exponents(&coeffs);
+    if let Some(i) = split_point(&exps) {
         return merge(
             solve_low_degree(&coeffs[..=i]),
             solve_low_degree(&coeffs[i..]),
         );
     }
-    let Some(s) = root_exponent(&coeffs) else {
+    let (Some(en), Some(s)) = (exps[0], root_exponent(&exps)) else {
         return RealRoots::empty(); // unreachable: a and e are finite and non-zero
     };
-    quartic_scaled(scaled(&coeffs, s)).unscaled(s)
+    quartic_scaled(scaled(&coeffs, en, s)).unscaled(s)
 }
 
 /// Roots of a polynomial of degree ≤ 3 given highest degree first (a split-off part).
