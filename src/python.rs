@@ -1,8 +1,8 @@
 //! The Python extension module `ballcollide._core` (feature `python`).
 //!
 //! A thin layer: it checks that arrays have the layout the Rust core reads without copying
-//! (C-contiguous float64, the right shapes), releases the GIL, and calls [`crate::batch`] and
-//! [`crate::poly`]. Everything else — validation of values, the search itself — is the core's,
+//! (C-contiguous float64, the right shapes), releases the GIL, and calls [`crate::batch`],
+//! [`crate::scene`] and [`crate::poly`]. Everything else — validation of values, the search itself — is the core's,
 //! so Python and Rust give identical answers and identical error messages.
 //!
 //! The friendly entry points, which accept lists, any real dtype, Fortran order and strided
@@ -25,6 +25,7 @@ use rayon::prelude::*;
 use crate::batch::{self, Pairs, PerPair, Threads};
 use crate::error::{InputError, InputErrorKind};
 use crate::poly::{self, RealRoots};
+use crate::scene::{self, SceneOptions};
 
 /// A scalar parameter from Python: one float for all pairs, or a float64 array of one per pair.
 enum Param<'py> {
@@ -276,6 +277,120 @@ fn solve(c: &[f64]) -> RealRoots {
     }
 }
 
+/// The balls, per-ball radii and options of a scene query, validated by the core.
+struct Scene {
+    balls: Vec<crate::motion::Ball>,
+    radii: Vec<f64>,
+    options: SceneOptions,
+}
+
+/// Reads a scene's arrays (C-contiguous float64) and builds its balls; `radius` may be one
+/// float for all balls.
+fn scene_input(
+    pos: &Bound<'_, PyAny>,
+    vel: &Bound<'_, PyAny>,
+    friction: &Bound<'_, PyAny>,
+    radius: &Bound<'_, PyAny>,
+    t_max: f64,
+    num_threads: Option<i64>,
+) -> PyResult<Scene> {
+    let pos = array::<Ix2>("pos", pos, ROWS)?;
+    let vel = array::<Ix2>("vel", vel, ROWS)?;
+    let friction = Param::extract("friction", friction)?;
+    let radius = Param::extract("radius", radius)?;
+    let pos = rows("pos", &pos)?;
+    let vel = rows("vel", &vel)?;
+    let balls = scene::balls(pos, vel, friction.per_pair("friction")?).map_err(value_error)?;
+    let radii = match radius.per_pair("radius")? {
+        PerPair::All(r) => vec![r; balls.len()],
+        PerPair::Each(r) => r.to_vec(),
+    };
+    Ok(Scene {
+        balls,
+        radii,
+        options: SceneOptions {
+            t_max,
+            threads: threads(num_threads)?,
+            ..SceneOptions::default()
+        },
+    })
+}
+
+/// The `(N, N)` matrix of collision times of N balls (see
+/// `ballcollide.pairwise_collision_times`).
+#[pyfunction]
+#[pyo3(signature = (pos, vel, friction, radius, t_max=f64::INFINITY, num_threads=None))]
+fn pairwise_collision_times<'py>(
+    py: Python<'py>,
+    pos: &Bound<'py, PyAny>,
+    vel: &Bound<'py, PyAny>,
+    friction: &Bound<'py, PyAny>,
+    radius: &Bound<'py, PyAny>,
+    t_max: f64,
+    num_threads: Option<i64>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let s = scene_input(pos, vel, friction, radius, t_max, num_threads)?;
+    let n = s.balls.len();
+    let times = py
+        .detach(|| scene::pairwise_collision_times(&s.balls, &s.radii, &s.options))
+        .map_err(value_error)?;
+    PyArray1::from_vec(py, times).reshape(Dim([n, n]))
+}
+
+/// The first collision of N balls, `(t, i, j)` or `(inf, -1, -1)` (see
+/// `ballcollide.earliest_collision`).
+#[pyfunction]
+#[pyo3(signature = (pos, vel, friction, radius, t_max=f64::INFINITY, num_threads=None))]
+fn earliest_collision(
+    py: Python<'_>,
+    pos: &Bound<'_, PyAny>,
+    vel: &Bound<'_, PyAny>,
+    friction: &Bound<'_, PyAny>,
+    radius: &Bound<'_, PyAny>,
+    t_max: f64,
+    num_threads: Option<i64>,
+) -> PyResult<(f64, i64, i64)> {
+    let s = scene_input(pos, vel, friction, radius, t_max, num_threads)?;
+    let found = py
+        .detach(|| scene::earliest_collision(&s.balls, &s.radii, &s.options))
+        .map_err(value_error)?;
+    Ok(found.map_or((f64::INFINITY, -1, -1), |(t, i, j)| {
+        (t, index_i64(i), index_i64(j))
+    }))
+}
+
+/// Each ball's first collision and partner (see `ballcollide.first_contacts`).
+#[pyfunction]
+#[pyo3(signature = (pos, vel, friction, radius, t_max=f64::INFINITY, num_threads=None))]
+#[allow(clippy::type_complexity)]
+fn first_contacts<'py>(
+    py: Python<'py>,
+    pos: &Bound<'py, PyAny>,
+    vel: &Bound<'py, PyAny>,
+    friction: &Bound<'py, PyAny>,
+    radius: &Bound<'py, PyAny>,
+    t_max: f64,
+    num_threads: Option<i64>,
+) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<i64>>)> {
+    let s = scene_input(pos, vel, friction, radius, t_max, num_threads)?;
+    let (times, partners) = py
+        .detach(|| scene::first_contacts(&s.balls, &s.radii, &s.options))
+        .map_err(value_error)?;
+    let partners: Vec<i64> = partners
+        .into_iter()
+        .map(|p| p.map_or(-1, index_i64))
+        .collect();
+    Ok((
+        PyArray1::from_vec(py, times),
+        PyArray1::from_vec(py, partners),
+    ))
+}
+
+/// An array index as Python's int64 (indices of in-memory arrays always fit).
+fn index_i64(i: usize) -> i64 {
+    i64::try_from(i).unwrap_or(i64::MAX)
+}
+
 /// ballcollide's compiled core: collision times of balls slowing under friction, and real
 /// roots of polynomials of degree ≤ 4. Use the `ballcollide` package, which converts its
 /// inputs and calls these functions.
@@ -286,5 +401,8 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(collision_time, m)?)?;
     m.add_function(wrap_pyfunction!(positions_at, m)?)?;
     m.add_function(wrap_pyfunction!(real_roots, m)?)?;
+    m.add_function(wrap_pyfunction!(pairwise_collision_times, m)?)?;
+    m.add_function(wrap_pyfunction!(earliest_collision, m)?)?;
+    m.add_function(wrap_pyfunction!(first_contacts, m)?)?;
     Ok(())
 }

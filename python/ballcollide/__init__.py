@@ -12,7 +12,10 @@ Functions (all take array-likes: lists, any real dtype, C or Fortran order, stri
 - :func:`collision_time`: one pair;
 - :func:`collision_times`: N pairs at once, on all cores, with the GIL released;
 - :func:`positions_at`: where N balls are at a time ``t`` (a stopped ball stays put);
-- :func:`real_roots`: real roots of N polynomials of degree 1 to 4, like ``numpy.roots``.
+- :func:`real_roots`: real roots of N polynomials of degree 1 to 4, like ``numpy.roots``;
+- :func:`pairwise_collision_times`, :func:`earliest_collision`, :func:`first_contacts`: a
+  scene of N balls (which pairs touch, which touch first), with a broad phase that prunes
+  the pairs that cannot meet.
 
 Bad input (NaN or infinity, negative friction, ``radius ≤ 0``, wrong shapes or lengths)
 raises ``ValueError`` naming the argument and, for batches, the first bad index; an argument
@@ -40,6 +43,9 @@ __all__ = [
     "__version__",
     "collision_time",
     "collision_times",
+    "earliest_collision",
+    "first_contacts",
+    "pairwise_collision_times",
     "positions_at",
     "real_roots",
 ]
@@ -335,3 +341,183 @@ def real_roots(coeffs: npt.ArrayLike) -> npt.NDArray[np.float64]:
     if a.ndim != 2:
         raise ValueError(f"coeffs: expected shape (N, k+1) with k = 1..4, got {a.shape}")
     return _core.real_roots(np.ascontiguousarray(a, dtype=np.float64))
+
+
+def _scene(
+    pos: npt.ArrayLike, vel: npt.ArrayLike, friction: PerPair, radius: PerPair
+) -> tuple[np.ndarray, np.ndarray, float | np.ndarray, float | np.ndarray]:
+    """A scene's arrays, normalised; lengths are checked by the core (naming the argument)."""
+    return (
+        _rows("pos", pos),
+        _rows("vel", vel),
+        _per_pair("friction", friction),
+        _per_pair("radius", radius),
+    )
+
+
+def pairwise_collision_times(
+    pos: npt.ArrayLike,
+    vel: npt.ArrayLike,
+    friction: PerPair,
+    radius: PerPair,
+    *,
+    t_max: float = np.inf,
+    num_threads: int | None = None,
+) -> npt.NDArray[np.float64]:
+    """The collision time of every pair of N balls, as an ``(N, N)`` matrix.
+
+    Entry ``[i, j]`` is the time at which balls ``i`` and ``j`` first touch (what
+    :func:`collision_time` gives for ball ``i`` as A, ball ``j`` as B and the sum of their
+    radii, for ``i < j``; the matrix is symmetric), ``inf`` if they never do (or not before
+    ``t_max``), and ``inf`` on the diagonal. Only pairs whose swept bounding boxes overlap
+    are computed (the others cannot touch); the answer is the all-pairs answer, bit for bit.
+
+    Parameters
+    ----------
+    pos, vel
+        Shape ``(N, 2)``: each ball's centre and velocity at time 0 (any array-like, as in
+        :func:`collision_times`).
+    friction
+        A scalar or shape ``(N,)``: each ball's friction deceleration ``μ ≥ 0``.
+    radius
+        A scalar or shape ``(N,)``: each ball's radius (``> 0``). A pair touches when its
+        centres are the *sum* of its two radii apart.
+    t_max
+        Horizon: a collision at ``t ≥ t_max`` is reported as ``inf``.
+    num_threads
+        ``None``: all cores; an int ``≥ 1``: at most that many. The result does not depend
+        on it.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape ``(N, N)``, float64 (``N²`` numbers: for large N prefer
+        :func:`earliest_collision` or :func:`first_contacts`).
+
+    Raises
+    ------
+    ValueError
+        A NaN or infinite number, a negative friction, a radius ``≤ 0``, a negative ``t_max``,
+        a wrong shape or length; the message names the argument and the first bad index,
+        e.g. ``radius[3]: ...``.
+    TypeError
+        An argument that is not made of real numbers.
+
+    Examples
+    --------
+    >>> import ballcollide as bc
+    >>> # A ball at 1 m/s (no friction) towards a resting ball 1 m away; radii 0.2 and 0.3.
+    >>> bc.pairwise_collision_times([[0, 0], [1, 0]], [[1, 0], [0, 0]], 0.0, [0.2, 0.3])
+    array([[inf, 0.5],
+           [0.5, inf]])
+    """
+    return _core.pairwise_collision_times(
+        *_scene(pos, vel, friction, radius), _scalar("t_max", t_max), _threads(num_threads)
+    )
+
+
+def earliest_collision(
+    pos: npt.ArrayLike,
+    vel: npt.ArrayLike,
+    friction: PerPair,
+    radius: PerPair,
+    *,
+    t_max: float = np.inf,
+    num_threads: int | None = None,
+) -> tuple[float, int, int]:
+    """The first collision among N balls: ``(t, i, j)`` with ``i < j``.
+
+    ``(inf, -1, -1)`` if no two balls touch before ``t_max``. Of pairs colliding at the same
+    time, the lowest ``i`` wins, then the lowest ``j``. This is the question an event-driven
+    simulator asks after every event; only the pairs whose swept bounding boxes overlap are
+    computed, and the answer equals the all-pairs answer exactly.
+
+    Parameters
+    ----------
+    pos, vel
+        Shape ``(N, 2)``: each ball's centre and velocity at time 0 (any array-like, as in
+        :func:`collision_times`).
+    friction
+        A scalar or shape ``(N,)``: each ball's friction deceleration ``μ ≥ 0``.
+    radius
+        A scalar or shape ``(N,)``: each ball's radius (``> 0``). A pair touches when its
+        centres are the *sum* of its two radii apart.
+    t_max
+        Horizon: a collision at ``t ≥ t_max`` is reported as none.
+    num_threads
+        As in :func:`pairwise_collision_times`.
+
+    Raises
+    ------
+    ValueError, TypeError
+        As :func:`pairwise_collision_times`.
+
+    Examples
+    --------
+    >>> import ballcollide as bc
+    >>> pos = [[0, 0], [5, 5], [1, 0]]
+    >>> vel = [[1, 0], [0, 0], [-1, 0]]
+    >>> t, i, j = bc.earliest_collision(pos, vel, 0.5, 0.05)
+    >>> (round(t, 6), i, j)
+    (0.51676, 0, 2)
+    >>> bc.earliest_collision(pos, vel, 0.5, 0.05, t_max=0.1)
+    (inf, -1, -1)
+    """
+    t, i, j = _core.earliest_collision(
+        *_scene(pos, vel, friction, radius), _scalar("t_max", t_max), _threads(num_threads)
+    )
+    return (t, i, j)
+
+
+def first_contacts(
+    pos: npt.ArrayLike,
+    vel: npt.ArrayLike,
+    friction: PerPair,
+    radius: PerPair,
+    *,
+    t_max: float = np.inf,
+    num_threads: int | None = None,
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+    """Each ball's first collision: ``(times, partner)``, both of shape ``(N,)``.
+
+    Ball ``i`` first touches ball ``partner[i]`` at ``times[i]``, ignoring every other
+    collision (each is the earliest entry of row ``i`` of :func:`pairwise_collision_times`);
+    ``inf`` and ``-1`` if it touches none before ``t_max``. Of partners at the same time, the
+    lowest index wins.
+
+    Parameters
+    ----------
+    pos, vel
+        Shape ``(N, 2)``: each ball's centre and velocity at time 0 (any array-like, as in
+        :func:`collision_times`).
+    friction
+        A scalar or shape ``(N,)``: each ball's friction deceleration ``μ ≥ 0``.
+    radius
+        A scalar or shape ``(N,)``: each ball's radius (``> 0``). A pair touches when its
+        centres are the *sum* of its two radii apart.
+    t_max
+        Horizon: a collision at ``t ≥ t_max`` is reported as none.
+    num_threads
+        As in :func:`pairwise_collision_times`.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        ``times`` (float64) and ``partner`` (int64, ``-1`` for none).
+
+    Raises
+    ------
+    ValueError, TypeError
+        As :func:`pairwise_collision_times`.
+
+    Examples
+    --------
+    >>> import ballcollide as bc
+    >>> times, partner = bc.first_contacts([[0, 0], [0, 2], [9, 9]], [[0, 1], [0, 0], [0, 0]],
+    ...                                    0.0, 0.5)
+    >>> times, partner
+    (array([ 1.,  1., inf]), array([ 1,  0, -1]))
+    """
+    return _core.first_contacts(
+        *_scene(pos, vel, friction, radius), _scalar("t_max", t_max), _threads(num_threads)
+    )

@@ -11,8 +11,18 @@ import numpy.typing as npt
 _F64Array1 = npt.NDArray[np.float64]
 _F64Array2 = npt.NDArray[np.float64]
 _PerPair = float | npt.NDArray[np.float64]
+_I64Array1 = npt.NDArray[np.int64]
 
-__all__ = ["__version__", "collision_time", "collision_times", "positions_at", "real_roots"]
+__all__ = [
+    "__version__",
+    "collision_time",
+    "collision_times",
+    "earliest_collision",
+    "first_contacts",
+    "pairwise_collision_times",
+    "positions_at",
+    "real_roots",
+]
 
 __version__: str
 
@@ -71,4 +81,48 @@ def real_roots(coeffs: _F64Array2) -> _F64Array2:
     ``coeffs``: C-contiguous float64, shape ``(N, k+1)`` with ``k = 1..4``, highest degree
     first. Returns shape ``(N, k)``: real roots ascending with multiplicity, NaN-padded.
     A non-finite coefficient raises ``ValueError`` naming ``coeffs[i]``. Releases the GIL.
+    """
+
+def pairwise_collision_times(
+    pos: _F64Array2,
+    vel: _F64Array2,
+    friction: _PerPair,
+    radius: _PerPair,
+    t_max: float = ...,
+    num_threads: int | None = None,
+) -> _F64Array2:
+    """Collision times of every pair of N balls, shape ``(N, N)``, ``inf`` on the diagonal and
+    for no contact (see ``ballcollide.pairwise_collision_times``).
+
+    ``pos``, ``vel``: C-contiguous float64 ``(N, 2)``; ``friction``, ``radius`` (per ball): a
+    float or a contiguous float64 ``(N,)``. Broad phase, then the exact pair kernel; releases
+    the GIL. Errors name the argument and first bad index (``ValueError``).
+    """
+
+def earliest_collision(
+    pos: _F64Array2,
+    vel: _F64Array2,
+    friction: _PerPair,
+    radius: _PerPair,
+    t_max: float = ...,
+    num_threads: int | None = None,
+) -> tuple[float, int, int]:
+    """The first collision ``(t, i, j)``, ``i < j``, ties to the lowest ``i`` then ``j``;
+    ``(inf, -1, -1)`` if none before ``t_max`` (see ``ballcollide.earliest_collision``).
+
+    Arguments as in :func:`pairwise_collision_times`. Releases the GIL.
+    """
+
+def first_contacts(
+    pos: _F64Array2,
+    vel: _F64Array2,
+    friction: _PerPair,
+    radius: _PerPair,
+    t_max: float = ...,
+    num_threads: int | None = None,
+) -> tuple[_F64Array1, _I64Array1]:
+    """Each ball's first collision time (``inf`` if none) and partner (int64, ``-1`` if none),
+    ties to the lowest partner (see ``ballcollide.first_contacts``).
+
+    Arguments as in :func:`pairwise_collision_times`. Releases the GIL.
     """
