@@ -139,9 +139,7 @@ def test_scalar_friction_and_radius_and_array_likes() -> None:
     p = np.array(pos, dtype=np.float64)
     wide = np.zeros((3, 4))
     wide[:, ::2] = p
-    np.testing.assert_array_equal(
-        bc.pairwise_collision_times(wide[:, ::2], vel, 0.0, 0.25), m
-    )
+    np.testing.assert_array_equal(bc.pairwise_collision_times(wide[:, ::2], vel, 0.0, 0.25), m)
 
 
 def test_empty_and_single_ball() -> None:
@@ -163,6 +161,7 @@ def test_ties_go_to_the_lowest_indices() -> None:
     vel = [[0, 0], [1, 0], [0, 0], [-1, 0]]
     assert bc.earliest_collision(pos, vel, 0.0, 0.5) == (1.0, 1, 2)
     times, partner = bc.first_contacts(pos, vel, 0.0, 0.5)
+    assert times.tolist() == [np.inf, 1.0, 1.0, 1.0]
     assert partner.tolist() == [-1, 2, 1, 2]
 
 
@@ -199,7 +198,7 @@ def test_bad_input_names_the_argument_and_index(f, change: dict, message: str) -
 
 @pytest.mark.parametrize("f", FUNCTIONS)
 def test_wrong_types(f) -> None:
-    with pytest.raises(TypeError, match="^radius: expected real numbers"):
+    with pytest.raises(TypeError, match=r"^radius: expected real numbers"):
         f([[0, 0]], [[0, 0]], 0.1, ["a"])
-    with pytest.raises(ValueError, match="^radius: expected a scalar or shape"):
+    with pytest.raises(ValueError, match=r"^radius: expected a scalar or shape"):
         f([[0, 0]], [[0, 0]], 0.1, [[0.1]])
