@@ -1,34 +1,85 @@
 //! A cheap, rigorous proof that two balls cannot touch on a window.
 //!
-//! On `u ∈ [0, 1]` the gap quartic `g(u) = Σ aᵢ uⁱ` equals `Σ bⱼ Bⱼ(u)` in the Bernstein basis
-//! `Bⱼ(u) = C(4, j) uʲ (1 − u)⁴⁻ʲ`, whose functions are non-negative and sum to one: `g` lies
+//! On `w ∈ [0, 1]` a quartic `q(w) = Σ aᵢ wⁱ` equals `Σ bⱼ Bⱼ(w)` in the Bernstein basis
+//! `Bⱼ(w) = C(4, j) wʲ (1 − w)⁴⁻ʲ`, whose functions are non-negative and sum to one: `q` lies
 //! between the smallest and the largest `bⱼ`. So if every `bⱼ` exceeds the rounding error made
-//! in computing it, `g > 0` on the whole interval and there is no contact. On random pairs on
-//! a table this settles most pairs with a dozen multiply-adds and no division or root.
+//! in computing it, `q > 0` on the whole interval and there is no contact. On random pairs on
+//! a table this settles most pairs with a few dozen multiply-adds and no division or root.
+//!
+//! The test runs on the window itself, `u ∈ [0, end]` (substituting `u = end·w`), not on the
+//! power-of-two interval `[0, 1]` that contains it: past a stop the gap's formula turns the
+//! ball round, and that fictitious return would often spoil the proof. Where the first test
+//! fails, the window is halved (de Casteljau, exact halvings and one rounding per average) up
+//! to [`SPLITS`] times, which tightens the bounds quadratically around a near miss.
 
 use crate::coefficients::Gap;
 
-/// Whether `g(u) > 0` is proven for every `u ∈ [0, 1]` (time already scaled to the window).
+/// How many times a window is halved, at most, before giving up (the deepest pieces are
+/// 1/2^SPLITS of the window).
+const SPLITS: u32 = 3;
+
+/// Whether `g(u) > 0` is proven for every `u ∈ [0, end]` (time already scaled so that
+/// `0 ≤ end ≤ 1`).
 ///
 /// `false` means "not proven", not "there is a root".
 ///
-/// The margin bounds the rounding error of the dot products and of the basis change: each
-/// `bⱼ` is a combination with weights ≤ 1 of terms each bounded by products of the
-/// components' magnitudes, so `8·ε·M²`, with `M` the sum of all components' magnitudes and
-/// the radius, exceeds it.
-pub(crate) fn proves_positive(gap: &Gap) -> bool {
+/// The margin bounds every rounding error on the way. With `M` the sum of all components'
+/// magnitudes and the radius, `Σ|aᵢ| ≤ M²`, and every Bernstein coefficient of every piece is
+/// a combination with weights ≤ 1 of the `aᵢ`, so each stays below `M²` in magnitude. The
+/// coefficients' dot products err by `≤ 3ε·M²`, the powers `endⁱ` by `≤ 4ε·M²`, the basis
+/// change by `≤ 5ε·M²` (four additions and the rounded `1/6`), and each level of halving by
+/// `≤ 4ε·M²` (four rounds of averages): `(12 + 4·SPLITS)·ε·M² + …` is below the margin used.
+pub(crate) fn proves_positive(gap: &Gap, end: f64) -> bool {
     let [a4, a3, a2, a1, a0] = gap.quartic();
-    let b0 = a0;
-    let b1 = a0 + 0.25 * a1;
-    let b2 = a0 + 0.5 * a1 + a2 / 6.0;
-    let b3 = a0 + 0.75 * a1 + 0.5 * a2 + 0.25 * a3;
-    let b4 = a0 + a1 + a2 + a3 + a4;
+    let end2 = end * end;
+    let (a1, a2, a3, a4) = (a1 * end, a2 * end2, a3 * (end2 * end), a4 * (end2 * end2));
+    let b = [
+        a0,
+        a0 + 0.25 * a1,
+        a0 + 0.5 * a1 + a2 * (1.0 / 6.0),
+        a0 + 0.75 * a1 + 0.5 * a2 + 0.25 * a3,
+        a0 + a1 + a2 + a3 + a4,
+    ];
+    // g(0) and g(end) themselves are not above the margin: no proof can follow (most
+    // contacts end here, before any halving).
+    if b[0].min(b[4]) <= 0.0 {
+        return false;
+    }
     let m = gap.offset.abs().sum()
         + gap.velocity.abs().sum()
         + gap.acceleration.abs().sum()
         + gap.radius;
-    let margin = 8.0 * f64::EPSILON * m * m;
-    b0.min(b1).min(b2).min(b3).min(b4) > margin
+    let margin = (16.0 + 4.0 * SPLITS as f64) * f64::EPSILON * (m * m);
+    bernstein_positive(b, margin, SPLITS)
+}
+
+/// Whether the quartic with Bernstein coefficients `b` on an interval is above `margin` on
+/// it, halving the interval up to `splits` times where the coefficients alone do not show it.
+fn bernstein_positive(b: [f64; 5], margin: f64, splits: u32) -> bool {
+    if b.iter().all(|&x| x > margin) {
+        return true;
+    }
+    // A piece's end values are values of g: one below the margin settles nothing further.
+    if splits == 0 || b[0] <= margin || b[4] <= margin {
+        return false;
+    }
+    let (left, right) = halves(b);
+    bernstein_positive(left, margin, splits - 1) && bernstein_positive(right, margin, splits - 1)
+}
+
+/// De Casteljau's subdivision at the midpoint: the Bernstein coefficients on each half.
+fn halves(b: [f64; 5]) -> ([f64; 5], [f64; 5]) {
+    let mid = |x: f64, y: f64| 0.5 * (x + y);
+    let c = [
+        mid(b[0], b[1]),
+        mid(b[1], b[2]),
+        mid(b[2], b[3]),
+        mid(b[3], b[4]),
+    ];
+    let d = [mid(c[0], c[1]), mid(c[1], c[2]), mid(c[2], c[3])];
+    let e = [mid(d[0], d[1]), mid(d[1], d[2])];
+    let f = mid(e[0], e[1]);
+    ([b[0], c[0], d[0], e[0], f], [f, e[1], d[2], c[3], b[4]])
 }
 
 #[cfg(test)]
@@ -47,18 +98,52 @@ mod tests {
 
     #[test]
     fn far_apart_and_receding_is_excluded() {
-        assert!(proves_positive(&gap([5.0, 0.0], [1.0, 0.0], [-0.5, 0.0])));
+        assert!(proves_positive(
+            &gap([5.0, 0.0], [1.0, 0.0], [-0.5, 0.0]),
+            1.0
+        ));
     }
 
     #[test]
     fn contact_inside_the_window_is_never_excluded() {
         // Head-on: |d| = 3 − 4u reaches 1 at u = 0.5.
-        assert!(!proves_positive(&gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0])));
-        // Grazing from above by 1e-12: not provable, so not excluded either.
-        assert!(!proves_positive(&gap(
-            [-1.0, 1.0 + 1e-12],
-            [2.0, 0.0],
-            [0.0, 0.0]
-        )));
+        assert!(!proves_positive(
+            &gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]),
+            1.0
+        ));
+        // Grazing from above by 1e-15: within rounding, so not excluded either.
+        assert!(!proves_positive(
+            &gap([-1.0, 1.0 + 1e-15], [2.0, 0.0], [0.0, 0.0]),
+            1.0
+        ));
+        // Grazing from above by 1e-12: above rounding, and halving proves the miss.
+        assert!(proves_positive(
+            &gap([-1.0, 1.0 + 1e-12], [2.0, 0.0], [0.0, 0.0]),
+            1.0
+        ));
+        // Contact just inside the window's end (|d| = 3 − 4u = 1 at u = 0.5).
+        assert!(!proves_positive(
+            &gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]),
+            0.5 + 1e-9
+        ));
+    }
+
+    #[test]
+    fn the_exact_window_excludes_what_lies_past_its_end() {
+        // |d| = 3 − 4u reaches 1 at u = 0.5, after a window that ends at u = 0.4 (a ball
+        // stops there: past it the formula is fictitious). [0, 1] could not be proven.
+        let g = gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]);
+        assert!(proves_positive(&g, 0.4));
+        assert!(!proves_positive(&g, 1.0));
+    }
+
+    #[test]
+    fn halving_proves_a_near_miss_the_coefficients_alone_do_not() {
+        // Passing 1e-3 above the other ball: the one-piece bounds are too loose.
+        let g = gap([-1.0, 1.001], [2.0, 0.0], [0.0, 0.0]);
+        let [a4, a3, a2, a1, a0] = g.quartic();
+        let b2 = a0 + 0.5 * a1 + a2 / 6.0;
+        assert!(b2 < 0.0 && a4 == 0.0 && a3 == 0.0); // not provable without halving
+        assert!(proves_positive(&g, 1.0));
     }
 }

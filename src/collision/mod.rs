@@ -188,12 +188,13 @@ fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearc
         }
     };
     let scaled = gap.time_scaled(h);
-    if exclusion::proves_positive(&scaled) {
+    let end = length / h;
+    if exclusion::proves_positive(&scaled, end) {
         return WindowSearch::NoEntry {
             ends_positive: true,
         };
     }
-    match first_entry(&scaled, length / h, previous_positive) {
+    match first_entry(&scaled, end, previous_positive) {
         WindowSearch::Entry(u) => WindowSearch::Entry(u * h),
         no_entry => no_entry,
     }
