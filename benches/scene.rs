@@ -1,0 +1,115 @@
+//! Scene benchmarks (issue 6): the earliest collision among N balls with the broad phase
+//! (swept boxes + sort-and-sweep, then the exact kernel) against all N(N−1)/2 pairs.
+//!
+//! Scenes: N = 16 is a pool break (a rack of 15 at rest, the cue ball shot at it); N = 1,000,
+//! 10,000 and 100,000 are balls on a table scaled to keep the density of 16 balls per
+//! 2.54 × 1.27 m table, half of them rolling at up to 1 m/s, friction 0.1–0.3 m/s².
+//!
+//! `cargo bench --bench scene`; all-pairs runs up to N = 10,000 (at 100,000 it would take
+//! minutes per iteration). The number of pairs the broad phase keeps is printed first.
+
+use std::hint::black_box;
+
+use ballcollide::Ball;
+use ballcollide::scene::{PairSearch, SceneOptions, candidate_pairs, earliest_collision};
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use nalgebra::Vector2;
+
+const R: f64 = 0.028575;
+
+/// xorshift64*: deterministic scenes without extra dependencies.
+struct Rng(u64);
+impl Rng {
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let bits = self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11;
+        lo + (hi - lo) * (bits as f64 / (1u64 << 53) as f64)
+    }
+}
+
+/// A rack of 15 balls at rest (apex at (1.9, 0.635)) and the cue ball at 3 m/s towards it.
+fn rack() -> Vec<Ball> {
+    let mut balls = Vec::new();
+    let d = 2.0 * R;
+    for row in 0..5 {
+        for k in 0..=row {
+            let x = 1.9 + row as f64 * d * 3f64.sqrt() / 2.0;
+            let y = 0.635 + (k as f64 - row as f64 / 2.0) * d;
+            balls.push(Ball::at_rest(Vector2::new(x, y)).expect("valid"));
+        }
+    }
+    balls.push(Ball::new(Vector2::new(0.635, 0.64), Vector2::new(3.0, 0.0), 0.2).expect("valid"));
+    balls
+}
+
+/// N balls on a table scaled to keep the density of 16 balls per 2.54 × 1.27 m.
+fn table(n: usize, seed: u64) -> Vec<Ball> {
+    let mut rng = Rng(seed);
+    let scale = (n as f64 / 16.0).sqrt();
+    (0..n)
+        .map(|k| {
+            let p = Vector2::new(
+                rng.uniform(0.0, 2.54 * scale),
+                rng.uniform(0.0, 1.27 * scale),
+            );
+            let angle = rng.uniform(0.0, std::f64::consts::TAU);
+            let speed = if k % 2 == 0 {
+                rng.uniform(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let v = Vector2::new(speed * angle.cos(), speed * angle.sin());
+            Ball::new(p, v, rng.uniform(0.1, 0.3)).expect("valid")
+        })
+        .collect()
+}
+
+fn scenes() -> Vec<(usize, Vec<Ball>)> {
+    let mut s = vec![(16, rack())];
+    for n in [1_000, 10_000, 100_000] {
+        s.push((n, table(n, n as u64)));
+    }
+    s
+}
+
+fn bench(c: &mut Criterion) {
+    let scenes = scenes();
+    for (n, balls) in &scenes {
+        let radii = vec![R; *n];
+        let kept = candidate_pairs(balls, &radii, f64::INFINITY).expect("valid");
+        let all = n * (n - 1) / 2;
+        eprintln!(
+            "N = {n}: the broad phase keeps {kept} of {all} pairs ({:.3} %)",
+            100.0 * kept as f64 / all as f64
+        );
+    }
+    let mut group = c.benchmark_group("earliest_collision");
+    for (n, balls) in &scenes {
+        let radii = vec![R; *n];
+        if *n >= 10_000 {
+            group.sample_size(10);
+        }
+        for search in [PairSearch::BroadPhase, PairSearch::AllPairs] {
+            if search == PairSearch::AllPairs && *n > 10_000 {
+                continue;
+            }
+            let options = SceneOptions {
+                search,
+                ..SceneOptions::default()
+            };
+            let name = match search {
+                PairSearch::BroadPhase => "broad_phase",
+                PairSearch::AllPairs => "all_pairs",
+            };
+            group.bench_with_input(BenchmarkId::new(name, n), balls, |b, balls| {
+                b.iter(|| earliest_collision(black_box(balls), &radii, &options).expect("valid"))
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
