@@ -24,6 +24,7 @@
 
 mod entry;
 mod exclusion;
+pub(crate) mod prefilter;
 
 use crate::coefficients::Gap;
 use crate::error::{InputError, check_horizon, check_radius};
