@@ -29,9 +29,9 @@ pub mod collision;
 pub mod error;
 pub mod motion;
 pub mod poly;
-pub mod scene;
 #[cfg(feature = "python")]
 mod python;
+pub mod scene;
 
 pub use coefficients::Gap;
 pub use collision::{CollisionOptions, collision_time, collision_time_with};

@@ -341,8 +341,14 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
             j,
         })
     };
+    // The broad phase numbers balls in 32 bits; beyond that (never in memory today), all pairs.
+    let search = if u32::try_from(n).is_ok() {
+        options.search
+    } else {
+        PairSearch::AllPairs
+    };
     let run = || -> Vec<Hit> {
-        match options.search {
+        match search {
             PairSearch::AllPairs => {
                 let row =
                     |i: usize| -> Vec<Hit> { (i + 1..n).filter_map(|j| kernel(i, j)).collect() };
@@ -359,10 +365,12 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
                     sweep.for_each_after(rank, |i, j| out.extend(kernel(i, j)));
                     out
                 };
+                // A box crossing several strips has several ranks.
+                let ranks = sweep.len();
                 if n < PARALLEL_FROM {
-                    (0..n).flat_map(row).collect()
+                    (0..ranks).flat_map(row).collect()
                 } else {
-                    (0..n).into_par_iter().flat_map_iter(row).collect()
+                    (0..ranks).into_par_iter().flat_map_iter(row).collect()
                 }
             }
         }
