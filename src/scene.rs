@@ -14,9 +14,11 @@
 //! Comparing all `N(N−1)/2` pairs is what a simple simulator does. Here each ball's centre
 //! is known to stay on a straight segment (to its rest point under friction, to the horizon
 //! `t_max` or for ever when frictionless, a point at rest), so its swept bounding box, grown by
-//! its radius and a rigorous rounding margin, contains everything the ball can touch. A
-//! sort-and-sweep along the wider axis of the scene finds the pairs whose boxes overlap, and
-//! only those go to the exact pair kernel, in parallel (rayon).
+//! its radius and a rigorous rounding margin, contains everything the ball can touch. The
+//! narrow axis of the scene is cut into strips about as high as a typical box, and a
+//! sort-and-sweep along the wide axis within each strip finds the pairs whose boxes overlap
+//! (about `N log N` work on a table of constant density); only those go to the exact pair
+//! kernel, in parallel (rayon).
 //!
 //! ## Guarantees
 //!

@@ -1,4 +1,4 @@
-//! The broad phase: swept bounding boxes and a sort-and-sweep over them.
+//! The broad phase: swept bounding boxes, and a sort-and-sweep over them in strips.
 //!
 //! Until the horizon, a ball's centre stays on a straight segment: from `p` to its rest point
 //! `p + ½·v·τ` under friction, to `p + v·t_max` for a frictionless ball with a finite horizon,
