@@ -361,6 +361,42 @@ fn bad_input_names_the_argument_and_index() {
     assert_eq!(err.argument(), "friction");
 }
 
+#[test]
+fn grazing_pairs_at_the_edge_of_their_boxes() {
+    // A ball sliding along an axis past another whose centre is the contact distance away
+    // (give or take a few ulps to 1e-9): the boxes' edges sit exactly on the tangent line,
+    // where only the rounding margin separates pruned from kept.
+    let mut balls = Vec::new();
+    let mut radii = Vec::new();
+    let mut k = 0.0;
+    for offset in [
+        -1e-9, -1e-12, -1e-15, -4e-16, 0.0, 4e-16, 1e-15, 1e-12, 1e-9,
+    ] {
+        for (r1, r2) in [(0.028575, 0.028575), (0.01, 0.07), (1e-3, 1e-3)] {
+            for (v, mu) in [(1.0, 0.0), (1.0, 0.3), (-2.0, 0.5)] {
+                let gap = (r1 + r2) * (1.0 + offset);
+                let y = 10.0 * k;
+                k += 1.0;
+                for axis in [0, 1] {
+                    let at = |x: f64, y: f64| {
+                        if axis == 0 {
+                            Vector2::new(x, y)
+                        } else {
+                            Vector2::new(y, x)
+                        }
+                    };
+                    let vel = if axis == 0 { [v, 0.0] } else { [0.0, v] };
+                    balls.push(Ball::new(at(0.0, y), vel.into(), mu).unwrap());
+                    balls.push(Ball::at_rest(at(v.signum() * 0.5, y + gap)).unwrap());
+                    radii.extend([r1, r2]);
+                }
+            }
+        }
+    }
+    assert_matches_brute_force(&balls, &radii, f64::INFINITY);
+    assert_matches_brute_force(&balls, &radii, 1.0);
+}
+
 fn arb_ball() -> impl Strategy<Value = Ball> {
     (
         0u8..4,
