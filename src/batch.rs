@@ -7,9 +7,11 @@
 //! answers are identical, and so are the answers for any number of threads.
 
 use std::num::NonZeroUsize;
+use std::sync::{Arc, Mutex};
 
 use nalgebra::Vector2;
 use rayon::prelude::*;
+use rayon::{ThreadPool, ThreadPoolBuilder};
 
 use crate::collision::first_contact;
 use crate::collision::prefilter::{PairInput, never_touch};
@@ -187,32 +189,68 @@ fn solve_chunk_portable(
 
 /// [`never_touch`] on pairs `start..start + len` (`len ≤ LANES`); lanes past `len` are `false`.
 ///
-/// The inputs are first gathered into one array per quantity, so that the test's arithmetic
-/// runs on whole vectors.
+/// Each input is first copied as a whole block (a few vector moves, and no narrow stores
+/// that wide loads would then stall on), so that the test's arithmetic runs on whole vectors.
 #[inline(always)]
 fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> [bool; LANES] {
-    let mut lanes = [PairInput::default(); LANES];
-    for (k, lane) in lanes.iter_mut().enumerate().take(len) {
-        let i = start + k;
-        *lane = PairInput {
-            pos_a: pairs.pos_a[i],
-            vel_a: pairs.vel_a[i],
-            friction_a: pairs.friction_a.get(i),
-            pos_b: pairs.pos_b[i],
-            vel_b: pairs.vel_b[i],
-            friction_b: pairs.friction_b.get(i),
-            radius: pairs.radius.get(i),
-            t_max: pairs.t_max.get(i),
-        };
-    }
+    let (pos_a, vel_a) = (rows(pairs.pos_a, start, len), rows(pairs.vel_a, start, len));
+    let (pos_b, vel_b) = (rows(pairs.pos_b, start, len), rows(pairs.vel_b, start, len));
+    let (friction_a, friction_b) = (
+        scalars(pairs.friction_a, start, len),
+        scalars(pairs.friction_b, start, len),
+    );
+    let (radius, t_max) = (
+        scalars(pairs.radius, start, len),
+        scalars(pairs.t_max, start, len),
+    );
     let mut apart = [false; LANES];
-    for (flag, lane) in apart.iter_mut().zip(&lanes) {
-        *flag = never_touch(lane);
-    }
-    for flag in apart.iter_mut().skip(len) {
-        *flag = false;
+    for (k, flag) in apart.iter_mut().enumerate() {
+        *flag = never_touch(&PairInput {
+            pos_a: pos_a[k],
+            vel_a: vel_a[k],
+            friction_a: friction_a[k],
+            pos_b: pos_b[k],
+            vel_b: vel_b[k],
+            friction_b: friction_b[k],
+            radius: radius[k],
+            t_max: t_max[k],
+        }) & (k < len);
     }
     apart
+}
+
+/// Rows `start..start + len` of `src` as a block of [`LANES`] (zeros past `len`).
+#[inline(always)]
+fn rows(src: &[[f64; 2]], start: usize, len: usize) -> [[f64; 2]; LANES] {
+    match src.get(start..start + LANES) {
+        Some(&[a, b, c, d, e, f, g, h]) if len == LANES => [a, b, c, d, e, f, g, h],
+        _ => {
+            let mut block = [[0.0; 2]; LANES];
+            for (slot, row) in block.iter_mut().zip(src.iter().skip(start).take(len)) {
+                *slot = *row;
+            }
+            block
+        }
+    }
+}
+
+/// A per-pair scalar's values for pairs `start..start + len`, as a block of [`LANES`]
+/// (zeros past `len`, which fail the test: a radius must be positive).
+#[inline(always)]
+fn scalars(src: PerPair<'_>, start: usize, len: usize) -> [f64; LANES] {
+    match src {
+        PerPair::All(x) => [x; LANES],
+        PerPair::Each(xs) => match xs.get(start..start + LANES) {
+            Some(&[a, b, c, d, e, f, g, h]) if len == LANES => [a, b, c, d, e, f, g, h],
+            _ => {
+                let mut block = [0.0; LANES];
+                for (slot, x) in block.iter_mut().zip(xs.iter().skip(start).take(len)) {
+                    *slot = *x;
+                }
+                block
+            }
+        },
+    }
 }
 
 /// The centre of every ball at its time `t` (`pos`, `vel`, `friction` as in [`Pairs`]),
@@ -328,12 +366,39 @@ fn run_chunks<T: Send>(
     match threads {
         Threads::AtMost(n) if n.get() == 1 => work(0, out),
         Threads::All => parallel(out),
-        Threads::AtMost(n) => match rayon::ThreadPoolBuilder::new().num_threads(n.get()).build() {
-            Ok(pool) => pool.install(|| parallel(out)),
+        Threads::AtMost(n) => match pool(n.get()) {
+            Some(pool) => pool.install(|| parallel(out)),
             // No thread could be started: the calling thread does the work.
-            Err(_) => work(0, out),
+            None => work(0, out),
         },
     }
+}
+
+/// A rayon pool of `n` threads, built on first use and kept: building one costs tens of
+/// microseconds and `n` threads, which a call on a thousand pairs should not pay each time.
+/// Only a few sizes are kept (callers use one or two); others get a pool of their own.
+fn pool(n: usize) -> Option<Arc<ThreadPool>> {
+    const KEPT: usize = 8;
+    static POOLS: Mutex<Vec<(usize, Arc<ThreadPool>)>> = Mutex::new(Vec::new());
+    let build = || {
+        ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .ok()
+            .map(Arc::new)
+    };
+    // A poisoned lock (a panic elsewhere while holding it) only loses the cache.
+    let Ok(mut pools) = POOLS.lock() else {
+        return build();
+    };
+    if let Some((_, pool)) = pools.iter().find(|(size, _)| *size == n) {
+        return Some(Arc::clone(pool));
+    }
+    let pool = build()?;
+    if pools.len() < KEPT {
+        pools.push((n, Arc::clone(&pool)));
+    }
+    Some(pool)
 }
 
 /// Of two chunk results, the error with the lower index (chunks may finish in any order).
@@ -510,5 +575,24 @@ mod tests {
             err.map(|e| (e.argument(), e.index())),
             Some(("friction_b", Some(37)))
         );
+    }
+
+    #[test]
+    fn pools_are_kept_per_thread_count() {
+        let (Some(a), Some(b)) = (pool(2), pool(2)) else {
+            panic!("a two-thread pool")
+        };
+        assert!(Arc::ptr_eq(&a, &b));
+        assert_eq!(a.current_num_threads(), 2);
+        let r = rows(3_000, 1);
+        let p = pairs(&r);
+        let (mut x, mut y) = (vec![0.0; 3_000], vec![0.0; 3_000]);
+        let two = Threads::AtMost(NonZeroUsize::MIN.saturating_add(1));
+        assert_eq!(collision_times(&p, &mut x, two), Ok(()));
+        assert_eq!(
+            collision_times(&p, &mut y, Threads::AtMost(NonZeroUsize::MIN)),
+            Ok(())
+        );
+        assert_eq!(x, y);
     }
 }
