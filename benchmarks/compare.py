@@ -401,15 +401,24 @@ def compile_seconds(fn: Callable[[], object]) -> float:
 # Timing and comparison
 
 
+def median_times(fn: Callable[[], np.ndarray], repeats: int) -> tuple[float, float, np.ndarray]:
+    """Median wall and process-CPU times over ``repeats`` calls (after one warm-up call), and
+    the last result. On shared cores, CPU time shows the work when wall time shows queueing:
+    CPU ≈ wall on 1 thread means the process had a core to itself."""
+    result = fn()
+    wall, cpu = [], []
+    for _ in range(max(1, repeats)):
+        w, c = time.perf_counter(), time.process_time()
+        result = fn()
+        wall.append(time.perf_counter() - w)
+        cpu.append(time.process_time() - c)
+    return float(np.median(wall)), float(np.median(cpu)), result
+
+
 def median_time(fn: Callable[[], np.ndarray], repeats: int) -> tuple[float, np.ndarray]:
     """Median wall time over ``repeats`` calls (after one warm-up call) and the last result."""
-    result = fn()
-    samples = []
-    for _ in range(max(1, repeats)):
-        start = time.perf_counter()
-        result = fn()
-        samples.append(time.perf_counter() - start)
-    return float(np.median(samples)), result
+    wall, _, result = median_times(fn, repeats)
+    return wall, result
 
 
 @dataclasses.dataclass
@@ -419,6 +428,7 @@ class Row:
     method: str
     pairs: int
     seconds: float
+    cpu_seconds: float
     hits: int
     disagree: int = 0
     clear: int = 0
@@ -428,6 +438,10 @@ class Row:
     @property
     def ns(self) -> float:
         return self.seconds / self.pairs * 1e9
+
+    @property
+    def cpu_ns(self) -> float:
+        return self.cpu_seconds / self.pairs * 1e9
 
 
 def disagreements(
@@ -518,19 +532,21 @@ def verdict(p: Pairs, i: int, t_bc: float, t_peer: float) -> str:
 
 
 def fmt_row(r: Row, base: float, compared: bool) -> str:
-    """One table line: ns/pair, ballcollide's speed-up over this method, agreement."""
-    ratio = r.ns / base
-    agree = f"{r.disagree:>7d} {r.clear:>6d} {r.worst_dt:>10.2e} {r.worst_rel:>9.2e}"
-    return f"| {r.method:<44s} | {r.pairs:>9d} | {r.ns:>10.1f} | {ratio:>8.2f} | {r.hits:>7d} |" + (
-        f" {agree} |" if compared else f" {'—':>7s} {'—':>6s} {'—':>10s} {'—':>9s} |"
+    """One markdown table line: times, ratio to ballcollide on 1 thread, agreement."""
+    head = f"| {r.method:<40s} | {r.pairs:>9d} | {r.ns:>10.1f} | {r.cpu_ns:>10.1f} | "
+    head += f"{r.ns / base:>8.2f} | {r.hits:>7d} |"
+    if not compared:
+        return head + f" {'—':>8s} | {'—':>5s} | {'—':>9s} | {'—':>9s} |"
+    return head + (
+        f" {r.disagree:>8d} | {r.clear:>5d} | {r.worst_dt:>9.2e} | {r.worst_rel:>9.2e} |"
     )
 
 
 HEADER = (
-    "| method                                       |     pairs |    ns/pair | ÷ bc-1t  |"
-    "    hits | disagree  clear   worst|Δt| worst rel |\n"
-    "|----------------------------------------------|-----------|------------|----------|"
-    "---------|---------------------------------------|"
+    "| method                                   |     pairs |    ns/pair | cpu ns/pair |"
+    " ÷ bc-1t  |    hits | disagree | clear | worst Δt  | worst rel |\n"
+    "|------------------------------------------|----------:|-----------:|-----------:|"
+    "---------:|--------:|---------:|------:|----------:|----------:|"
 )
 
 
@@ -550,7 +566,7 @@ def measure_peer(
 ) -> tuple[Row, list[str]]:
     """Time a peer on its subsample and compare its answers with ballcollide's."""
     sub = data.head(peer.pairs)
-    seconds, out = median_time(peer.run(sub), peer.repeats)
+    seconds, cpu, out = median_times(peer.run(sub), peer.repeats)
     want = ref[: peer.pairs]
     if peer.first_window:
         want, out = first_window_only(want, sub), first_window_only(out, sub)
@@ -560,6 +576,7 @@ def measure_peer(
         peer.name,
         len(sub),
         seconds,
+        cpu,
         int(np.isfinite(out).sum()),
         len(idx),
         len(clear),
@@ -579,15 +596,16 @@ def measure_peer(
 def run_set(name: str, args: argparse.Namespace, pt: dict[str, Any] | None) -> None:
     """Measure every method on one data set and print the table."""
     data = make_set(name, args.pairs, args.seed)
-    one, t1 = median_time(lambda: bc_times(data, 1), args.repeats)
-    allt, _ = median_time(lambda: bc_times(data, None), args.repeats)
+    one, one_cpu, t1 = median_times(lambda: bc_times(data, 1), args.repeats)
+    allt, all_cpu, _ = median_times(lambda: bc_times(data, None), args.repeats)
     stable = stable_pairs(data, None)
     rows = [
-        Row("ballcollide collision_times, 1 thread", len(data), one, int(np.isfinite(t1).sum())),
+        Row("ballcollide, 1 thread", len(data), one, one_cpu, int(np.isfinite(t1).sum())),
         Row(
-            f"ballcollide collision_times, {os.cpu_count()} threads",
+            f"ballcollide, {os.cpu_count()} threads",
             len(data),
             allt,
+            all_cpu,
             int(np.isfinite(t1).sum()),
         ),
     ]
@@ -603,7 +621,7 @@ def run_set(name: str, args: argparse.Namespace, pt: dict[str, Any] | None) -> N
             loop_reps,
         ),
         Peer(
-            "numpy eigvals batched (first window)",
+            "numpy eigvals batched",
             batch,
             lambda s: lambda: eigvals_batched(s),
             True,
@@ -613,14 +631,14 @@ def run_set(name: str, args: argparse.Namespace, pt: dict[str, Any] | None) -> N
     if pt is not None:
         peers += [
             Peer(
-                f"pooltool {pt['version']} solve_many (first window)",
+                f"pooltool {pt['version']} solve_many",
                 batch,
                 lambda s: lambda: pooltool_batch(pt, s),
                 True,
                 args.repeats,
             ),
             Peer(
-                "pooltool ball_ball_collision_time loop (1st w.)",
+                "pooltool ball_ball_collision_time loop",
                 loops,
                 lambda s: pooltool_pairs(pt, s),
                 True,
@@ -834,14 +852,17 @@ def main(argv: Sequence[str] | None = None) -> int:
         f"{sys.version.split()[0]}, {os.cpu_count()} CPUs; ns/pair = median of "
         f"{args.repeats} repeats / pairs; '÷ bc-1t' = ns/pair ÷ ballcollide's 1-thread ns/pair"
     )
-    print(f"# load average {os.getloadavg()[0]:.1f} at start")
+    print(
+        f"# load average {os.getloadavg()[0]:.1f} at start; cpu ns/pair = process CPU time"
+        " (all threads) / pairs: far below ns/pair on 1 thread = the cores were shared"
+    )
     print(
         f"# loop peers on the first {args.loop_pairs} pairs, batched peers on the first "
         f"{args.batch_pairs}; numpy eigvals and pooltool are compared on the first window"
     )
     print(
-        "# disagree: hit/miss differences with ballcollide (on the first window for the peers"
-        " that stop there); clear: of those, pairs whose ballcollide hit/miss is the same with"
+        "# disagree: hit/miss differences with ballcollide (on the first window for numpy"
+        " eigvals and pooltool); clear: of those, pairs whose ballcollide hit/miss is the same with"
         " the radius × (1 ± 1e-6); worst |Δt| (s) and worst relative Δt: pairs both call hits,"
         " balls apart at t = 0"
     )
