@@ -5,12 +5,15 @@
 //! 10,000 and 100,000 are balls on a table scaled to keep the density of 16 balls per
 //! 2.54 × 1.27 m table, half of them rolling at up to 1 m/s, friction 0.1–0.3 m/s².
 //!
-//! `cargo bench --bench scene`; all-pairs runs up to N = 10,000 (at 100,000 it would take
-//! minutes per iteration). The number of pairs the broad phase keeps is printed first.
+//! `cargo bench --bench scene`; the broad phase on all cores and on one thread, all pairs
+//! (all cores) up to N = 10,000 (at 100,000 it would take minutes per iteration). The number of
+//! pairs the broad phase keeps is printed first.
 
 use std::hint::black_box;
+use std::num::NonZeroUsize;
 
 use ballcollide::Ball;
+use ballcollide::batch::Threads;
 use ballcollide::scene::{PairSearch, SceneOptions, candidate_pairs, earliest_collision};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use nalgebra::Vector2;
@@ -91,17 +94,19 @@ fn bench(c: &mut Criterion) {
         if *n >= 10_000 {
             group.sample_size(10);
         }
-        for search in [PairSearch::BroadPhase, PairSearch::AllPairs] {
+        let one = Threads::AtMost(NonZeroUsize::MIN);
+        for (name, search, threads) in [
+            ("broad_phase", PairSearch::BroadPhase, Threads::All),
+            ("broad_phase_1thread", PairSearch::BroadPhase, one),
+            ("all_pairs", PairSearch::AllPairs, Threads::All),
+        ] {
             if search == PairSearch::AllPairs && *n > 10_000 {
                 continue;
             }
             let options = SceneOptions {
                 search,
+                threads,
                 ..SceneOptions::default()
-            };
-            let name = match search {
-                PairSearch::BroadPhase => "broad_phase",
-                PairSearch::AllPairs => "all_pairs",
             };
             group.bench_with_input(BenchmarkId::new(name, n), balls, |b, balls| {
                 b.iter(|| earliest_collision(black_box(balls), &radii, &options).expect("valid"))

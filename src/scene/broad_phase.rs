@@ -125,6 +125,9 @@ fn sweep_axis(balls: &[Ball]) -> usize {
     if hi[1] - lo[1] > hi[0] - lo[0] { 1 } else { 0 }
 }
 
+/// From this many strip entries on, the strips are sorted in parallel.
+const PARALLEL_SORT_FROM: usize = 1 << 14;
+
 /// At most this many strip entries per ball on average: a scene whose boxes are so tall that
 /// they would cross more strips gets fewer, taller strips (down to one, a plain sweep).
 const ENTRIES_PER_BALL: usize = 16;
@@ -179,6 +182,7 @@ impl Sweep {
                 fill[s] += 1;
             }
         }
+        let entries_len = entries.len();
         let mut rest = entries.as_mut_slice();
         let mut buckets = Vec::with_capacity(strips.count);
         for s in 0..strips.count {
@@ -187,9 +191,15 @@ impl Sweep {
             rest = tail;
         }
         // Bounds are never NaN; the ball index makes the order total.
-        buckets.par_iter_mut().with_min_len(16).for_each(|bucket| {
+        let sort = |bucket: &mut &mut [Entry]| {
             bucket.sort_unstable_by(|x, y| x.lo.total_cmp(&y.lo).then(x.ball.cmp(&y.ball)));
-        });
+        };
+        // Small scenes stay on the calling thread: waking the pool costs more than the sort.
+        if entries_len < PARALLEL_SORT_FROM {
+            buckets.iter_mut().for_each(sort);
+        } else {
+            buckets.par_iter_mut().with_min_len(16).for_each(sort);
+        }
         let first_strip = spans.iter().map(|&(lo, _)| lo).collect();
         Self {
             boxes,
