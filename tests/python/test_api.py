@@ -560,6 +560,9 @@ def test_version_and_public_api() -> None:
         "__version__",
         "collision_time",
         "collision_times",
+        "earliest_collision",
+        "first_contacts",
+        "pairwise_collision_times",
         "positions_at",
         "real_roots",
     }
