@@ -18,7 +18,7 @@ use std::num::NonZeroUsize;
 use numpy::ndarray::{Dim, Dimension, Ix2};
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray, PyReadonlyArray1};
 use numpy::{PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods};
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::{PyMemoryError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use rayon::prelude::*;
 
@@ -331,6 +331,16 @@ fn pairwise_collision_times<'py>(
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let s = scene_input(pos, vel, friction, radius, t_max, num_threads)?;
     let n = s.balls.len();
+    // N² numbers: a matrix that cannot be allocated is a MemoryError, not an abort.
+    let fits = n
+        .checked_mul(n)
+        .is_some_and(|cells| Vec::<f64>::new().try_reserve_exact(cells).is_ok());
+    if !fits {
+        return Err(PyMemoryError::new_err(format!(
+            "pairwise_collision_times: an ({n}, {n}) matrix does not fit in memory; \
+             earliest_collision and first_contacts need only O(N)"
+        )));
+    }
     let times = py
         .detach(|| scene::pairwise_collision_times(&s.balls, &s.radii, &s.options))
         .map_err(value_error)?;

@@ -154,7 +154,9 @@ pub fn balls(
 /// the diagonal. The matrix is symmetric (each pair is evaluated once, as `i < j`).
 ///
 /// It holds `N²` numbers: for large scenes, prefer [`earliest_collision`] or
-/// [`first_contacts`], which only keep what they return.
+/// [`first_contacts`], which only keep what they return. (Like any `Vec`, a matrix that does
+/// not fit in memory aborts the allocation; the Python binding checks first and raises
+/// `MemoryError`.)
 ///
 /// # Errors
 /// `radii` must have one radius per ball, each finite, `> 0` and at most `f64::MAX / 2` (so
@@ -184,7 +186,8 @@ pub fn pairwise_collision_times(
 ) -> Result<Vec<f64>, InputError> {
     let n = balls.len();
     let hits = hits(balls, radii, options)?;
-    let mut times = vec![f64::INFINITY; n * n];
+    // N² saturates where it would overflow (more than 2³² balls): the allocation then fails.
+    let mut times = vec![f64::INFINITY; n.saturating_mul(n)];
     for Hit { time, i, j } in hits {
         times[i * n + j] = time;
         times[j * n + i] = time;

@@ -202,3 +202,9 @@ def test_wrong_types(f) -> None:
         f([[0, 0]], [[0, 0]], 0.1, ["a"])
     with pytest.raises(ValueError, match=r"^radius: expected a scalar or shape"):
         f([[0, 0]], [[0, 0]], 0.1, [[0.1]])
+
+
+def test_a_matrix_too_large_for_memory_is_a_memory_error() -> None:
+    n = 1_000_000  # an 8 TB matrix
+    with pytest.raises(MemoryError, match="first_contacts need only O"):
+        bc.pairwise_collision_times(np.zeros((n, 2)), np.zeros((n, 2)), 0.1, 0.1)
