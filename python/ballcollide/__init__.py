@@ -402,6 +402,8 @@ def pairwise_collision_times(
         e.g. ``radius[3]: ...``.
     TypeError
         An argument that is not made of real numbers.
+    MemoryError
+        An ``(N, N)`` matrix too large to allocate (checked before any work is done).
 
     Examples
     --------
