@@ -53,6 +53,8 @@
 
 mod broad_phase;
 
+use std::num::NonZeroUsize;
+
 use nalgebra::Vector2;
 use rayon::prelude::*;
 
@@ -305,7 +307,7 @@ pub fn first_contacts(
 /// ```
 pub fn candidate_pairs(balls: &[Ball], radii: &[f64], t_max: f64) -> Result<usize, InputError> {
     check(balls, radii, t_max)?;
-    let sweep = Sweep::new(balls, radii, t_max);
+    let sweep = Sweep::new(balls, radii, t_max, true);
     let mut count = 0;
     for rank in 0..sweep.len() {
         sweep.for_each_after(rank, |_, _| count += 1);
@@ -331,7 +333,7 @@ impl Hit {
     }
 }
 
-/// Below this many balls, the work stays on the calling thread.
+/// Below this many balls (or with one thread), the work stays on the calling thread.
 const PARALLEL_FROM: usize = 64;
 
 /// Every colliding pair (in no particular order).
@@ -352,19 +354,20 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
     } else {
         PairSearch::AllPairs
     };
+    let serial = n < PARALLEL_FROM || options.threads == Threads::AtMost(NonZeroUsize::MIN);
     let run = || -> Vec<Hit> {
         match search {
             PairSearch::AllPairs => {
                 let row =
                     |i: usize| -> Vec<Hit> { (i + 1..n).filter_map(|j| kernel(i, j)).collect() };
-                if n < PARALLEL_FROM {
+                if serial {
                     (0..n).flat_map(row).collect()
                 } else {
                     (0..n).into_par_iter().flat_map_iter(row).collect()
                 }
             }
             PairSearch::BroadPhase => {
-                let sweep = Sweep::new(balls, radii, t_max);
+                let sweep = Sweep::new(balls, radii, t_max, !serial);
                 let row = |rank: usize| -> Vec<Hit> {
                     let mut out = Vec::new();
                     sweep.for_each_after(rank, |i, j| out.extend(kernel(i, j)));
@@ -372,7 +375,7 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
                 };
                 // A box crossing several strips has several ranks.
                 let ranks = sweep.len();
-                if n < PARALLEL_FROM {
+                if serial {
                     (0..ranks).flat_map(row).collect()
                 } else {
                     (0..ranks).into_par_iter().flat_map_iter(row).collect()
@@ -381,7 +384,7 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
         }
     };
     Ok(match options.threads {
-        Threads::AtMost(k) if n >= PARALLEL_FROM => {
+        Threads::AtMost(k) if !serial => {
             match rayon::ThreadPoolBuilder::new().num_threads(k.get()).build() {
                 Ok(pool) => pool.install(run),
                 // No thread could be started: the global pool gives the same answers.

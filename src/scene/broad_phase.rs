@@ -148,8 +148,9 @@ pub(crate) struct Sweep {
 }
 
 impl Sweep {
-    /// Boxes of `balls` (validated `radii`, same length) and their order along the sweep axis.
-    pub(crate) fn new(balls: &[Ball], radii: &[f64], t_max: f64) -> Self {
+    /// Boxes of `balls` (validated `radii`, same length) and their order along the sweep axis;
+    /// `parallel`: whether large sorts may use rayon's current pool.
+    pub(crate) fn new(balls: &[Ball], radii: &[f64], t_max: f64, parallel: bool) -> Self {
         let boxes = swept_boxes(balls, radii, t_max);
         let axis = sweep_axis(balls);
         let strips = Strips::fit(balls, &boxes, 1 - axis);
@@ -195,7 +196,7 @@ impl Sweep {
             bucket.sort_unstable_by(|x, y| x.lo.total_cmp(&y.lo).then(x.ball.cmp(&y.ball)));
         };
         // Small scenes stay on the calling thread: waking the pool costs more than the sort.
-        if entries_len < PARALLEL_SORT_FROM {
+        if !parallel || entries_len < PARALLEL_SORT_FROM {
             buckets.iter_mut().for_each(sort);
         } else {
             buckets.par_iter_mut().with_min_len(16).for_each(sort);
@@ -362,7 +363,7 @@ mod tests {
             ball([100.0, 0.5], [0.0, 0.0], 0.0),
             ball([-100.0, 0.0], [0.0, 0.0], 0.0),
         ];
-        let sweep = Sweep::new(&balls, &[0.3; 3], f64::INFINITY);
+        let sweep = Sweep::new(&balls, &[0.3; 3], f64::INFINITY, false);
         let mut pairs = Vec::new();
         for rank in 0..sweep.len() {
             sweep.for_each_after(rank, |i, j| pairs.push((i, j)));
@@ -392,7 +393,7 @@ mod tests {
             })
             .collect();
         let radii = vec![0.03; balls.len()];
-        let sweep = Sweep::new(&balls, &radii, f64::INFINITY);
+        let sweep = Sweep::new(&balls, &radii, f64::INFINITY, true);
         assert!(sweep.len() > balls.len()); // boxes cross strips
         let mut found = Vec::new();
         for rank in 0..sweep.len() {
