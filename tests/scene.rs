@@ -362,6 +362,31 @@ fn bad_input_names_the_argument_and_index() {
 }
 
 #[test]
+fn translated_and_scaled_scenes() {
+    // Far from the origin and at other scales, the rounding margin still keeps every pair the
+    // kernel reports.
+    let (balls, radii) = random_scene(400, Mix::Everything, 41);
+    for (shift, scale) in [
+        (1e6, 1.0),
+        (-3e3, 1e-3),
+        (0.0, 1e5),
+        (1e8, 1e-2),
+        (7.5, 1e-200),
+    ] {
+        let moved: Vec<Ball> = balls
+            .iter()
+            .map(|b| {
+                let p = b.position() * scale + Vector2::new(shift, 0.5 * shift);
+                Ball::new(p, b.velocity() * scale, b.friction() * scale).unwrap()
+            })
+            .collect();
+        let r: Vec<f64> = radii.iter().map(|r| r * scale).collect();
+        assert_matches_brute_force(&moved, &r, f64::INFINITY);
+        assert_matches_brute_force(&moved, &r, 0.5);
+    }
+}
+
+#[test]
 fn grazing_pairs_at_the_edge_of_their_boxes() {
     // A ball sliding along an axis past another whose centre is the contact distance away
     // (give or take a few ulps to 1e-9): the boxes' edges sit exactly on the tangent line,
