@@ -1,13 +1,20 @@
 //! Collision-time kernel benchmarks on the sets of issue 5: random table pairs, all-grazing
-//! pairs, a ball at rest, and batch throughput with one thread and all threads.
+//! pairs, a ball at rest, and batch throughput (10³ … 10⁷ pairs) with one and two threads.
 //!
 //! `cargo bench --bench collision`; criterion prints the median time per iteration, and the
-//! throughput in pairs per second (elements/s).
+//! throughput in pairs per second (elements/s). `-- kernel` or `-- batch` selects a group.
+//! The one-thread kernel groups time the thread's CPU time (see [`ThreadCpuTime`]), the batch
+//! groups wall time (several threads).
 
 use std::hint::black_box;
 use std::num::NonZeroUsize;
+use std::time::Duration;
 
 use ballcollide::batch::{Pairs, PerPair, Threads, collision_times};
+use std::sync::OnceLock;
+use std::time::Instant;
+
+use criterion::measurement::{Measurement, ValueFormatter};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 const RADIUS: f64 = 2.0 * 0.028575;
@@ -116,7 +123,99 @@ fn set(kind: Kind, n: usize, seed: u64) -> Set {
     s
 }
 
-fn kernel(c: &mut Criterion) {
+/// CPU time of the calling thread (`CLOCK_THREAD_CPUTIME_ID`, nanoseconds): unlike wall time
+/// it does not count the time other processes take on a shared machine, so that single-thread
+/// kernel timings are comparable between runs. Off Linux it falls back to wall time.
+struct ThreadCpuTime;
+
+#[cfg(target_os = "linux")]
+fn thread_cpu_ns() -> u64 {
+    #[repr(C)]
+    struct Timespec {
+        sec: i64,
+        nsec: i64,
+    }
+    unsafe extern "C" {
+        fn clock_gettime(clock: i32, time: *mut Timespec) -> i32;
+    }
+    const CLOCK_THREAD_CPUTIME_ID: i32 = 3;
+    let mut t = Timespec { sec: 0, nsec: 0 };
+    // SAFETY: `t` is a valid, writable timespec; the clock id is Linux's thread CPU clock.
+    let ok = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut t) } == 0;
+    if ok {
+        t.sec as u64 * 1_000_000_000 + t.nsec as u64
+    } else {
+        wall_ns()
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+fn thread_cpu_ns() -> u64 {
+    wall_ns()
+}
+
+/// Wall nanoseconds since the first call.
+fn wall_ns() -> u64 {
+    static START: OnceLock<Instant> = OnceLock::new();
+    START.get_or_init(Instant::now).elapsed().as_nanos() as u64
+}
+
+impl Measurement for ThreadCpuTime {
+    type Intermediate = u64;
+    type Value = u64;
+    fn start(&self) -> u64 {
+        thread_cpu_ns()
+    }
+    fn end(&self, start: u64) -> u64 {
+        thread_cpu_ns().saturating_sub(start)
+    }
+    fn add(&self, a: &u64, b: &u64) -> u64 {
+        a + b
+    }
+    fn zero(&self) -> u64 {
+        0
+    }
+    fn to_f64(&self, value: &u64) -> f64 {
+        *value as f64
+    }
+    fn formatter(&self) -> &dyn ValueFormatter {
+        &CpuFormatter
+    }
+}
+
+/// Prints CPU nanoseconds as times (ns … s) and element throughputs in Melem/s.
+struct CpuFormatter;
+
+impl ValueFormatter for CpuFormatter {
+    fn scale_values(&self, typical: f64, values: &mut [f64]) -> &'static str {
+        let (factor, unit) = match typical {
+            t if t < 1e3 => (1.0, "ns"),
+            t if t < 1e6 => (1e-3, "µs (cpu)"),
+            t if t < 1e9 => (1e-6, "ms (cpu)"),
+            _ => (1e-9, "s (cpu)"),
+        };
+        values.iter_mut().for_each(|v| *v *= factor);
+        unit
+    }
+    fn scale_throughputs(
+        &self,
+        _typical: f64,
+        throughput: &Throughput,
+        values: &mut [f64],
+    ) -> &'static str {
+        let per = match *throughput {
+            Throughput::Elements(n) | Throughput::ElementsAndBytes { elements: n, .. } => n,
+            Throughput::Bytes(n) | Throughput::BytesDecimal(n) | Throughput::Bits(n) => n,
+        } as f64;
+        values.iter_mut().for_each(|v| *v = per * 1e3 / *v);
+        "Melem/s (cpu)"
+    }
+    fn scale_for_machines(&self, _values: &mut [f64]) -> &'static str {
+        "ns"
+    }
+}
+
+fn kernel(c: &mut Criterion<ThreadCpuTime>) {
     let one = Threads::AtMost(NonZeroUsize::MIN);
     let mut group = c.benchmark_group("kernel_1_thread");
     let n = 4096;
@@ -138,13 +237,19 @@ fn kernel(c: &mut Criterion) {
 fn throughput(c: &mut Criterion) {
     let mut group = c.benchmark_group("batch_random_table");
     group.sample_size(10);
-    for n in [1_000, 100_000, 1_000_000] {
+    let two = NonZeroUsize::MIN.saturating_add(1);
+    for n in [1_000, 100_000, 1_000_000, 10_000_000] {
         let s = set(Kind::RandomTable, n, 11);
         let mut out = vec![0.0; n];
         group.throughput(Throughput::Elements(n as u64));
+        if n >= 10_000_000 {
+            // About a second per iteration: ten samples, no more.
+            group.warm_up_time(Duration::from_secs(1));
+            group.measurement_time(Duration::from_secs(10));
+        }
         for (label, threads) in [
             ("1_thread", Threads::AtMost(NonZeroUsize::MIN)),
-            ("all_threads", Threads::All),
+            ("2_threads", Threads::AtMost(two)),
         ] {
             group.bench_with_input(BenchmarkId::new(label, n), &n, |bench, _| {
                 bench.iter(|| collision_times(black_box(&s.pairs()), &mut out, threads))
@@ -154,5 +259,10 @@ fn throughput(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, kernel, throughput);
-criterion_main!(benches);
+criterion_group! {
+    name = kernels;
+    config = Criterion::default().with_measurement(ThreadCpuTime);
+    targets = kernel
+}
+criterion_group!(batches, throughput);
+criterion_main!(kernels, batches);

@@ -364,6 +364,8 @@ fn run_chunks<T: Send>(
             .reduce(|| Ok(()), first_error)
     };
     match threads {
+        // One chunk's worth (or one thread): handing it to a pool would only add a wake-up.
+        _ if out.len() <= CHUNK => work(0, out),
         Threads::AtMost(n) if n.get() == 1 => work(0, out),
         Threads::All => parallel(out),
         Threads::AtMost(n) => match pool(n.get()) {

@@ -25,6 +25,7 @@
 mod entry;
 mod exclusion;
 pub(crate) mod prefilter;
+mod straight;
 
 use crate::coefficients::Gap;
 use crate::error::{InputError, check_horizon, check_radius};
@@ -114,6 +115,9 @@ pub(crate) fn first_contact(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> Opti
     let g0 = initial.value(0.0);
     if g0 <= 0.0 && approaching(&initial) {
         return (t_max > 0.0).then_some(0.0);
+    }
+    if let Some(answer) = straight::first_contact(a, b, radius, t_max, g0) {
+        return answer;
     }
     let (t1, t2) = {
         let (ta, tb) = (a.stop_time(), b.stop_time());

@@ -1,0 +1,134 @@
+//! One ball at rest, the other moving: a closed form.
+//!
+//! The mover runs along a straight line, so the separation is `d = Δ + v·σ`, with
+//! `σ(t) = t − t²/(2τ)` the time it would take at its initial speed to cover what it has
+//! covered (increasing until it stops at `τ`, where `σ = τ/2`). The gap is then a quadratic in
+//! `σ`, `G(σ) = |v|²σ² + 2(Δ·v)σ + |Δ|² − r²`, whose smaller root is the contact if it comes
+//! before the stop; `t` follows from `σ` in a form without cancellation. This replaces two
+//! root searches (critical point and entry) by three square roots and a few divisions.
+
+use crate::motion::Ball;
+
+/// The first contact when exactly one ball is at rest and the balls are apart at the start
+/// (`g0 = |Δ|² − r² > 0`, as computed by the general search); `None` when the closed form
+/// does not apply (no ball or both at rest, magnitudes where squares could overflow or
+/// underflow), leaving the general search to answer.
+///
+/// Depends on the A/B order only through which ball moves, and on the axes only through
+/// sums of products in which swapping or negating axes changes nothing, bit for bit.
+pub(crate) fn first_contact(
+    a: &Ball,
+    b: &Ball,
+    radius: f64,
+    t_max: f64,
+    g0: f64,
+) -> Option<Option<f64>> {
+    let (mover, rest) = match (a.is_at_rest(), b.is_at_rest()) {
+        (false, true) => (a, b),
+        (true, false) => (b, a),
+        _ => return None,
+    };
+    let v = mover.velocity();
+    let speed2 = v.x * v.x + v.y * v.y;
+    let delta = mover.position() - rest.position();
+    // Products of up to four lengths or speeds (the discriminant) stay in the normal range
+    // for these magnitudes; elsewhere the general search, which scales, answers.
+    let plain = (1e-150..=1e150).contains(&speed2)
+        && (1e-75..=1e75).contains(&radius)
+        && delta.x.abs().max(delta.y.abs()) <= 1e75;
+    if !(plain && g0 > 0.0) {
+        return None;
+    }
+    // With σ = s/|v| (time, slowed by friction: σ = t − t²/(2τ)), d = Δ + v·σ and
+    // G = |v|²σ² + 2(Δ·v)σ + g0: no unit vector (and its roundings) is needed.
+    // G′(0)/2 = Δ·v: not approaching (G convex) means no contact ever.
+    let approach = delta.x * v.x + delta.y * v.y;
+    if approach.is_nan() {
+        return None;
+    }
+    if approach >= 0.0 {
+        return Some(None);
+    }
+    // G's discriminant/4 = |v|²·(r² − h²) = (r|v| − |Δ×v|)(r|v| + |Δ×v|), h the line's
+    // distance from the resting centre.
+    let reach = radius * speed2.sqrt();
+    let cross = (delta.x * v.y - delta.y * v.x).abs();
+    let disc = (reach - cross) * (reach + cross);
+    if !disc.is_finite() {
+        return None;
+    }
+    if disc <= 0.0 {
+        return Some(None); // the line passes outside, or exactly tangent
+    }
+    // Smaller root, without cancellation (approach < 0): g0 / (√disc − approach).
+    let sigma = g0 / (disc.sqrt() - approach);
+    // Before the stop, where σ reaches τ/2 (never without friction).
+    let tau = mover.stop_time();
+    if 2.0 * sigma >= tau {
+        return Some(None).filter(|_| sigma.is_finite());
+    }
+    // σ = t − t²/(2τ)  ⇒  t = 2σ / (1 + √(1 − 2σ/τ))  (= σ without friction).
+    let t = 2.0 * sigma / (1.0 + (1.0 - 2.0 * sigma / tau).sqrt());
+    if !t.is_finite() {
+        return None;
+    }
+    Some((t < t_max).then_some(t))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector2;
+
+    fn shot(scale: f64) -> Option<Option<f64>> {
+        let (Ok(a), Ok(b)) = (
+            Ball::new(
+                Vector2::new(0.0, 0.0),
+                Vector2::new(2.0, 0.3) * scale,
+                0.2 * scale,
+            ),
+            Ball::at_rest(Vector2::new(1.0, 0.1) * scale),
+        ) else {
+            panic!("valid balls")
+        };
+        let radius = 0.05715 * scale;
+        let d = a.position() - b.position();
+        let g0 = d.norm_squared() - radius * radius;
+        first_contact(&a, &b, radius, f64::INFINITY, g0)
+    }
+
+    #[test]
+    fn a_shot_at_a_resting_ball_is_solved_in_closed_form() {
+        let t = shot(1.0).flatten().unwrap_or(f64::NAN);
+        // A covers 2t − 0.1t² along its line, a distance the contact geometry fixes.
+        assert!(t > 0.4 && t < 0.5, "{t}");
+        assert_eq!(shot(0.5), shot(1.0)); // power-of-two units: the same bits
+    }
+
+    #[test]
+    fn tiny_and_huge_units_are_left_to_the_general_search() {
+        // Regression: at 1e-150 the discriminant (four lengths multiplied) underflowed to 0
+        // and the closed form reported a miss.
+        assert_eq!(shot(1e-150), None);
+        assert_eq!(shot(1e150), None);
+        assert!(shot(1e-30).flatten().is_some());
+    }
+
+    #[test]
+    fn only_one_ball_at_rest_qualifies() {
+        let (Ok(a), Ok(b)) = (
+            Ball::new(Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0), 0.1),
+            Ball::new(Vector2::new(1.0, 0.0), Vector2::new(-1.0, 0.0), 0.1),
+        ) else {
+            panic!("valid balls")
+        };
+        assert_eq!(first_contact(&a, &b, 0.1, f64::INFINITY, 0.99), None);
+        let (Ok(c), Ok(d)) = (
+            Ball::at_rest(Vector2::new(0.0, 0.0)),
+            Ball::at_rest(Vector2::new(1.0, 0.0)),
+        ) else {
+            panic!("valid balls")
+        };
+        assert_eq!(first_contact(&c, &d, 0.1, f64::INFINITY, 0.99), None);
+    }
+}
