@@ -102,7 +102,7 @@ def floor_of(coeffs, z):
     # Taylor coefficients t_k = p⁽ᵏ⁾(z)/k! by repeated synthetic division.
     work = [mpmath.mpc(ci) for ci in c]
     taylor = []
-    for k in range(n + 1):
+    for _k in range(n + 1):
         acc = mpmath.mpc(0)
         nxt = []
         for ci in work:
