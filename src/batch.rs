@@ -13,8 +13,10 @@ use nalgebra::Vector2;
 use rayon::prelude::*;
 use rayon::{ThreadPool, ThreadPoolBuilder};
 
+use crate::coefficients::gap_value;
 use crate::collision::first_contact;
-use crate::collision::prefilter::{PairInput, never_touch};
+use crate::collision::prefilter::{PairInput, never_touch, valid};
+use crate::collision::straight;
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::motion::Ball;
 
@@ -134,25 +136,26 @@ const LANES: usize = 8;
 
 /// The collision times of pairs `offset..offset + out.len()`.
 ///
-/// On x86-64 CPUs with AVX2 the screening runs in 4-wide vectors (a copy of the same code
-/// compiled for that feature); elsewhere in whatever the baseline target vectorises. The
-/// screening uses no fused multiply-add and only correctly rounded operations, so both copies
-/// give the same bits (a test checks it).
+/// On x86-64 CPUs with AVX2 and FMA the screening runs in 4-wide vectors (a copy of the same
+/// code compiled for those features); elsewhere in whatever the baseline target vectorises.
+/// The screening uses only correctly rounded operations, and fused multiply-adds only where
+/// written (`mul_add`, a library call without the FMA feature, one instruction with it: the
+/// same exact result), so both copies give the same bits (a test checks it).
 fn solve_chunk(pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) -> Result<(), InputError> {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the CPU supports AVX2, checked just above.
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU supports AVX2 and FMA, checked just above.
         return unsafe { solve_chunk_avx2(pairs, offset, out) };
     }
     solve_chunk_portable(pairs, offset, out)
 }
 
-/// [`solve_chunk_portable`] compiled with AVX2 enabled.
+/// [`solve_chunk_portable`] compiled with AVX2 and FMA enabled.
 ///
 /// # Safety
-/// The CPU must support AVX2.
+/// The CPU must support AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
+#[target_feature(enable = "avx2,fma")]
 unsafe fn solve_chunk_avx2(
     pairs: &Pairs<'_>,
     offset: usize,
@@ -172,27 +175,32 @@ fn solve_chunk_portable(
 ) -> Result<(), InputError> {
     for (b, block) in out.chunks_mut(LANES).enumerate() {
         let start = offset + b * LANES;
-        let apart = screen(pairs, start, block.len());
+        let answers = screen(pairs, start, block.len());
         for (k, slot) in block.iter_mut().enumerate() {
             let i = start + k;
-            *slot = if apart[k] {
-                f64::INFINITY
-            } else {
+            *slot = if answers[k].is_nan() {
                 pair_time(pairs, i)
                     .map_err(|e| e.at(i))?
                     .unwrap_or(f64::INFINITY)
+            } else {
+                answers[k]
             };
         }
     }
     Ok(())
 }
 
-/// [`never_touch`] on pairs `start..start + len` (`len ≤ LANES`); lanes past `len` are `false`.
+/// The answers that need no search, lane-wise, for pairs `start..start + len`
+/// (`len ≤ LANES`): `∞` for pairs proven apart ([`never_touch`]), the closed form's time (or
+/// `∞`) where one ball is at rest ([`straight::contact`]), and NaN for the rest (and for lanes
+/// past `len`), which the scalar search answers.
 ///
 /// Each input is first copied as a whole block (a few vector moves, and no narrow stores
-/// that wide loads would then stall on), so that the test's arithmetic runs on whole vectors.
+/// that wide loads would then stall on), so that the arithmetic runs on whole vectors. The
+/// closed form gets exactly the inputs that the scalar search would give it, so it returns
+/// the same bits.
 #[inline(always)]
-fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> [bool; LANES] {
+fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> [f64; LANES] {
     let (pos_a, vel_a) = (rows(pairs.pos_a, start, len), rows(pairs.vel_a, start, len));
     let (pos_b, vel_b) = (rows(pairs.pos_b, start, len), rows(pairs.vel_b, start, len));
     let (friction_a, friction_b) = (
@@ -203,20 +211,54 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> [bool; LANES] {
         scalars(pairs.radius, start, len),
         scalars(pairs.t_max, start, len),
     );
-    let mut apart = [false; LANES];
-    for (k, flag) in apart.iter_mut().enumerate() {
-        *flag = never_touch(&PairInput {
-            pos_a: pos_a[k],
-            vel_a: vel_a[k],
-            friction_a: friction_a[k],
-            pos_b: pos_b[k],
-            vel_b: vel_b[k],
-            friction_b: friction_b[k],
-            radius: radius[k],
-            t_max: t_max[k],
-        }) & (k < len);
+    let lane = |k: usize| PairInput {
+        pos_a: pos_a[k],
+        vel_a: vel_a[k],
+        friction_a: friction_a[k],
+        pos_b: pos_b[k],
+        vel_b: vel_b[k],
+        friction_b: friction_b[k],
+        radius: radius[k],
+        t_max: t_max[k],
+    };
+    let rests = |v: [f64; 2]| (v[0] == 0.0) & (v[1] == 0.0);
+    let mut answers = [f64::NAN; LANES];
+    let mut open = [false; LANES];
+    for (k, (answer, open)) in answers.iter_mut().zip(&mut open).enumerate() {
+        let pair = lane(k);
+        let valid = valid(&pair) & (k < len);
+        let apart = valid & never_touch(&pair);
+        *answer = if apart { f64::INFINITY } else { f64::NAN };
+        // Left for the closed form: valid, not apart, exactly one ball at rest.
+        *open = valid & !apart & (rests(pair.vel_a) != rests(pair.vel_b));
     }
-    apart
+    // Most blocks of moving balls have none: skip the closed form's roots and divisions.
+    if open.iter().any(|&x| x) {
+        for (k, (answer, &open)) in answers.iter_mut().zip(&open).enumerate() {
+            let pair = lane(k);
+            // The mover (A unless A rests) against the resting ball.
+            let ((p, v, mu), q) = if rests(pair.vel_a) {
+                ((pair.pos_b, pair.vel_b, pair.friction_b), pair.pos_a)
+            } else {
+                ((pair.pos_a, pair.vel_a, pair.friction_a), pair.pos_b)
+            };
+            // The mover's stop time as `Ball::new` forms it (|v| in the range where it is
+            // √(x² + y²), which the closed form requires anyway).
+            let tau = (v[0] * v[0] + v[1] * v[1]).sqrt() / mu;
+            let g0 = gap_value(
+                pair.pos_a[0] - pair.pos_b[0],
+                pair.pos_a[1] - pair.pos_b[1],
+                pair.radius,
+            );
+            let (applies, t) =
+                straight::contact([p[0] - q[0], p[1] - q[1]], v, tau, pair.radius, g0);
+            let t = if t < pair.t_max { t } else { f64::INFINITY };
+            if open & applies {
+                *answer = t;
+            }
+        }
+    }
+    answers
 }
 
 /// Rows `start..start + len` of `src` as a block of [`LANES`] (zeros past `len`).
@@ -541,10 +583,11 @@ mod tests {
         assert_eq!(solve_chunk(&p, 0, &mut dispatched), Ok(()));
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         assert_eq!(bits(&portable), bits(&dispatched));
+        let (mut apart, mut closed) = (0, 0);
         for start in (0..r.pos_a.len()).step_by(LANES) {
             let len = LANES.min(r.pos_a.len() - start);
-            let lanes = screen(&p, start, len);
-            for (k, &flag) in lanes.iter().enumerate().take(len) {
+            let answers = screen(&p, start, len);
+            for (k, &answer) in answers.iter().enumerate().take(len) {
                 let i = start + k;
                 let one = PairInput {
                     pos_a: r.pos_a[i],
@@ -556,9 +599,20 @@ mod tests {
                     radius: 0.05715,
                     t_max: r.t_max[i],
                 };
-                assert_eq!(flag, never_touch(&one), "pair {i}");
+                if never_touch(&one) {
+                    assert_eq!(answer, f64::INFINITY, "pair {i}");
+                    apart += 1;
+                } else if !answer.is_nan() {
+                    assert_eq!(answer.to_bits(), portable[i].to_bits(), "pair {i}");
+                    closed += 1;
+                }
             }
         }
+        // Both shortcuts are exercised (and the scalar path: see the test above).
+        assert!(
+            apart > 1000 && closed > 100,
+            "{apart} apart, {closed} closed form"
+        );
     }
 
     #[test]

@@ -105,14 +105,7 @@ impl Gap {
     /// whole configuration by quarter turns changes nothing, bit for bit.
     pub fn value(&self, s: f64) -> f64 {
         let d = self.separation(s);
-        let (big, small) = if d.x.abs() >= d.y.abs() {
-            (d.x, d.y)
-        } else {
-            (d.y, d.x)
-        };
-        let r2 = self.radius * self.radius;
-        let r2_err = self.radius.mul_add(self.radius, -r2);
-        big.mul_add(big, small.mul_add(small, -r2)) - r2_err
+        gap_value(d.x, d.y, self.radius)
     }
 
     /// `½·g′(s) = d(s)·d′(s)`: negative while the balls approach.
@@ -144,6 +137,19 @@ impl Gap {
             self.offset.abs().sum() + self.velocity.abs().sum() + self.acceleration.abs().sum();
         2.0 * f64::EPSILON * self.radius * (2.0 * size + self.radius)
     }
+}
+
+/// `x² + y² − radius²` as [`Gap::value`] computes it (the batch's lanes use it too, so that
+/// both give the same bits): the subtraction inside fused multiply-adds, the larger component
+/// last. Without branches, so that it vectorises.
+#[inline(always)]
+pub(crate) fn gap_value(x: f64, y: f64, radius: f64) -> f64 {
+    let x_larger = x.abs() >= y.abs();
+    let big = if x_larger { x } else { y };
+    let small = if x_larger { y } else { x };
+    let r2 = radius * radius;
+    let r2_err = radius.mul_add(radius, -r2);
+    big.mul_add(big, small.mul_add(small, -r2)) - r2_err
 }
 
 /// A ball's friction acceleration on a window starting at `t0`: zero once it has stopped.

@@ -25,7 +25,7 @@
 mod entry;
 mod exclusion;
 pub(crate) mod prefilter;
-mod straight;
+pub(crate) mod straight;
 
 use crate::coefficients::Gap;
 use crate::error::{InputError, check_horizon, check_radius};

@@ -98,24 +98,8 @@ pub(crate) fn never_touch(pair: &PairInput) -> bool {
         | apart(vbx, vby, speed_b)
         | apart(-vby, vbx, speed_b);
 
-    // Valid and bounded: every number finite (NaN fails every comparison), frictions ≥ 0,
-    // radius > 0, horizon ≥ 0, both stop points finite.
-    let finite = |x: f64| x.abs() <= f64::MAX;
-    let valid = finite(pax)
-        & finite(pay)
-        & finite(vax)
-        & finite(vay)
-        & finite(pbx)
-        & finite(pby)
-        & finite(vbx)
-        & finite(vby)
-        & finite(mu_a)
-        & finite(mu_b)
-        & finite(radius)
-        & (mu_a >= 0.0)
-        & (mu_b >= 0.0)
-        & (radius > 0.0)
-        & (pair.t_max >= 0.0)
+    // Valid and bounded: both stop points finite, magnitudes plain.
+    let valid = valid(pair)
         & (half_a < f64::MAX)
         & (half_b < f64::MAX)
         // Magnitudes where no product overflows and none underflows enough to matter
@@ -125,6 +109,32 @@ pub(crate) fn never_touch(pair: &PairInput) -> bool {
         & plain_speed(speed_a, vax, vay)
         & plain_speed(speed_b, vbx, vby);
     separated & valid
+}
+
+/// Whether the scalar path would accept `pair`: every number finite (NaN fails every
+/// comparison; the horizon may be `∞`), frictions ≥ 0, radius > 0, horizon ≥ 0.
+#[inline(always)]
+pub(crate) fn valid(pair: &PairInput) -> bool {
+    let finite = |x: f64| x.abs() <= f64::MAX;
+    let [pax, pay] = pair.pos_a;
+    let [vax, vay] = pair.vel_a;
+    let [pbx, pby] = pair.pos_b;
+    let [vbx, vby] = pair.vel_b;
+    finite(pax)
+        & finite(pay)
+        & finite(vax)
+        & finite(vay)
+        & finite(pbx)
+        & finite(pby)
+        & finite(vbx)
+        & finite(vby)
+        & finite(pair.friction_a)
+        & finite(pair.friction_b)
+        & finite(pair.radius)
+        & (pair.friction_a >= 0.0)
+        & (pair.friction_b >= 0.0)
+        & (pair.radius > 0.0)
+        & (pair.t_max >= 0.0)
 }
 
 #[cfg(test)]

@@ -28,51 +28,54 @@ pub(crate) fn first_contact(
         (true, false) => (b, a),
         _ => return None,
     };
-    let v = mover.velocity();
-    let speed2 = v.x * v.x + v.y * v.y;
     let delta = mover.position() - rest.position();
+    let v = mover.velocity();
+    let (applies, t) = contact(
+        [delta.x, delta.y],
+        [v.x, v.y],
+        mover.stop_time(),
+        radius,
+        g0,
+    );
+    applies.then_some((t < t_max).then_some(t))
+}
+
+/// The closed form proper, for a mover at `Δ` from the resting ball with velocity `v` and
+/// stop time `τ`: whether it applies, and the contact time (`∞` for none).
+///
+/// Branch-free (choices are selects), so that the batch evaluates it lane-wise; the scalar
+/// [`first_contact`] calls the same function.
+#[inline(always)]
+pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], tau: f64, radius: f64, g0: f64) -> (bool, f64) {
+    let [dx, dy] = delta;
+    let [vx, vy] = v;
+    let speed2 = vx * vx + vy * vy;
     // Products of up to four lengths or speeds (the discriminant) stay in the normal range
     // for these magnitudes; elsewhere the general search, which scales, answers.
     let plain = (1e-150..=1e150).contains(&speed2)
-        && (1e-75..=1e75).contains(&radius)
-        && delta.x.abs().max(delta.y.abs()) <= 1e75;
-    if !(plain && g0 > 0.0) {
-        return None;
-    }
+        & (1e-75..=1e75).contains(&radius)
+        & (dx.abs().max(dy.abs()) <= 1e75)
+        & (g0 > 0.0);
     // With σ = s/|v| (time, slowed by friction: σ = t − t²/(2τ)), d = Δ + v·σ and
     // G = |v|²σ² + 2(Δ·v)σ + g0: no unit vector (and its roundings) is needed.
     // G′(0)/2 = Δ·v: not approaching (G convex) means no contact ever.
-    let approach = delta.x * v.x + delta.y * v.y;
-    if approach.is_nan() {
-        return None;
-    }
-    if approach >= 0.0 {
-        return Some(None);
-    }
+    let approach = dx * vx + dy * vy;
     // G's discriminant/4 = |v|²·(r² − h²) = (r|v| − |Δ×v|)(r|v| + |Δ×v|), h the line's
-    // distance from the resting centre.
+    // distance from the resting centre: ≤ 0 when the line passes outside or exactly tangent.
     let reach = radius * speed2.sqrt();
-    let cross = (delta.x * v.y - delta.y * v.x).abs();
+    let cross = (dx * vy - dy * vx).abs();
     let disc = (reach - cross) * (reach + cross);
-    if !disc.is_finite() {
-        return None;
-    }
-    if disc <= 0.0 {
-        return Some(None); // the line passes outside, or exactly tangent
-    }
+    let meets = (approach < 0.0) & (disc > 0.0);
     // Smaller root, without cancellation (approach < 0): g0 / (√disc − approach).
-    let sigma = g0 / (disc.sqrt() - approach);
+    let sigma = g0 / (disc.max(0.0).sqrt() - approach);
     // Before the stop, where σ reaches τ/2 (never without friction).
-    let tau = mover.stop_time();
-    if 2.0 * sigma >= tau {
-        return Some(None).filter(|_| sigma.is_finite());
-    }
+    let before_stop = 2.0 * sigma < tau;
     // σ = t − t²/(2τ)  ⇒  t = 2σ / (1 + √(1 − 2σ/τ))  (= σ without friction).
-    let t = 2.0 * sigma / (1.0 + (1.0 - 2.0 * sigma / tau).sqrt());
-    if !t.is_finite() {
-        return None;
-    }
-    Some((t < t_max).then_some(t))
+    let t = 2.0 * sigma / (1.0 + (1.0 - 2.0 * sigma / tau).max(0.0).sqrt());
+    // A contact whose σ or t overflowed is left to the general search.
+    let settled = !meets | (sigma.is_finite() & (!before_stop | t.is_finite()));
+    let hit = meets & before_stop;
+    (plain & settled, if hit { t } else { f64::INFINITY })
 }
 
 #[cfg(test)]
