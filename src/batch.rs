@@ -264,8 +264,11 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> [f64; LANES] {
 /// Rows `start..start + len` of `src` as a block of [`LANES`] (zeros past `len`).
 #[inline(always)]
 fn rows(src: &[[f64; 2]], start: usize, len: usize) -> [[f64; 2]; LANES] {
-    match src.get(start..start + LANES) {
-        Some(&[a, b, c, d, e, f, g, h]) if len == LANES => [a, b, c, d, e, f, g, h],
+    match src
+        .get(start..start + LANES)
+        .map(<[[f64; 2]; LANES]>::try_from)
+    {
+        Some(Ok(block)) if len == LANES => block,
         _ => {
             let mut block = [[0.0; 2]; LANES];
             for (slot, row) in block.iter_mut().zip(src.iter().skip(start).take(len)) {
@@ -282,8 +285,8 @@ fn rows(src: &[[f64; 2]], start: usize, len: usize) -> [[f64; 2]; LANES] {
 fn scalars(src: PerPair<'_>, start: usize, len: usize) -> [f64; LANES] {
     match src {
         PerPair::All(x) => [x; LANES],
-        PerPair::Each(xs) => match xs.get(start..start + LANES) {
-            Some(&[a, b, c, d, e, f, g, h]) if len == LANES => [a, b, c, d, e, f, g, h],
+        PerPair::Each(xs) => match xs.get(start..start + LANES).map(<[f64; LANES]>::try_from) {
+            Some(Ok(block)) if len == LANES => block,
             _ => {
                 let mut block = [0.0; LANES];
                 for (slot, x) in block.iter_mut().zip(xs.iter().skip(start).take(len)) {
