@@ -10,6 +10,10 @@
 //! 3. otherwise the critical points of `g` split the window into monotone pieces, and the
 //!    first piece that goes from positive to negative is solved by bracketed Newton.
 //!
+//! When exactly one ball is at rest the relative motion is a straight line and the gap a
+//! quadratic in the distance covered: a closed form answers instead (`straight`). Batches
+//! first screen out, lane-wise, the pairs whose paths stay apart (`prefilter`).
+//!
 //! The quartic is never divided by its leading coefficient, so equal or nearly equal friction
 //! vectors (where it vanishes or nearly so) need no special case.
 //!
