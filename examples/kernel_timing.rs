@@ -3,13 +3,14 @@
 //! writes the file and runs this example on the very same data).
 //!
 //! ```text
-//! cargo run --release --example kernel_timing -- FILE [THREADS] [REPEATS]
+//! cargo run --release --example kernel_timing -- FILE [THREADS] [REPEATS] [fresh]
 //! ```
 //!
 //! FILE is little-endian: `n` as a `u64`, then `f64`s: `pos_a` (`2n`, rows `x, y`), `vel_a`
 //! (`2n`), `friction_a` (`n`), `pos_b` (`2n`), `vel_b` (`2n`), `friction_b` (`n`), `radius`
 //! (one value for all pairs). THREADS is a number (default 1) or `all`; REPEATS defaults
-//! to 15. The output is one line of `key=value` fields: the median and minimum ns per pair
+//! to 15. With `fresh`, every call writes into a newly allocated output buffer (as the Python
+//! binding does) instead of reusing one. The output is one line of `key=value` fields: the median and minimum ns per pair
 //! over the repeats, and a checksum of the times (hit count and sum of the finite times).
 
 use std::num::NonZeroUsize;
@@ -96,11 +97,16 @@ fn run() -> Result<String, String> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let path = args
         .first()
-        .ok_or("usage: kernel_timing FILE [THREADS] [REPEATS]")?;
+        .ok_or("usage: kernel_timing FILE [THREADS] [REPEATS] [fresh]")?;
     let threads = threads(args.get(1).map(String::as_str))?;
     let repeats: usize = match args.get(2) {
         Some(s) => s.parse().map_err(|e| format!("REPEATS: {e}"))?,
         None => 15,
+    };
+    let fresh = match args.get(3).map(String::as_str) {
+        None => false,
+        Some("fresh") => true,
+        Some(other) => return Err(format!("expected `fresh`, got {other:?}")),
     };
     let d = read(path)?;
     let pairs = Pairs {
@@ -119,6 +125,9 @@ fn run() -> Result<String, String> {
     let mut ns = Vec::with_capacity(repeats);
     for _ in 0..repeats.max(1) {
         let start = Instant::now();
+        if fresh {
+            out = vec![0.0; n];
+        }
         collision_times(&pairs, &mut out, threads).map_err(|e| e.to_string())?;
         ns.push(start.elapsed().as_secs_f64() * 1e9 / n.max(1) as f64);
     }
@@ -126,7 +135,7 @@ fn run() -> Result<String, String> {
     let sum: f64 = out.iter().filter(|t| t.is_finite()).sum();
     let min = ns.iter().copied().fold(f64::INFINITY, f64::min);
     Ok(format!(
-        "n={n} repeats={} median_ns_per_pair={:.4} min_ns_per_pair={min:.4} hits={hits} sum={sum:.17e}",
+        "n={n} repeats={} fresh={fresh} median_ns_per_pair={:.4} min_ns_per_pair={min:.4} hits={hits} sum={sum:.17e}",
         ns.len(),
         median(ns.clone()),
     ))
