@@ -64,6 +64,10 @@ enum Kind {
     Grazing,
     /// Cue ball (A) to an object ball at rest (B).
     AtRest,
+    /// Both balls moving the same way with the same friction, A catching B up on a parallel
+    /// track `radius·(1 ± 1e-2 … 1e-12)` aside, before B stops: grazing contacts that the
+    /// general search (not the one-ball-at-rest closed form) has to settle.
+    GrazingMoving,
 }
 
 fn set(kind: Kind, n: usize, seed: u64) -> Set {
@@ -81,14 +85,43 @@ fn set(kind: Kind, n: usize, seed: u64) -> Set {
         let pb = [rng.uniform(0.0, 2.54), rng.uniform(0.0, 1.27)];
         let speed = rng.uniform(0.0, 3.0);
         let mu = rng.uniform(0.05, 2.0);
-        let (va, vb, mu_b) = match kind {
+        let (pb, va, vb, mu, mu_b) = match kind {
             Kind::RandomTable => {
                 let (ta, tb) = (rng.uniform(0.0, 6.3), rng.uniform(0.0, 6.3));
                 let sb = rng.uniform(0.0, 3.0);
                 (
+                    pb,
                     [speed * ta.cos(), speed * ta.sin()],
                     [sb * tb.cos(), sb * tb.sin()],
+                    mu,
                     rng.uniform(0.05, 2.0),
+                )
+            }
+            Kind::GrazingMoving => {
+                let angle = rng.uniform(0.0, 6.3);
+                let (ux, uy) = (angle.cos(), angle.sin());
+                let delta = 10f64.powf(rng.uniform(-12.0, -2.0));
+                let side = if rng.uniform(0.0, 1.0) < 0.5 {
+                    1.0
+                } else {
+                    -1.0
+                };
+                let aside = RADIUS * (1.0 + side * delta);
+                let ahead = rng.uniform(2.0 * RADIUS, 0.5);
+                let pb = [
+                    pa[0] + ahead * ux - aside * uy,
+                    pa[1] + ahead * uy + aside * ux,
+                ];
+                let (speed_b, closing) = (rng.uniform(0.5, 2.0), rng.uniform(0.5, 1.5));
+                // The same deceleration; A reaches B (after about ahead/closing) before B stops.
+                let mu = rng.uniform(0.05, 2.0f64.min(0.9 * speed_b * closing / ahead));
+                let speed_a = speed_b + closing;
+                (
+                    pb,
+                    [speed_a * ux, speed_a * uy],
+                    [speed_b * ux, speed_b * uy],
+                    mu,
+                    mu,
                 )
             }
             Kind::Grazing | Kind::AtRest => {
@@ -110,7 +143,13 @@ fn set(kind: Kind, n: usize, seed: u64) -> Set {
                 let angle = dy.atan2(dx) + (offset / dist).clamp(-1.0, 1.0).asin();
                 // Fast enough to reach the target before stopping.
                 let speed = (2.0 * mu * dist).sqrt() * rng.uniform(1.05, 2.0);
-                ([speed * angle.cos(), speed * angle.sin()], [0.0, 0.0], 0.0)
+                (
+                    pb,
+                    [speed * angle.cos(), speed * angle.sin()],
+                    [0.0, 0.0],
+                    mu,
+                    0.0,
+                )
             }
         };
         s.pos_a.push(pa);
@@ -224,6 +263,7 @@ fn kernel(c: &mut Criterion<ThreadCpuTime>) {
         ("random_table", Kind::RandomTable),
         ("grazing", Kind::Grazing),
         ("at_rest", Kind::AtRest),
+        ("grazing_both_moving", Kind::GrazingMoving),
     ] {
         let s = set(kind, n, 7);
         let mut out = vec![0.0; n];
