@@ -41,6 +41,19 @@ impl Gap {
     /// The relative motion of `a` and `b` from time `t0` on, valid until the first of them
     /// stops after `t0` (a ball already stopped at `t0` contributes its resting point and no
     /// motion).
+    ///
+    /// ```
+    /// use ballcollide::{Ball, Gap};
+    /// use nalgebra::Vector2;
+    /// // A stops at x = 1 after 2 s; B rolls on along y without friction.
+    /// let a = Ball::new(Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0), 0.5)?;
+    /// let b = Ball::new(Vector2::new(0.0, -3.0), Vector2::new(0.0, 1.0), 0.0)?;
+    /// let after_stop = Gap::between(&a, &b, 0.1, 2.0);
+    /// assert_eq!(after_stop.offset, Vector2::new(1.0, 1.0)); // (1, 0) − (0, −1)
+    /// assert_eq!(after_stop.velocity, Vector2::new(0.0, -1.0));
+    /// assert_eq!(after_stop.acceleration, Vector2::zeros());
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
     pub fn between(a: &Ball, b: &Ball, radius: f64, t0: f64) -> Self {
         Self {
             offset: a.position_at(t0) - b.position_at(t0),
@@ -77,6 +90,24 @@ impl Gap {
     /// degree first (SPEC's formula with `Δp`, `Δv`, `Δf` the offset, velocity and
     /// acceleration), each formed in plain float arithmetic. [`Gap::value`] is the accurate
     /// way to evaluate `g`; the coefficients serve bounds and the full quartic solve.
+    ///
+    /// ```
+    /// use ballcollide::Gap;
+    /// use ballcollide::poly::solve_quartic;
+    /// use nalgebra::Vector2;
+    /// // Head-on on a line: the distance 3 − 2s + s²/2 reaches 1.5 at s = 1 (entry) and
+    /// // s = 3 (exit).
+    /// let gap = Gap {
+    ///     offset: Vector2::new(3.0, 0.0),
+    ///     velocity: Vector2::new(-2.0, 0.0),
+    ///     acceleration: Vector2::new(1.0, 0.0),
+    ///     radius: 1.5,
+    /// };
+    /// let [a, b, c, d, e] = gap.quartic();
+    /// let roots = solve_quartic(a, b, c, d, e);
+    /// assert_eq!(roots.len(), 2);
+    /// assert!((roots[0] - 1.0).abs() < 1e-12 && (roots[1] - 3.0).abs() < 1e-12);
+    /// ```
     pub fn quartic(&self) -> [f64; 5] {
         let (p, v, f) = (self.offset, self.velocity, self.acceleration);
         [
@@ -89,11 +120,27 @@ impl Gap {
     }
 
     /// `d(s)`: the vector from B's centre to A's at time `s` of the window.
+    ///
+    /// ```
+    /// use ballcollide::Gap;
+    /// use nalgebra::Vector2;
+    /// let gap = Gap {
+    ///     offset: Vector2::new(3.0, 1.0),
+    ///     velocity: Vector2::new(-2.0, 0.0),
+    ///     acceleration: Vector2::new(1.0, 0.0),
+    ///     radius: 1.0,
+    /// };
+    /// assert_eq!(gap.separation(2.0), Vector2::new(1.0, 1.0)); // 3 − 4 + 2
+    /// assert_eq!(gap.relative_velocity(2.0), Vector2::new(0.0, 0.0));
+    /// assert_eq!(gap.value(2.0), 1.0); // |(1, 1)|² − 1
+    /// assert_eq!(gap.half_slope(2.0), 0.0); // closest approach
+    /// assert_eq!(gap.half_curvature(2.0), 1.0); // 0 + (1, 1)·(1, 0)
+    /// ```
     pub fn separation(&self, s: f64) -> Vector2<f64> {
         self.offset + (self.velocity + self.acceleration * (0.5 * s)) * s
     }
 
-    /// `d′(s)`: the relative velocity at time `s` of the window.
+    /// `d′(s)`: the relative velocity at time `s` of the window (example: [`Gap::separation`]).
     pub fn relative_velocity(&self, s: f64) -> Vector2<f64> {
         self.velocity + self.acceleration * s
     }
@@ -102,18 +149,21 @@ impl Gap {
     /// that its sign is right when the distance is within rounding of the radius.
     ///
     /// The larger component goes last whatever the axes, so that rotating or reflecting the
-    /// whole configuration by quarter turns changes nothing, bit for bit.
+    /// whole configuration by quarter turns changes nothing, bit for bit. Example:
+    /// [`Gap::separation`].
     pub fn value(&self, s: f64) -> f64 {
         let d = self.separation(s);
         gap_value(d.x, d.y, self.radius)
     }
 
-    /// `½·g′(s) = d(s)·d′(s)`: negative while the balls approach.
+    /// `½·g′(s) = d(s)·d′(s)`: negative while the balls approach (example:
+    /// [`Gap::separation`]).
     pub fn half_slope(&self, s: f64) -> f64 {
         self.separation(s).dot(&self.relative_velocity(s))
     }
 
-    /// `½·g″(s) = |d′(s)|² + d(s)·d″`: the derivative of [`Gap::half_slope`].
+    /// `½·g″(s) = |d′(s)|² + d(s)·d″`: the derivative of [`Gap::half_slope`] (example:
+    /// [`Gap::separation`]).
     pub fn half_curvature(&self, s: f64) -> f64 {
         self.relative_velocity(s).norm_squared() + self.separation(s).dot(&self.acceleration)
     }

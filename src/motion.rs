@@ -90,16 +90,27 @@ impl Ball {
     }
 
     /// The centre at time 0.
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use nalgebra::Vector2;
+    /// let b = Ball::new(Vector2::new(1.0, 2.0), Vector2::new(0.5, 0.0), 0.25)?;
+    /// assert_eq!(b.position(), Vector2::new(1.0, 2.0));
+    /// assert_eq!(b.velocity(), Vector2::new(0.5, 0.0));
+    /// assert_eq!(b.friction(), 0.25);
+    /// assert!(!b.is_at_rest());
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
     pub fn position(&self) -> Vector2<f64> {
         self.position
     }
 
-    /// The velocity at time 0.
+    /// The velocity at time 0 (example: [`Ball::position`]).
     pub fn velocity(&self) -> Vector2<f64> {
         self.velocity
     }
 
-    /// The friction deceleration magnitude `μ`.
+    /// The friction deceleration magnitude `μ` (example: [`Ball::position`]).
     pub fn friction(&self) -> f64 {
         self.friction
     }
@@ -119,6 +130,13 @@ impl Ball {
     }
 
     /// Whether the ball is at rest from the start (`v = 0`).
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use nalgebra::Vector2;
+    /// assert!(Ball::at_rest(Vector2::new(1.0, 1.0))?.is_at_rest());
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
     pub fn is_at_rest(&self) -> bool {
         self.stop_time == 0.0
     }
@@ -162,6 +180,16 @@ impl Ball {
     ///
     /// Written `p + v·t·(1 − t/(2τ))`: the factor lies in [½, 1] before the stop, so it
     /// carries no cancellation, and at `t = τ` it gives the resting point exactly.
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use nalgebra::Vector2;
+    /// let b = Ball::new(Vector2::zeros(), Vector2::new(2.0, 0.0), 1.0)?; // stops at t = 2
+    /// assert_eq!(b.position_at(1.0), Vector2::new(1.5, 0.0));
+    /// assert_eq!(b.position_at(2.0), Vector2::new(2.0, 0.0));
+    /// assert_eq!(b.position_at(9.0), Vector2::new(2.0, 0.0));
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
     pub fn position_at(&self, t: f64) -> Vector2<f64> {
         let t = t.max(0.0);
         let tau = self.stop_time;
@@ -177,6 +205,15 @@ impl Ball {
     }
 
     /// The velocity at time `t ≥ 0`: `v·(1 − t/τ)` until the stop, zero after.
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use nalgebra::Vector2;
+    /// let b = Ball::new(Vector2::zeros(), Vector2::new(2.0, 0.0), 1.0)?; // stops at t = 2
+    /// assert_eq!(b.velocity_at(1.5), Vector2::new(0.5, 0.0));
+    /// assert_eq!(b.velocity_at(3.0), Vector2::zeros());
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
     pub fn velocity_at(&self, t: f64) -> Vector2<f64> {
         let t = t.max(0.0);
         let tau = self.stop_time;
