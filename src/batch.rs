@@ -17,7 +17,9 @@ use crate::coefficients::gap_value;
 use crate::collision::first_contact;
 use crate::collision::prefilter::{PairInput, never_touch, valid};
 use crate::collision::straight;
-use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
+use crate::error::{
+    InputError, InputErrorKind, check_friction, check_horizon, check_radius, finite,
+};
 use crate::motion::Ball;
 
 /// A scalar parameter of a batch: one value for every pair, or one per pair.
@@ -42,6 +44,18 @@ impl PerPair<'_> {
         match self {
             Self::All(x) => *x,
             Self::Each(xs) => xs[i],
+        }
+    }
+
+    /// Checks the shared value, if this is one.
+    fn check_shared(
+        &self,
+        argument: &'static str,
+        check: fn(&'static str, f64) -> Result<f64, InputError>,
+    ) -> Result<(), InputError> {
+        match self {
+            Self::All(x) => check(argument, *x).map(|_| ()),
+            Self::Each(_) => Ok(()),
         }
     }
 
@@ -324,6 +338,8 @@ pub fn positions_at(
     check_len("vel", vel.len(), n)?;
     friction.check_len("friction", n)?;
     t.check_len("t", n)?;
+    friction.check_shared("friction", check_friction)?;
+    t.check_shared("t", finite)?;
     run_chunks(out, threads, |offset, chunk| {
         for (k, slot) in chunk.iter_mut().enumerate() {
             let i = offset + k;
@@ -372,6 +388,8 @@ fn ball(
     })
 }
 
+/// Checks the array lengths and the values shared by all pairs. A bad shared value is an error
+/// (without an index: it belongs to no pair in particular) even in an empty batch.
 fn check_lengths(pairs: &Pairs<'_>, n: usize) -> Result<(), InputError> {
     check_len("pos_a", pairs.pos_a.len(), n)?;
     check_len("vel_a", pairs.vel_a.len(), n)?;
@@ -380,7 +398,15 @@ fn check_lengths(pairs: &Pairs<'_>, n: usize) -> Result<(), InputError> {
     check_len("vel_b", pairs.vel_b.len(), n)?;
     pairs.friction_b.check_len("friction_b", n)?;
     pairs.radius.check_len("radius", n)?;
-    pairs.t_max.check_len("t_max", n)
+    pairs.t_max.check_len("t_max", n)?;
+    pairs
+        .friction_a
+        .check_shared("friction_a", check_friction)?;
+    pairs
+        .friction_b
+        .check_shared("friction_b", check_friction)?;
+    pairs.radius.check_shared("radius", check_radius)?;
+    pairs.t_max.check_shared("t_max", check_horizon)
 }
 
 fn check_len(argument: &'static str, len: usize, n: usize) -> Result<(), InputError> {
@@ -461,6 +487,40 @@ fn first_error(x: Result<(), InputError>, y: Result<(), InputError>) -> Result<(
 mod tests {
     use super::*;
     use crate::{CollisionOptions, collision_time_with};
+
+    #[test]
+    fn a_bad_shared_value_is_an_error_even_in_an_empty_batch() {
+        let empty: [[f64; 2]; 0] = [];
+        let pairs = |radius, t_max, friction| Pairs {
+            pos_a: &empty,
+            vel_a: &empty,
+            friction_a: PerPair::All(friction),
+            pos_b: &empty,
+            vel_b: &empty,
+            friction_b: PerPair::All(0.0),
+            radius: PerPair::All(radius),
+            t_max: PerPair::All(t_max),
+        };
+        let run = |p: Pairs<'_>| collision_times(&p, &mut [], Threads::All);
+        assert_eq!(run(pairs(1.0, f64::INFINITY, 0.0)), Ok(()));
+        let err = run(pairs(0.0, f64::INFINITY, 0.0)).unwrap_err();
+        assert_eq!((err.argument(), err.index()), ("radius", None));
+        let err = run(pairs(1.0, -1.0, 0.0)).unwrap_err();
+        assert_eq!((err.argument(), err.index()), ("t_max", None));
+        let err = run(pairs(1.0, 1.0, f64::NAN)).unwrap_err();
+        assert_eq!((err.argument(), err.index()), ("friction_a", None));
+        let mut out: [[f64; 2]; 0] = [];
+        let err = positions_at(
+            &empty,
+            &empty,
+            PerPair::All(-1.0),
+            PerPair::All(0.0),
+            &mut out,
+            Threads::All,
+        )
+        .unwrap_err();
+        assert_eq!((err.argument(), err.index()), ("friction", None));
+    }
 
     /// xorshift64*: deterministic inputs.
     struct Rng(u64);

@@ -145,6 +145,19 @@ pub(crate) fn finite(argument: &'static str, x: f64) -> Result<f64, InputError> 
     }
 }
 
+/// Checks a friction deceleration: finite and ≥ 0.
+pub(crate) fn check_friction(argument: &'static str, friction: f64) -> Result<f64, InputError> {
+    finite(argument, friction)?;
+    if friction >= 0.0 {
+        Ok(friction)
+    } else {
+        Err(InputError::new(
+            argument,
+            InputErrorKind::NegativeFriction(friction),
+        ))
+    }
+}
+
 /// Checks a collision radius: finite and > 0.
 pub(crate) fn check_radius(argument: &'static str, radius: f64) -> Result<f64, InputError> {
     finite(argument, radius)?;

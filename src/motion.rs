@@ -2,7 +2,7 @@
 
 use nalgebra::Vector2;
 
-use crate::error::{InputError, InputErrorKind, finite};
+use crate::error::{InputError, check_friction, finite};
 
 /// A ball's state at time 0: its centre, its velocity, and the magnitude `μ ≥ 0` of the
 /// friction deceleration, which points against the velocity.
@@ -56,13 +56,7 @@ impl Ball {
         finite("position", position.y)?;
         finite("velocity", velocity.x)?;
         finite("velocity", velocity.y)?;
-        finite("friction", friction)?;
-        if friction < 0.0 {
-            return Err(InputError::new(
-                "friction",
-                InputErrorKind::NegativeFriction(friction),
-            ));
-        }
+        check_friction("friction", friction)?;
         let speed = norm(velocity);
         // τ = |v|/μ: 0 for a ball at rest (even when μ = 0), ∞ for a frictionless mover, and
         // ∞ too when |v|/μ overflows (the ball then never stops within float time).

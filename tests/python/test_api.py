@@ -375,8 +375,8 @@ def test_non_finite_values(name: str, bad: float) -> None:
     kwargs = valid()
     kwargs[name][1] = bad
     raises(ValueError, f"{name}[1]: must be finite", **kwargs)
-    kwargs[name] = bad  # a scalar: the first pair is the first bad one
-    raises(ValueError, f"{name}[0]: must be finite", **kwargs)
+    kwargs[name] = bad  # a scalar belongs to no pair in particular: no index
+    raises(ValueError, f"{name}: must be finite", **kwargs)
 
 
 def test_bad_values_name_argument_and_index() -> None:
@@ -387,7 +387,7 @@ def test_bad_values_name_argument_and_index() -> None:
     kwargs["radius"][2] = 0.0
     raises(ValueError, "radius[2]: radius (sum of the two radii) must be > 0, got 0", **kwargs)
     kwargs["radius"] = -1.0
-    raises(ValueError, "radius[0]: radius (sum of the two radii) must be > 0, got -1", **kwargs)
+    raises(ValueError, "radius: radius (sum of the two radii) must be > 0, got -1", **kwargs)
     for t_max in (-1.0, np.nan):
         kwargs = valid()
         kwargs["t_max"][1] = t_max
