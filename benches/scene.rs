@@ -20,17 +20,9 @@ use nalgebra::Vector2;
 
 const R: f64 = 0.028575;
 
-/// xorshift64*: deterministic scenes without extra dependencies.
-struct Rng(u64);
-impl Rng {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let bits = self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11;
-        lo + (hi - lo) * (bits as f64 / (1u64 << 53) as f64)
-    }
-}
+#[path = "../tests/support/rng.rs"]
+mod rng;
+use rng::Rng;
 
 /// A rack of 15 balls at rest (apex at (1.9, 0.635)) and the cue ball at 3 m/s towards it.
 fn rack() -> Vec<Ball> {

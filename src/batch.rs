@@ -483,6 +483,11 @@ fn first_error(x: Result<(), InputError>, y: Result<(), InputError>) -> Result<(
     }
 }
 
+/// The tests' and benchmarks' shared deterministic generator.
+#[cfg(test)]
+#[path = "../tests/support/rng.rs"]
+mod test_rng;
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -522,17 +527,7 @@ mod tests {
         assert_eq!((err.argument(), err.index()), ("friction", None));
     }
 
-    /// xorshift64*: deterministic inputs.
-    struct Rng(u64);
-    impl Rng {
-        fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-            self.0 ^= self.0 >> 12;
-            self.0 ^= self.0 << 25;
-            self.0 ^= self.0 >> 27;
-            let bits = self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11;
-            lo + (hi - lo) * (bits as f64 / (1u64 << 53) as f64)
-        }
-    }
+    use super::test_rng::Rng;
 
     struct Rows {
         pos_a: Vec<[f64; 2]>,

@@ -11,17 +11,9 @@ use ballcollide::poly::{eval, solve_quartic};
 use ballcollide::{Ball, Gap, collision_time};
 use nalgebra::Vector2;
 
-/// xorshift64*: a tiny deterministic generator, so the cases are the same on every run.
-struct Rng(u64);
-impl Rng {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        let bits = self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11;
-        lo + (hi - lo) * (bits as f64 / (1u64 << 53) as f64)
-    }
-}
+#[path = "support/rng.rs"]
+mod rng;
+use rng::Rng;
 
 #[test]
 fn first_contact_is_the_first_entry_root_of_the_quartic() {
