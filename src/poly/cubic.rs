@@ -67,7 +67,17 @@ pub fn solve_cubic(a: f64, b: f64, c: f64, d: f64) -> RealRoots {
         roots.sort();
         return roots;
     }
-    let coeffs = [a, b, c, d];
+    split_or_scale([a, b, c, d], cubic_scaled)
+}
+
+/// The last step shared by the cubic and quartic solvers, for finite coefficients with
+/// non-zero first and last ones: a polynomial whose roots form two groups far apart in
+/// magnitude is split and each part solved on its own; otherwise coefficients and variable are
+/// scaled by powers of two for `solve_scaled`, whose roots are then scaled back.
+pub(super) fn split_or_scale<const N: usize>(
+    coeffs: [f64; N],
+    solve_scaled: fn([f64; N]) -> RootBuf,
+) -> RealRoots {
     let exps = exponents(&coeffs);
     if let Some(i) = split_point(&exps) {
         return merge(
@@ -76,9 +86,9 @@ pub fn solve_cubic(a: f64, b: f64, c: f64, d: f64) -> RealRoots {
         );
     }
     let (Some(en), Some(s)) = (exps[0], root_exponent(&exps)) else {
-        return RealRoots::empty(); // unreachable: a and d are finite and non-zero
+        return RealRoots::empty(); // unreachable: the first and last coefficients are non-zero
     };
-    cubic_scaled(scaled(&coeffs, en, s)).unscaled(s)
+    solve_scaled(scaled(&coeffs, en, s)).unscaled(s)
 }
 
 /// The roots of a cubic whose coefficients `p` have been scaled so that `p[0] ∈ [1, 2)`,
@@ -200,14 +210,14 @@ pub(super) fn push_quadratic_roots(p: &[f64], a: f64, b: f64, c: f64, roots: &mu
 
 /// The binary exponents of the coefficients ([`exponent`]; `None` for a zero), computed once
 /// for [`split_point`], [`root_exponent`] and [`scaled`].
-pub(super) fn exponents<const N: usize>(coeffs: &[f64; N]) -> [Option<i32>; N] {
+fn exponents<const N: usize>(coeffs: &[f64; N]) -> [Option<i32>; N] {
     coeffs.map(exponent)
 }
 
 /// The exponent `s` such that the roots of the polynomial with coefficient exponents `exps`
 /// (highest degree first, leading one non-zero) are at most about `2^s` in magnitude: the largest `⌈(e_k − e_n)/(n − k)⌉` over
 /// the non-zero coefficients (Fujiwara's bound in powers of two).
-pub(super) fn root_exponent(exps: &[Option<i32>]) -> Option<i32> {
+fn root_exponent(exps: &[Option<i32>]) -> Option<i32> {
     let en = (*exps.first()?)?;
     let mut s = i32::MIN;
     for (i, &e) in exps.iter().enumerate().skip(1) {
@@ -231,7 +241,7 @@ pub(super) fn root_exponent(exps: &[Option<i32>]) -> Option<i32> {
 /// The coefficients of `p(2^s·y)`, divided by a power of two so that the leading one lies in
 /// `[1, 2)` (`en` is the leading coefficient's exponent): all exact (barring underflow of
 /// coefficients that are negligible).
-pub(super) fn scaled<const N: usize>(coeffs: &[f64; N], en: i32, s: i32) -> [f64; N] {
+fn scaled<const N: usize>(coeffs: &[f64; N], en: i32, s: i32) -> [f64; N] {
     let mut out = [0.0; N];
     for (i, (o, &c)) in out.iter_mut().zip(coeffs).enumerate() {
         // Degree k = N − 1 − i; the factor is 2^(s·k − s·(N − 1) − en) = 2^(−s·i − en).
@@ -249,7 +259,7 @@ pub(super) fn scaled<const N: usize>(coeffs: &[f64; N], en: i32, s: i32) -> [f64
 /// slope jumps by more than `SPLIT_BITS` separates two groups, and at it each group's
 /// polynomial is the part of the coefficients on its side, up to terms smaller than
 /// `2^-SPLIT_BITS` relative.
-pub(super) fn split_point(exps: &[Option<i32>]) -> Option<usize> {
+fn split_point(exps: &[Option<i32>]) -> Option<usize> {
     let n = exps.len().checked_sub(1)?;
     // Fast path: an edge slope is at most the exponent range, so slopes can differ by more
     // than SPLIT_BITS only if the exponents span more than SPLIT_BITS / 2.

@@ -47,9 +47,9 @@
 //! - Every real root is finally refined by guarded Newton steps on the (exactly scaled)
 //!   original quartic with a compensated residual.
 
-use super::cubic::{exponents, merge, push_quadratic_roots, root_exponent, scaled, split_point};
+use super::cubic::{merge, push_quadratic_roots, split_or_scale};
 use super::horner::{RootBuf, polish_roots};
-use super::{RealRoots, solve_cubic, solve_linear, solve_quadratic};
+use super::{RealRoots, solve_cubic};
 
 /// √ε (ε = 2⁻⁵²): the 2024 Remark's threshold factor for the `d₂ ≈ 0` test.
 const SQRT_EPS: f64 = 1.490_116_119_384_765_6e-8;
@@ -101,28 +101,7 @@ pub fn solve_quartic(a: f64, b: f64, c: f64, d: f64, e: f64) -> RealRoots {
     if b == 0.0 && d == 0.0 {
         return biquadratic(a, c, e);
     }
-    let coeffs = [a, b, c, d, e];
-    let exps = exponents(&coeffs);
-    if let Some(i) = split_point(&exps) {
-        return merge(
-            solve_low_degree(&coeffs[..=i]),
-            solve_low_degree(&coeffs[i..]),
-        );
-    }
-    let (Some(en), Some(s)) = (exps[0], root_exponent(&exps)) else {
-        return RealRoots::empty(); // unreachable: a and e are finite and non-zero
-    };
-    quartic_scaled(scaled(&coeffs, en, s)).unscaled(s)
-}
-
-/// Roots of a polynomial of degree ≤ 3 given highest degree first (a split-off part).
-fn solve_low_degree(coeffs: &[f64]) -> RealRoots {
-    match *coeffs {
-        [a, b, c, d] => solve_cubic(a, b, c, d),
-        [a, b, c] => solve_quadratic(a, b, c),
-        [a, b] => solve_linear(a, b),
-        _ => RealRoots::empty(),
-    }
+    split_or_scale([a, b, c, d, e], quartic_scaled)
 }
 
 /// `a·x⁴ + c·x² + e` through the quadratic `a·z² + c·z + e` in `z = x²`.
