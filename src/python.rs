@@ -24,7 +24,7 @@ use rayon::prelude::*;
 
 use crate::batch::{self, Pairs, PerPair, Threads};
 use crate::error::{InputError, InputErrorKind};
-use crate::poly::{self, RealRoots};
+use crate::poly;
 use crate::scene::{self, SceneOptions};
 
 /// A scalar parameter from Python: one float for all pairs, or a float64 array of one per pair.
@@ -259,22 +259,11 @@ fn real_roots<'py>(
             .zip(flat.par_chunks(cols))
             .with_min_len(1024)
             .for_each(|(roots_out, c)| {
-                let roots = solve(c);
+                let roots = poly::real_roots(c);
                 roots_out[..roots.len()].copy_from_slice(&roots);
             });
     });
     PyArray1::from_vec(py, out).reshape(Dim([n, k]))
-}
-
-/// The solver for the degree that `c.len() − 1` names (2..=5 coefficients).
-fn solve(c: &[f64]) -> RealRoots {
-    match *c {
-        [a, b] => poly::solve_linear(a, b),
-        [a, b, cc] => poly::solve_quadratic(a, b, cc),
-        [a, b, cc, d] => poly::solve_cubic(a, b, cc, d),
-        [a, b, cc, d, e] => poly::solve_quartic(a, b, cc, d, e),
-        _ => RealRoots::empty(),
-    }
 }
 
 /// The balls, per-ball radii and options of a scene query, validated by the core.

@@ -3,7 +3,7 @@
 
 use super::horner::{RootBuf, eval_compensated, pair_within_rounding, polish_roots};
 use super::scaling::{exponent, scale};
-use super::{RealRoots, solve_linear, solve_quadratic};
+use super::{RealRoots, real_roots, solve_quadratic};
 
 /// How far apart (in bits of magnitude) two groups of roots must be before the polynomial is
 /// split into two lower-degree ones, one per group.
@@ -81,8 +81,9 @@ pub(super) fn split_or_scale<const N: usize>(
     let exps = exponents(&coeffs);
     if let Some(i) = split_point(&exps) {
         return merge(
-            solve_low_degree(&coeffs[..=i]),
-            solve_low_degree(&coeffs[i..]),
+            // Each part has degree below N − 1: no endless recursion.
+            real_roots(&coeffs[..=i]),
+            real_roots(&coeffs[i..]),
         );
     }
     let (Some(en), Some(s)) = (exps[0], root_exponent(&exps)) else {
@@ -304,16 +305,6 @@ fn split_point(exps: &[Option<i32>]) -> Option<usize> {
         }
     }
     None
-}
-
-/// Roots of a polynomial of degree ≤ 3 given highest degree first (a split-off part).
-fn solve_low_degree(coeffs: &[f64]) -> RealRoots {
-    match *coeffs {
-        [a, b, c, d] => solve_cubic(a, b, c, d),
-        [a, b, c] => solve_quadratic(a, b, c),
-        [a, b] => solve_linear(a, b),
-        _ => RealRoots::empty(),
-    }
 }
 
 /// The union of two root sets, sorted.

@@ -32,3 +32,23 @@ pub use horner::eval;
 pub use quadratic::{solve_linear, solve_quadratic};
 pub use quartic::solve_quartic;
 pub use roots::RealRoots;
+
+/// The real roots of the polynomial with coefficients `coeffs`, highest degree first (like
+/// `numpy.roots`), of degree 1 to 4 (2 to 5 coefficients): the solver for that degree.
+/// Any other length gives no root.
+///
+/// ```
+/// use ballcollide::poly::real_roots;
+/// assert_eq!(real_roots(&[1.0, -3.0, 2.0]).as_slice(), &[1.0, 2.0]);
+/// assert_eq!(real_roots(&[2.0, -1.0]).as_slice(), &[0.5]);
+/// assert!(real_roots(&[1.0]).is_empty());
+/// ```
+pub fn real_roots(coeffs: &[f64]) -> RealRoots {
+    match *coeffs {
+        [a, b] => solve_linear(a, b),
+        [a, b, c] => solve_quadratic(a, b, c),
+        [a, b, c, d] => solve_cubic(a, b, c, d),
+        [a, b, c, d, e] => solve_quartic(a, b, c, d, e),
+        _ => RealRoots::empty(),
+    }
+}
