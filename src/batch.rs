@@ -483,11 +483,6 @@ fn first_error(x: Result<(), InputError>, y: Result<(), InputError>) -> Result<(
     }
 }
 
-/// The tests' and benchmarks' shared deterministic generator.
-#[cfg(test)]
-#[path = "../tests/support/rng.rs"]
-mod test_rng;
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -527,7 +522,7 @@ mod tests {
         assert_eq!((err.argument(), err.index()), ("friction", None));
     }
 
-    use super::test_rng::Rng;
+    use crate::test_rng::Rng;
 
     struct Rows {
         pos_a: Vec<[f64; 2]>,

@@ -37,3 +37,8 @@ pub use coefficients::Gap;
 pub use collision::{CollisionOptions, collision_time, collision_time_with};
 pub use error::{InputError, InputErrorKind};
 pub use motion::Ball;
+
+/// The tests' and benchmarks' shared deterministic generator.
+#[cfg(test)]
+#[path = "../tests/support/rng.rs"]
+mod test_rng;
