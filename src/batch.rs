@@ -14,6 +14,7 @@ use rayon::prelude::*;
 use rayon::{ThreadPool, ThreadPoolBuilder};
 
 use crate::coefficients::gap_value;
+use crate::collision::crossing::never_meet;
 use crate::collision::first_contact;
 use crate::collision::prefilter::{PairInput, never_touch, valid};
 use crate::collision::straight;
@@ -178,30 +179,109 @@ unsafe fn solve_chunk_avx2(
     solve_chunk_portable(pairs, offset, out)
 }
 
-/// Screens blocks of [`LANES`] pairs with [`never_touch`] (no contact: `∞` at once), then runs
-/// the full validated search on the survivors, in order, so that the first error found is
-/// the lowest index's.
+/// Screens blocks of [`LANES`] pairs ([`screen`]); the moving pairs it leaves open are
+/// gathered into blocks of their own for the timing test ([`never_meet`]), and whatever is
+/// still open goes to the full validated search. Invalid pairs reach the search as soon as
+/// they are met, so the first error found is the lowest index's (the pairs held back are
+/// valid: they cannot fail).
 #[inline(always)]
 fn solve_chunk_portable(
     pairs: &Pairs<'_>,
     offset: usize,
     out: &mut [f64],
 ) -> Result<(), InputError> {
-    for (b, block) in out.chunks_mut(LANES).enumerate() {
-        let start = offset + b * LANES;
-        let answers = screen(pairs, start, block.len());
-        for (k, slot) in block.iter_mut().enumerate() {
-            let i = start + k;
-            *slot = if answers[k].is_nan() {
-                pair_time(pairs, i)
-                    .map_err(|e| e.at(i))?
-                    .unwrap_or(f64::INFINITY)
+    let mut held = Held::default();
+    for start in (0..out.len()).step_by(LANES) {
+        let len = LANES.min(out.len() - start);
+        let (answers, crossing) = screen(pairs, offset + start, len);
+        for k in 0..len {
+            let i = offset + start + k;
+            if crossing[k] {
+                // Answered when its block is settled.
+                if held.push(i) {
+                    held.settle(pairs, offset, out)?;
+                }
             } else {
-                answers[k]
-            };
+                out[start + k] = if answers[k].is_nan() {
+                    search(pairs, i)?
+                } else {
+                    answers[k]
+                };
+            }
         }
     }
-    Ok(())
+    held.settle(pairs, offset, out)
+}
+
+/// Indices of moving pairs held back for the timing test, a block at a time.
+#[derive(Default)]
+struct Held {
+    index: [usize; LANES],
+    len: usize,
+}
+
+impl Held {
+    /// Holds pair `i`; `true` when the block is full.
+    #[inline(always)]
+    fn push(&mut self, i: usize) -> bool {
+        if let Some(slot) = self.index.get_mut(self.len) {
+            *slot = i;
+            self.len += 1;
+        }
+        self.len == LANES
+    }
+
+    /// Answers the held pairs (`out` holds pairs `offset..`): `∞` where the timing test proves
+    /// them apart, the search's answer elsewhere; and empties the block. Inlined into both
+    /// copies of [`solve_chunk_portable`], so that the test runs in the widest vectors.
+    #[inline(always)]
+    fn settle(
+        &mut self,
+        pairs: &Pairs<'_>,
+        offset: usize,
+        out: &mut [f64],
+    ) -> Result<(), InputError> {
+        let held = &self.index[..self.len];
+        let mut lanes = [PairInput::default(); LANES];
+        for (lane, &i) in lanes.iter_mut().zip(held) {
+            *lane = input(pairs, i);
+        }
+        let mut apart = [false; LANES];
+        for (apart, lane) in apart.iter_mut().zip(&lanes) {
+            *apart = never_meet(lane);
+        }
+        for (&i, &apart) in held.iter().zip(&apart) {
+            out[i - offset] = if apart {
+                f64::INFINITY
+            } else {
+                search(pairs, i)?
+            };
+        }
+        self.len = 0;
+        Ok(())
+    }
+}
+
+/// Pair `i`'s inputs.
+#[inline(always)]
+fn input(pairs: &Pairs<'_>, i: usize) -> PairInput {
+    PairInput {
+        pos_a: pairs.pos_a[i],
+        vel_a: pairs.vel_a[i],
+        friction_a: pairs.friction_a.get(i),
+        pos_b: pairs.pos_b[i],
+        vel_b: pairs.vel_b[i],
+        friction_b: pairs.friction_b.get(i),
+        radius: pairs.radius.get(i),
+        t_max: pairs.t_max.get(i),
+    }
+}
+
+/// Pair `i`'s collision time by the full search (`∞` for none), or its input error.
+fn search(pairs: &Pairs<'_>, i: usize) -> Result<f64, InputError> {
+    Ok(pair_time(pairs, i)
+        .map_err(|e| e.at(i))?
+        .unwrap_or(f64::INFINITY))
 }
 
 /// The answers that need no search, lane-wise, for pairs `start..start + len`
@@ -214,7 +294,7 @@ fn solve_chunk_portable(
 /// closed form gets exactly the inputs that the scalar search would give it, so it returns
 /// the same bits.
 #[inline(always)]
-fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> [f64; LANES] {
+fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> ([f64; LANES], [bool; LANES]) {
     let (pos_a, vel_a) = (rows(pairs.pos_a, start, len), rows(pairs.vel_a, start, len));
     let (pos_b, vel_b) = (rows(pairs.pos_b, start, len), rows(pairs.vel_b, start, len));
     let (friction_a, friction_b) = (
@@ -238,13 +318,21 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> [f64; LANES] {
     let rests = |v: [f64; 2]| (v[0] == 0.0) & (v[1] == 0.0);
     let mut answers = [f64::NAN; LANES];
     let mut open = [false; LANES];
-    for (k, (answer, open)) in answers.iter_mut().zip(&mut open).enumerate() {
+    let mut crossing = [false; LANES];
+    for (k, ((answer, open), crossing)) in answers
+        .iter_mut()
+        .zip(&mut open)
+        .zip(&mut crossing)
+        .enumerate()
+    {
         let pair = lane(k);
         let valid = valid(&pair) & (k < len);
         let apart = valid & never_touch(&pair);
         *answer = if apart { f64::INFINITY } else { f64::NAN };
         // Left for the closed form: valid, not apart, exactly one ball at rest.
         *open = valid & !apart & (rests(pair.vel_a) != rests(pair.vel_b));
+        // Left for the timing test: valid, not apart, both moving.
+        *crossing = valid & !apart & !rests(pair.vel_a) & !rests(pair.vel_b);
     }
     // Most blocks of moving balls have none: skip the closed form's roots and divisions.
     if open.iter().any(|&x| x) {
@@ -272,7 +360,7 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> [f64; LANES] {
             }
         }
     }
-    answers
+    (answers, crossing)
 }
 
 /// Rows `start..start + len` of `src` as a block of [`LANES`] (zeros past `len`).
@@ -639,7 +727,7 @@ mod tests {
         let (mut apart, mut closed) = (0, 0);
         for start in (0..r.pos_a.len()).step_by(LANES) {
             let len = LANES.min(r.pos_a.len() - start);
-            let answers = screen(&p, start, len);
+            let (answers, _) = screen(&p, start, len);
             for (k, &answer) in answers.iter().enumerate().take(len) {
                 let i = start + k;
                 let one = PairInput {

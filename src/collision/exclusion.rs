@@ -15,7 +15,7 @@
 use crate::coefficients::Gap;
 
 /// How many times a window is halved, at most, before giving up (the deepest pieces are
-/// 1/2^SPLITS of the window).
+/// 1/2^SPLITS of the window); [`positive_within_3_halvings`] spells the levels out.
 const SPLITS: u32 = 3;
 
 /// Whether `g(u) > 0` is proven for every `u ∈ [0, end]` (time already scaled so that
@@ -29,7 +29,12 @@ const SPLITS: u32 = 3;
 /// coefficients' dot products err by `≤ 3ε·M²`, the powers `endⁱ` by `≤ 4ε·M²`, the basis
 /// change by `≤ 5ε·M²` (four additions and the rounded `1/6`), and each level of halving by
 /// `≤ 4ε·M²` (four rounds of averages): `(12 + 4·SPLITS)·ε·M² + …` is below the margin used.
-pub(crate) fn proves_positive(gap: &Gap, end: f64) -> bool {
+///
+/// `EAGER` evaluates every piece of the subdivision, without a branch, so that a batch runs
+/// the test lane-wise over many windows; otherwise pieces are examined only until the answer
+/// is known, as a single query wants. Both give the same answer.
+#[inline(always)]
+pub(crate) fn proves_positive<const EAGER: bool>(gap: &Gap, end: f64) -> bool {
     let [a4, a3, a2, a1, a0] = gap.quartic();
     let end2 = end * end;
     let (a1, a2, a3, a4) = (a1 * end, a2 * end2, a3 * (end2 * end), a4 * (end2 * end2));
@@ -40,34 +45,67 @@ pub(crate) fn proves_positive(gap: &Gap, end: f64) -> bool {
         a0 + 0.75 * a1 + 0.5 * a2 + 0.25 * a3,
         a0 + a1 + a2 + a3 + a4,
     ];
-    // g(0) and g(end) themselves are not above the margin: no proof can follow (most
-    // contacts end here, before any halving).
-    if b[0].min(b[4]) <= 0.0 {
-        return false;
-    }
-    let m = gap.offset.abs().sum()
-        + gap.velocity.abs().sum()
-        + gap.acceleration.abs().sum()
+    let m = gap.offset.x.abs()
+        + gap.offset.y.abs()
+        + (gap.velocity.x.abs() + gap.velocity.y.abs())
+        + (gap.acceleration.x.abs() + gap.acceleration.y.abs())
         + gap.radius;
     let margin = (16.0 + 4.0 * SPLITS as f64) * f64::EPSILON * (m * m);
-    bernstein_positive(b, margin, SPLITS)
+    // g(0) and g(end) themselves must be positive: most contacts end here.
+    let ends_positive = (b[0] > 0.0) & (b[4] > 0.0);
+    both::<EAGER>(ends_positive, || {
+        positive_within_3_halvings::<EAGER>(b, margin)
+    })
 }
 
-/// Whether the quartic with Bernstein coefficients `b` on an interval is above `margin` on
-/// it, halving the interval up to `splits` times where the coefficients alone do not show it.
-fn bernstein_positive(b: [f64; 5], margin: f64, splits: u32) -> bool {
-    if b.iter().all(|&x| x > margin) {
-        return true;
-    }
-    // A piece's end values are values of g: one below the margin settles nothing further.
-    if splits == 0 || b[0] <= margin || b[4] <= margin {
-        return false;
-    }
-    let (left, right) = halves(b);
-    bernstein_positive(left, margin, splits - 1) && bernstein_positive(right, margin, splits - 1)
+/// Whether the quartic with Bernstein coefficients `b` on an interval is above `margin` on it,
+/// by its coefficients or, where they do not show it, by those of its halves, recursively, up
+/// to [`SPLITS`] halvings. A piece whose end values (values of `g`) are below the margin
+/// settles nothing further.
+#[inline(always)]
+fn positive_within_3_halvings<const EAGER: bool>(b: [f64; 5], margin: f64) -> bool {
+    let level1 = |b: [f64; 5]| {
+        let (l, r) = halves(b);
+        settled::<EAGER>(&b, margin, || {
+            both::<EAGER>(above(&l, margin), || above(&r, margin))
+        })
+    };
+    let level2 = |b: [f64; 5]| {
+        let (l, r) = halves(b);
+        settled::<EAGER>(&b, margin, || both::<EAGER>(level1(l), || level1(r)))
+    };
+    let (l, r) = halves(b);
+    settled::<EAGER>(&b, margin, || both::<EAGER>(level2(l), || level2(r)))
+}
+
+/// Whether every coefficient of `b` is above `margin`.
+#[inline(always)]
+fn above(b: &[f64; 5], margin: f64) -> bool {
+    b.iter().fold(true, |all, &x| all & (x > margin))
+}
+
+/// Whether the piece `b` is settled: its coefficients are above `margin`, or its end values are
+/// and `halves` settles both its halves.
+#[inline(always)]
+fn settled<const EAGER: bool>(b: &[f64; 5], margin: f64, halves: impl FnOnce() -> bool) -> bool {
+    let ends_above = (b[0] > margin) & (b[4] > margin);
+    either::<EAGER>(above(b, margin), || both::<EAGER>(ends_above, halves))
+}
+
+/// `x ∧ y()`: always evaluating `y` when `EAGER` (no branch), only if needed otherwise.
+#[inline(always)]
+fn both<const EAGER: bool>(x: bool, y: impl FnOnce() -> bool) -> bool {
+    if EAGER { x & y() } else { x && y() }
+}
+
+/// `x ∨ y()`, as [`both`].
+#[inline(always)]
+fn either<const EAGER: bool>(x: bool, y: impl FnOnce() -> bool) -> bool {
+    if EAGER { x | y() } else { x || y() }
 }
 
 /// De Casteljau's subdivision at the midpoint: the Bernstein coefficients on each half.
+#[inline(always)]
 fn halves(b: [f64; 5]) -> ([f64; 5], [f64; 5]) {
     let mid = |x: f64, y: f64| 0.5 * (x + y);
     let c = [
@@ -98,7 +136,7 @@ mod tests {
 
     #[test]
     fn far_apart_and_receding_is_excluded() {
-        assert!(proves_positive(
+        assert!(proves_positive::<false>(
             &gap([5.0, 0.0], [1.0, 0.0], [-0.5, 0.0]),
             1.0
         ));
@@ -107,22 +145,22 @@ mod tests {
     #[test]
     fn contact_inside_the_window_is_never_excluded() {
         // Head-on: |d| = 3 − 4u reaches 1 at u = 0.5.
-        assert!(!proves_positive(
+        assert!(!proves_positive::<false>(
             &gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]),
             1.0
         ));
         // Grazing from above by 1e-15: within rounding, so not excluded either.
-        assert!(!proves_positive(
+        assert!(!proves_positive::<false>(
             &gap([-1.0, 1.0 + 1e-15], [2.0, 0.0], [0.0, 0.0]),
             1.0
         ));
         // Grazing from above by 1e-12: above rounding, and halving proves the miss.
-        assert!(proves_positive(
+        assert!(proves_positive::<false>(
             &gap([-1.0, 1.0 + 1e-12], [2.0, 0.0], [0.0, 0.0]),
             1.0
         ));
         // Contact just inside the window's end (|d| = 3 − 4u = 1 at u = 0.5).
-        assert!(!proves_positive(
+        assert!(!proves_positive::<false>(
             &gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]),
             0.5 + 1e-9
         ));
@@ -133,8 +171,8 @@ mod tests {
         // |d| = 3 − 4u reaches 1 at u = 0.5, after a window that ends at u = 0.4 (a ball
         // stops there: past it the formula is fictitious). [0, 1] could not be proven.
         let g = gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]);
-        assert!(proves_positive(&g, 0.4));
-        assert!(!proves_positive(&g, 1.0));
+        assert!(proves_positive::<false>(&g, 0.4));
+        assert!(!proves_positive::<false>(&g, 1.0));
     }
 
     #[test]
@@ -144,6 +182,6 @@ mod tests {
         let [a4, a3, a2, a1, a0] = g.quartic();
         let b2 = a0 + 0.5 * a1 + a2 / 6.0;
         assert!(b2 < 0.0 && a4 == 0.0 && a3 == 0.0); // not provable without halving
-        assert!(proves_positive(&g, 1.0));
+        assert!(proves_positive::<false>(&g, 1.0));
     }
 }

@@ -26,6 +26,7 @@
 //! - a contact shallower than about 1e-13 of the radius is beyond what float64 inputs decide
 //!   (the gap's minimum is then within rounding of zero): either answer may come back.
 
+pub(crate) mod crossing;
 mod entry;
 mod exclusion;
 pub(crate) mod prefilter;
@@ -161,7 +162,34 @@ fn approaching(gap: &Gap) -> bool {
 
 /// Longest window searched: contacts later than about 1e301 (in the input's time unit) are not
 /// reported, so that scaling time to the window never overflows.
-const LONGEST_WINDOW: f64 = 1e301;
+pub(crate) const LONGEST_WINDOW: f64 = 1e301;
+
+/// The power of two `h ≥ length` (`length` itself if it is one) in whose units a window of
+/// `length` runs over `[0, length/h] ⊂ [0, 1]`, exactly; `None` for a zero length.
+fn time_unit(length: f64) -> Option<f64> {
+    if length >= f64::MIN_POSITIVE {
+        return Some(normal_time_unit(length));
+    }
+    match exponent(length) {
+        Some(e) if length == pow2(e) => Some(length),
+        Some(e) => Some(pow2(e + 1)),
+        None => None,
+    }
+}
+
+/// [`time_unit`] of a normal, finite, positive `length` (up to [`LONGEST_WINDOW`]), by its
+/// bits: the power of two below it, doubled unless it is that power.
+#[inline(always)]
+pub(crate) fn normal_time_unit(length: f64) -> f64 {
+    const MANTISSA: u64 = (1 << 52) - 1;
+    let bits = length.to_bits();
+    let below = f64::from_bits(bits & !MANTISSA);
+    if bits & MANTISSA == 0 {
+        length
+    } else {
+        2.0 * below
+    }
+}
 
 /// The first entry on a window of `length` (possibly infinite), as time since its start.
 fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearch {
@@ -181,10 +209,8 @@ fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearc
         }
     };
     let length = length.min(LONGEST_WINDOW);
-    // h = 2^k ≥ length, so that u = s/h runs over [0, ≤ 1] exactly.
-    let h = match exponent(length) {
-        Some(e) if length == pow2(e) => length,
-        Some(e) => pow2(e + 1),
+    let h = match time_unit(length) {
+        Some(h) => h,
         None => {
             let g_start = gap.value(0.0);
             return if previous_positive && g_start < 0.0 {
@@ -198,7 +224,7 @@ fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearc
     };
     let scaled = gap.time_scaled(h);
     let end = length / h;
-    if exclusion::proves_positive(&scaled, end) {
+    if exclusion::proves_positive::<false>(&scaled, end) {
         return WindowSearch::NoEntry {
             ends_positive: true,
         };
