@@ -1,5 +1,6 @@
 //! The first entry (+ → − sign change of the gap) on one time window.
 
+use super::exclusion::{Isolation, isolate_first_crossing};
 use crate::coefficients::Gap;
 use crate::poly::{bracketed_newton, solve_quadratic};
 
@@ -92,6 +93,33 @@ pub(crate) fn first_entry(gap: &Gap, end: f64, previous_positive: bool) -> Windo
     }
     WindowSearch::NoEntry {
         ends_positive: g_left > 0.0,
+    }
+}
+
+/// The window `[0, end]` settled by a finer Bernstein subdivision
+/// ([`isolate_first_crossing`]), without the critical points: proven positive, or its first
+/// crossing isolated on a piece holding exactly one root, found there. `None` leaves the window
+/// to [`first_entry`]. On random pairs this settles most contacts and near misses at about
+/// half the cost.
+pub(crate) fn isolated_entry(gap: &Gap, end: f64) -> Option<WindowSearch> {
+    match isolate_first_crossing(gap, end) {
+        Isolation::Positive => Some(WindowSearch::NoEntry {
+            ends_positive: true,
+        }),
+        Isolation::Crossing(start, stop) => {
+            let (left, right) = (end * start, end * stop);
+            let (g_left, g_right) = (gap.value(left), gap.value(right));
+            // The accurate values must confirm the bracket that the coefficients promise.
+            (g_left > 0.0 && g_right < 0.0).then(|| {
+                WindowSearch::Entry(entry_root(
+                    gap,
+                    (left, right),
+                    (g_left, g_right),
+                    gap.value_noise(),
+                ))
+            })
+        }
+        Isolation::Unsettled => None,
     }
 }
 

@@ -18,6 +18,9 @@ use crate::coefficients::Gap;
 /// 1/2^SPLITS of the window); [`positive_within_3_halvings`] spells the levels out.
 const SPLITS: u32 = 3;
 
+/// How many times [`isolate_first_crossing`] may halve a window.
+const ISOLATING_SPLITS: u32 = 5;
+
 /// Whether `g(u) > 0` is proven for every `u ∈ [0, end]` (time already scaled so that
 /// `0 ≤ end ≤ 1`).
 ///
@@ -35,6 +38,46 @@ const SPLITS: u32 = 3;
 /// is known, as a single query wants. Both give the same answer.
 #[inline(always)]
 pub(crate) fn proves_positive<const EAGER: bool>(gap: &Gap, end: f64) -> bool {
+    let (b, margin) = bernstein(gap, end, SPLITS);
+    // g(0) and g(end) themselves must be positive: most contacts end here.
+    let ends_positive = (b[0] > 0.0) & (b[4] > 0.0);
+    both::<EAGER>(ends_positive, || {
+        positive_within_3_halvings::<EAGER>(b, margin)
+    })
+}
+
+/// What a finer subdivision than [`proves_positive`]'s (up to [`ISOLATING_SPLITS`] halvings)
+/// shows of the window.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Isolation {
+    /// `g > 0` on the whole window.
+    Positive,
+    /// The first piece, in time, that is not proven positive has exactly one root of `g`,
+    /// robustly: its Bernstein coefficients are positive, then negative, none within the margin
+    /// of zero. Earlier pieces being positive, that root is the window's first crossing; the
+    /// piece brackets it (`start`, `end` as fractions of the window).
+    Crossing(f64, f64),
+    /// Neither: a near miss, an entry and an exit close together, ...
+    Unsettled,
+}
+
+/// The window `[0, end]` under a finer subdivision than [`proves_positive`]'s: positive
+/// throughout, or its first crossing isolated, or neither.
+pub(crate) fn isolate_first_crossing(gap: &Gap, end: f64) -> Isolation {
+    let (b, margin) = bernstein(gap, end, ISOLATING_SPLITS);
+    match first_open(b, margin, (0.0, 1.0), ISOLATING_SPLITS) {
+        Piece::Proven => Isolation::Positive,
+        Piece::Open((start, stop), b) if one_sign_change(&b, margin) => {
+            Isolation::Crossing(start, stop)
+        }
+        Piece::Open(..) => Isolation::Unsettled,
+    }
+}
+
+/// The Bernstein coefficients of `g` on `[0, end]`, and the margin above their rounding errors
+/// and those of `splits` halvings.
+#[inline(always)]
+fn bernstein(gap: &Gap, end: f64, splits: u32) -> ([f64; 5], f64) {
     let [a4, a3, a2, a1, a0] = gap.quartic();
     let end2 = end * end;
     let (a1, a2, a3, a4) = (a1 * end, a2 * end2, a3 * (end2 * end), a4 * (end2 * end2));
@@ -50,12 +93,43 @@ pub(crate) fn proves_positive<const EAGER: bool>(gap: &Gap, end: f64) -> bool {
         + (gap.velocity.x.abs() + gap.velocity.y.abs())
         + (gap.acceleration.x.abs() + gap.acceleration.y.abs())
         + gap.radius;
-    let margin = (16.0 + 4.0 * SPLITS as f64) * f64::EPSILON * (m * m);
-    // g(0) and g(end) themselves must be positive: most contacts end here.
-    let ends_positive = (b[0] > 0.0) & (b[4] > 0.0);
-    both::<EAGER>(ends_positive, || {
-        positive_within_3_halvings::<EAGER>(b, margin)
-    })
+    (b, (16.0 + 4.0 * splits as f64) * f64::EPSILON * (m * m))
+}
+
+/// A piece of the subdivision: proven positive, or open (its bounds and coefficients).
+enum Piece {
+    Proven,
+    Open((f64, f64), [f64; 5]),
+}
+
+/// The first open piece of `b` on `bounds`, halving up to `splits` times. Unlike
+/// [`positive_within_3_halvings`], it halves a piece whose end is below the margin too (where
+/// `g` may cross zero), to isolate the first crossing.
+fn first_open(b: [f64; 5], margin: f64, (lo, hi): (f64, f64), splits: u32) -> Piece {
+    if above(&b, margin) {
+        return Piece::Proven;
+    }
+    if splits == 0 || b[0] <= margin {
+        return Piece::Open((lo, hi), b);
+    }
+    let (l, r) = halves(b);
+    let mid = 0.5 * (lo + hi);
+    match first_open(l, margin, (lo, mid), splits - 1) {
+        Piece::Proven => first_open(r, margin, (mid, hi), splits - 1),
+        open => open,
+    }
+}
+
+/// Whether the coefficients go from above `margin` to below `−margin` exactly once, and are
+/// never within `margin` of zero: by Descartes' rule of signs for the Bernstein basis the
+/// polynomial then has exactly one root on the piece.
+fn one_sign_change(b: &[f64; 5], margin: f64) -> bool {
+    let clear = b.iter().all(|&x| x.abs() > margin);
+    let changes = b
+        .windows(2)
+        .filter(|w| (w[0] > 0.0) != (w[1] > 0.0))
+        .count();
+    clear && b[0] > 0.0 && changes == 1
 }
 
 /// Whether the quartic with Bernstein coefficients `b` on an interval is above `margin` on it,
@@ -183,5 +257,38 @@ mod tests {
         let b2 = a0 + 0.5 * a1 + a2 / 6.0;
         assert!(b2 < 0.0 && a4 == 0.0 && a3 == 0.0); // not provable without halving
         assert!(proves_positive::<false>(&g, 1.0));
+    }
+
+    #[test]
+    fn the_first_crossing_is_isolated_on_a_piece_that_brackets_it() {
+        // Head-on: |d| = 3.3 − 4u reaches 1 at u = 0.575 (entry), and leaves after the window.
+        let g = gap([3.3, 0.0], [-4.0, 0.0], [0.0, 0.0]);
+        let Isolation::Crossing(start, stop) = isolate_first_crossing(&g, 1.0) else {
+            panic!("not isolated: {:?}", isolate_first_crossing(&g, 1.0))
+        };
+        assert!(
+            start < 0.575 && 0.575 < stop && stop - start <= 0.25,
+            "{start} {stop}"
+        );
+        // Within a window ending at u = 0.75, still the same root.
+        let Isolation::Crossing(start, stop) = isolate_first_crossing(&g, 0.75) else {
+            panic!("not isolated")
+        };
+        assert!(start * 0.75 < 0.575 && 0.575 < stop * 0.75);
+        // A root right on a piece's end (u = 0.5) is left to the general search.
+        let g = gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]);
+        assert_eq!(isolate_first_crossing(&g, 1.0), Isolation::Unsettled);
+    }
+
+    #[test]
+    fn a_finer_subdivision_proves_a_closer_miss() {
+        // Passing 3e-4 above the other ball (closest at u = 0.45): three halvings do not show
+        // it, five do.
+        let g = gap([-0.9, 1.0003], [2.0, 0.0], [0.0, 0.0]);
+        assert!(!proves_positive::<false>(&g, 1.0));
+        assert_eq!(isolate_first_crossing(&g, 1.0), Isolation::Positive);
+        // Passing 3e-4 inside: a crossing, but entry and exit are too close to isolate.
+        let g = gap([-0.9, 0.9997], [2.0, 0.0], [0.0, 0.0]);
+        assert_eq!(isolate_first_crossing(&g, 1.0), Isolation::Unsettled);
     }
 }

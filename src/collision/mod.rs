@@ -6,13 +6,16 @@
 //! negative, searched window by window:
 //!
 //! 1. time is scaled by a power of two to the window (exact), so each window is `[0, ≤ 1]`;
-//! 2. a Bernstein-basis test proves most windows contact-free at once;
-//! 3. otherwise the critical points of `g` split the window into monotone pieces, and the
+//! 2. a Bernstein-basis test proves most windows contact-free at once (`exclusion`);
+//! 3. a finer subdivision proves most of the rest contact-free, or isolates the first
+//!    crossing on a piece where `g` has a single root, found there by bracketed Newton;
+//! 4. otherwise the critical points of `g` split the window into monotone pieces, and the
 //!    first piece that goes from positive to negative is solved by bracketed Newton.
 //!
 //! When exactly one ball is at rest the relative motion is a straight line and the gap a
 //! quadratic in the distance covered: a closed form answers instead (`straight`). Batches
-//! first screen out, lane-wise, the pairs whose paths stay apart (`prefilter`).
+//! first screen out, lane-wise, the pairs whose paths stay apart (`prefilter`), then, among
+//! moving pairs whose paths cross, those that are never there at the same time (`crossing`).
 //!
 //! The quartic is never divided by its leading coefficient, so equal or nearly equal friction
 //! vectors (where it vanishes or nearly so) need no special case.
@@ -36,7 +39,7 @@ use crate::coefficients::Gap;
 use crate::error::{InputError, check_horizon, check_radius};
 use crate::motion::Ball;
 use crate::poly::scaling::{exponent, pow2};
-use entry::{WindowSearch, first_entry};
+use entry::{WindowSearch, first_entry, isolated_entry};
 
 /// Options of a collision query ([`collision_time_with`]).
 ///
@@ -229,7 +232,9 @@ fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearc
             ends_positive: true,
         };
     }
-    match first_entry(&scaled, end, previous_positive) {
+    let found = isolated_entry(&scaled, end)
+        .unwrap_or_else(|| first_entry(&scaled, end, previous_positive));
+    match found {
         WindowSearch::Entry(u) => WindowSearch::Entry(u * h),
         no_entry => no_entry,
     }
