@@ -151,18 +151,49 @@ const LANES: usize = 8;
 
 /// The collision times of pairs `offset..offset + out.len()`.
 ///
-/// On x86-64 CPUs with AVX2 and FMA the screening runs in 4-wide vectors (a copy of the same
-/// code compiled for those features); elsewhere in whatever the baseline target vectorises.
-/// The screening uses only correctly rounded operations, and fused multiply-adds only where
-/// written (`mul_add`, a library call without the FMA feature, one instruction with it: the
-/// same exact result), so both copies give the same bits (a test checks it).
+/// On x86-64 CPUs with AVX-512 (or AVX2 and FMA) the lane-wise tests run in 8-wide (4-wide)
+/// vectors: copies of the same code compiled for those features; elsewhere in whatever the
+/// baseline target vectorises. The tests use only correctly rounded operations, and fused
+/// multiply-adds only where written (`mul_add`, a library call without the FMA feature, one
+/// instruction with it: the same exact result), so all copies give the same bits (a test
+/// checks it).
 fn solve_chunk(pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) -> Result<(), InputError> {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports AVX2 and FMA, checked just above.
-        return unsafe { solve_chunk_avx2(pairs, offset, out) };
+    match X86Level::detect() {
+        // SAFETY: the CPU supports the features each copy is compiled for, just detected.
+        X86Level::Avx512 => return unsafe { solve_chunk_avx512(pairs, offset, out) },
+        X86Level::Avx2 => return unsafe { solve_chunk_avx2(pairs, offset, out) },
+        X86Level::Baseline => {}
     }
     solve_chunk_portable(pairs, offset, out)
+}
+
+/// The widest x86-64 vector extensions that the batch has a copy of its loops for.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum X86Level {
+    /// AVX-512 F, VL and DQ, with AVX2 and FMA.
+    Avx512,
+    /// AVX2 and FMA.
+    Avx2,
+    /// Neither.
+    Baseline,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl X86Level {
+    /// What this CPU supports (cached by the standard library after the first call).
+    fn detect() -> Self {
+        use std::arch::is_x86_feature_detected as has;
+        let avx2 = has!("avx2") && has!("fma");
+        if avx2 && has!("avx512f") && has!("avx512vl") && has!("avx512dq") {
+            Self::Avx512
+        } else if avx2 {
+            Self::Avx2
+        } else {
+            Self::Baseline
+        }
+    }
 }
 
 /// [`solve_chunk_portable`] compiled with AVX2 and FMA enabled.
@@ -172,6 +203,20 @@ fn solve_chunk(pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) -> Result<(), 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 unsafe fn solve_chunk_avx2(
+    pairs: &Pairs<'_>,
+    offset: usize,
+    out: &mut [f64],
+) -> Result<(), InputError> {
+    solve_chunk_portable(pairs, offset, out)
+}
+
+/// [`solve_chunk_portable`] compiled with AVX-512 (F, VL, DQ), AVX2 and FMA enabled.
+///
+/// # Safety
+/// The CPU must support those features.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512dq")]
+unsafe fn solve_chunk_avx512(
     pairs: &Pairs<'_>,
     offset: usize,
     out: &mut [f64],
@@ -715,15 +760,31 @@ mod tests {
     }
 
     #[test]
-    fn vector_and_portable_screening_agree_bit_for_bit() {
+    fn every_vector_copy_agrees_with_the_portable_code_bit_for_bit() {
         let r = rows(5_000, 5);
         let p = pairs(&r);
         let mut portable = vec![0.0; r.pos_a.len()];
         assert_eq!(solve_chunk_portable(&p, 0, &mut portable), Ok(()));
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         let mut dispatched = vec![0.0; r.pos_a.len()];
         assert_eq!(solve_chunk(&p, 0, &mut dispatched), Ok(()));
-        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         assert_eq!(bits(&portable), bits(&dispatched));
+        // Every copy this CPU can run, whichever the dispatch picks.
+        #[cfg(target_arch = "x86_64")]
+        {
+            let level = X86Level::detect();
+            let mut copy = vec![0.0; r.pos_a.len()];
+            if level != X86Level::Baseline {
+                // SAFETY: AVX2 and FMA are supported (both vector levels include them).
+                assert_eq!(unsafe { solve_chunk_avx2(&p, 0, &mut copy) }, Ok(()));
+                assert_eq!(bits(&portable), bits(&copy));
+            }
+            if level == X86Level::Avx512 {
+                // SAFETY: AVX-512 F, VL and DQ are supported, just detected.
+                assert_eq!(unsafe { solve_chunk_avx512(&p, 0, &mut copy) }, Ok(()));
+                assert_eq!(bits(&portable), bits(&copy));
+            }
+        }
         let (mut apart, mut closed) = (0, 0);
         for start in (0..r.pos_a.len()).step_by(LANES) {
             let len = LANES.min(r.pos_a.len() - start);
