@@ -65,7 +65,7 @@ pub(crate) fn never_meet(pair: &PairInput) -> bool {
         radius,
     }
     .time_scaled(h);
-    let first = (length >= f64::MIN_POSITIVE) & proves_positive::<true>(&gap, length / h);
+    let first = (length >= f64::MIN_POSITIVE) & proves_positive(&gap, length / h);
 
     // The second window: the ball that stops first rests at its stopping point; the other
     // runs on from where it is at that moment to where it stops.

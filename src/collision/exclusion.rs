@@ -1,4 +1,5 @@
-//! A cheap, rigorous proof that two balls cannot touch on a window.
+//! A cheap, rigorous proof that two balls cannot touch on a window, or the isolation of their
+//! first crossing on a piece of it.
 //!
 //! On `w ∈ [0, 1]` a quartic `q(w) = Σ aᵢ wⁱ` equals `Σ bⱼ Bⱼ(w)` in the Bernstein basis
 //! `Bⱼ(w) = C(4, j) wʲ (1 − w)⁴⁻ʲ`, whose functions are non-negative and sum to one: `q` lies
@@ -9,45 +10,36 @@
 //! The test runs on the window itself, `u ∈ [0, end]` (substituting `u = end·w`), not on the
 //! power-of-two interval `[0, 1]` that contains it: past a stop the gap's formula turns the
 //! ball round, and that fictitious return would often spoil the proof. Where the first test
-//! fails, the window is halved (de Casteljau, exact halvings and one rounding per average) up
-//! to [`SPLITS`] times, which tightens the bounds quadratically around a near miss.
+//! fails, the window is halved (de Casteljau, exact halvings and one rounding per average),
+//! which tightens the bounds quadratically around a near miss: three times at most in the
+//! batch's lane-wise test ([`proves_positive`]), five in the search
+//! ([`isolate_first_crossing`]), which also stops at the first piece, in time, that is not
+//! positive: where its coefficients change sign once, it holds the first crossing, and nothing
+//! else.
 
 use crate::coefficients::Gap;
 
-/// How many times a window is halved, at most, before giving up (the deepest pieces are
-/// 1/2^SPLITS of the window); [`positive_within_3_halvings`] spells the levels out.
-const SPLITS: u32 = 3;
-
-/// How many times [`isolate_first_crossing`] may halve a window.
+/// How many times [`isolate_first_crossing`] may halve a window (its margin, shared with
+/// [`proves_positive`], covers the rounding of that many halvings).
 const ISOLATING_SPLITS: u32 = 5;
 
 /// Whether `g(u) > 0` is proven for every `u ∈ [0, end]` (time already scaled so that
-/// `0 ≤ end ≤ 1`).
+/// `0 ≤ end ≤ 1`), by the Bernstein coefficients of the window or of its pieces down to three
+/// halvings.
 ///
 /// `false` means "not proven", not "there is a root".
 ///
-/// The margin bounds every rounding error on the way. With `M` the sum of all components'
-/// magnitudes and the radius, `Σ|aᵢ| ≤ M²`, and every Bernstein coefficient of every piece is
-/// a combination with weights ≤ 1 of the `aᵢ`, so each stays below `M²` in magnitude. The
-/// coefficients' dot products err by `≤ 3ε·M²`, the powers `endⁱ` by `≤ 4ε·M²`, the basis
-/// change by `≤ 5ε·M²` (four additions and the rounded `1/6`), and each level of halving by
-/// `≤ 4ε·M²` (four rounds of averages): `(12 + 4·SPLITS)·ε·M² + …` is below the margin used.
-///
-/// `EAGER` evaluates every piece of the subdivision, without a branch, so that a batch runs
-/// the test lane-wise over many windows; otherwise pieces are examined only until the answer
-/// is known, as a single query wants. Both give the same answer.
+/// Branch-free (every piece is evaluated), so that a batch runs it lane-wise over many
+/// windows. The search itself runs [`isolate_first_crossing`], which takes the same
+/// coefficients and margin and subdivides further: every window proven here, it proves too,
+/// so a pair that the batch settles with this test is one the search answers the same way.
 #[inline(always)]
-pub(crate) fn proves_positive<const EAGER: bool>(gap: &Gap, end: f64) -> bool {
-    let (b, margin) = bernstein(gap, end, SPLITS);
-    // g(0) and g(end) themselves must be positive: most contacts end here.
-    let ends_positive = (b[0] > 0.0) & (b[4] > 0.0);
-    both::<EAGER>(ends_positive, || {
-        positive_within_3_halvings::<EAGER>(b, margin)
-    })
+pub(crate) fn proves_positive(gap: &Gap, end: f64) -> bool {
+    let (b, margin) = bernstein(gap, end);
+    positive_within_3_halvings(b, margin)
 }
 
-/// What a finer subdivision than [`proves_positive`]'s (up to [`ISOLATING_SPLITS`] halvings)
-/// shows of the window.
+/// What a subdivision down to [`ISOLATING_SPLITS`] halvings shows of a window.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Isolation {
     /// `g > 0` on the whole window.
@@ -61,23 +53,57 @@ pub(crate) enum Isolation {
     Unsettled,
 }
 
-/// The window `[0, end]` under a finer subdivision than [`proves_positive`]'s: positive
+/// The window `[0, end]` under a subdivision down to [`ISOLATING_SPLITS`] halvings: positive
 /// throughout, or its first crossing isolated, or neither.
+///
+/// Pieces are visited in time order, halving those not proven positive (even where `g` may
+/// cross zero at their end, to isolate the crossing), until one is open at the finest level,
+/// or starts at or below the margin.
 pub(crate) fn isolate_first_crossing(gap: &Gap, end: f64) -> Isolation {
-    let (b, margin) = bernstein(gap, end, ISOLATING_SPLITS);
-    match first_open(b, margin, (0.0, 1.0), ISOLATING_SPLITS) {
-        Piece::Proven => Isolation::Positive,
-        Piece::Open((start, stop), b) if one_sign_change(&b, margin) => {
-            Isolation::Crossing(start, stop)
+    let (b, margin) = bernstein(gap, end);
+    // Right halves still to visit, with their start and depth (at most one per level).
+    let mut later = [([0.0; 5], 0.0, 0); ISOLATING_SPLITS as usize];
+    let mut pending = 0;
+    let (mut b, mut start, mut depth) = (b, 0.0, 0);
+    loop {
+        if above(&b, margin) {
+            if pending == 0 {
+                return Isolation::Positive;
+            }
+            pending -= 1;
+            (b, start, depth) = later[pending];
+            continue;
         }
-        Piece::Open(..) => Isolation::Unsettled,
+        if depth == ISOLATING_SPLITS || b[0] <= margin {
+            // Exact: a power of two times a dyadic start.
+            let stop = start + 0.5f64.powi(depth as i32);
+            return if one_sign_change(&b, margin) {
+                Isolation::Crossing(start, stop)
+            } else {
+                Isolation::Unsettled
+            };
+        }
+        let (left, right) = halves(b);
+        depth += 1;
+        if let Some(slot) = later.get_mut(pending) {
+            *slot = (right, start + 0.5f64.powi(depth as i32), depth);
+            pending += 1;
+        }
+        b = left;
     }
 }
 
 /// The Bernstein coefficients of `g` on `[0, end]`, and the margin above their rounding errors
-/// and those of `splits` halvings.
+/// and those of [`ISOLATING_SPLITS`] halvings.
+///
+/// With `M` the sum of all components' magnitudes and the radius, `Σ|aᵢ| ≤ M²`, and every
+/// Bernstein coefficient of every piece is a combination with weights ≤ 1 of the `aᵢ`, so each
+/// stays below `M²` in magnitude. The coefficients' dot products err by `≤ 3ε·M²`, the powers
+/// `endⁱ` by `≤ 4ε·M²`, the basis change by `≤ 5ε·M²` (four additions and the rounded `1/6`),
+/// and each level of halving by `≤ 4ε·M²` (four rounds of averages): the margin
+/// `(16 + 4·ISOLATING_SPLITS)·ε·M²` is above it all.
 #[inline(always)]
-fn bernstein(gap: &Gap, end: f64, splits: u32) -> ([f64; 5], f64) {
+fn bernstein(gap: &Gap, end: f64) -> ([f64; 5], f64) {
     let [a4, a3, a2, a1, a0] = gap.quartic();
     let end2 = end * end;
     let (a1, a2, a3, a4) = (a1 * end, a2 * end2, a3 * (end2 * end), a4 * (end2 * end2));
@@ -93,31 +119,35 @@ fn bernstein(gap: &Gap, end: f64, splits: u32) -> ([f64; 5], f64) {
         + (gap.velocity.x.abs() + gap.velocity.y.abs())
         + (gap.acceleration.x.abs() + gap.acceleration.y.abs())
         + gap.radius;
-    (b, (16.0 + 4.0 * splits as f64) * f64::EPSILON * (m * m))
+    let margin = (16.0 + 4.0 * ISOLATING_SPLITS as f64) * f64::EPSILON * (m * m);
+    (b, margin)
 }
 
-/// A piece of the subdivision: proven positive, or open (its bounds and coefficients).
-enum Piece {
-    Proven,
-    Open((f64, f64), [f64; 5]),
-}
-
-/// The first open piece of `b` on `bounds`, halving up to `splits` times. Unlike
-/// [`positive_within_3_halvings`], it halves a piece whose end is below the margin too (where
-/// `g` may cross zero), to isolate the first crossing.
-fn first_open(b: [f64; 5], margin: f64, (lo, hi): (f64, f64), splits: u32) -> Piece {
-    if above(&b, margin) {
-        return Piece::Proven;
-    }
-    if splits == 0 || b[0] <= margin {
-        return Piece::Open((lo, hi), b);
-    }
+/// Whether the quartic with Bernstein coefficients `b` on an interval is above `margin` on it,
+/// by its coefficients or, where they do not show it, by those of its halves, recursively, up
+/// to three halvings. A piece whose end values (values of `g`) are not above the margin
+/// settles nothing further. Every piece is evaluated, without a branch.
+#[inline(always)]
+fn positive_within_3_halvings(b: [f64; 5], margin: f64) -> bool {
+    let settled = |b: &[f64; 5], halves_settled: bool| {
+        above(b, margin) | ((b[0] > margin) & (b[4] > margin) & halves_settled)
+    };
+    let level1 = |b: [f64; 5]| {
+        let (l, r) = halves(b);
+        settled(&b, above(&l, margin) & above(&r, margin))
+    };
+    let level2 = |b: [f64; 5]| {
+        let (l, r) = halves(b);
+        settled(&b, level1(l) & level1(r))
+    };
     let (l, r) = halves(b);
-    let mid = 0.5 * (lo + hi);
-    match first_open(l, margin, (lo, mid), splits - 1) {
-        Piece::Proven => first_open(r, margin, (mid, hi), splits - 1),
-        open => open,
-    }
+    settled(&b, level2(l) & level2(r))
+}
+
+/// Whether every coefficient of `b` is above `margin`.
+#[inline(always)]
+fn above(b: &[f64; 5], margin: f64) -> bool {
+    b.iter().fold(true, |all, &x| all & (x > margin))
 }
 
 /// Whether the coefficients go from above `margin` to below `−margin` exactly once, and are
@@ -130,52 +160,6 @@ fn one_sign_change(b: &[f64; 5], margin: f64) -> bool {
         .filter(|w| (w[0] > 0.0) != (w[1] > 0.0))
         .count();
     clear && b[0] > 0.0 && changes == 1
-}
-
-/// Whether the quartic with Bernstein coefficients `b` on an interval is above `margin` on it,
-/// by its coefficients or, where they do not show it, by those of its halves, recursively, up
-/// to [`SPLITS`] halvings. A piece whose end values (values of `g`) are below the margin
-/// settles nothing further.
-#[inline(always)]
-fn positive_within_3_halvings<const EAGER: bool>(b: [f64; 5], margin: f64) -> bool {
-    let level1 = |b: [f64; 5]| {
-        let (l, r) = halves(b);
-        settled::<EAGER>(&b, margin, || {
-            both::<EAGER>(above(&l, margin), || above(&r, margin))
-        })
-    };
-    let level2 = |b: [f64; 5]| {
-        let (l, r) = halves(b);
-        settled::<EAGER>(&b, margin, || both::<EAGER>(level1(l), || level1(r)))
-    };
-    let (l, r) = halves(b);
-    settled::<EAGER>(&b, margin, || both::<EAGER>(level2(l), || level2(r)))
-}
-
-/// Whether every coefficient of `b` is above `margin`.
-#[inline(always)]
-fn above(b: &[f64; 5], margin: f64) -> bool {
-    b.iter().fold(true, |all, &x| all & (x > margin))
-}
-
-/// Whether the piece `b` is settled: its coefficients are above `margin`, or its end values are
-/// and `halves` settles both its halves.
-#[inline(always)]
-fn settled<const EAGER: bool>(b: &[f64; 5], margin: f64, halves: impl FnOnce() -> bool) -> bool {
-    let ends_above = (b[0] > margin) & (b[4] > margin);
-    either::<EAGER>(above(b, margin), || both::<EAGER>(ends_above, halves))
-}
-
-/// `x ∧ y()`: always evaluating `y` when `EAGER` (no branch), only if needed otherwise.
-#[inline(always)]
-fn both<const EAGER: bool>(x: bool, y: impl FnOnce() -> bool) -> bool {
-    if EAGER { x & y() } else { x && y() }
-}
-
-/// `x ∨ y()`, as [`both`].
-#[inline(always)]
-fn either<const EAGER: bool>(x: bool, y: impl FnOnce() -> bool) -> bool {
-    if EAGER { x | y() } else { x || y() }
 }
 
 /// De Casteljau's subdivision at the midpoint: the Bernstein coefficients on each half.
@@ -210,7 +194,7 @@ mod tests {
 
     #[test]
     fn far_apart_and_receding_is_excluded() {
-        assert!(proves_positive::<false>(
+        assert!(proves_positive(
             &gap([5.0, 0.0], [1.0, 0.0], [-0.5, 0.0]),
             1.0
         ));
@@ -219,22 +203,22 @@ mod tests {
     #[test]
     fn contact_inside_the_window_is_never_excluded() {
         // Head-on: |d| = 3 − 4u reaches 1 at u = 0.5.
-        assert!(!proves_positive::<false>(
+        assert!(!proves_positive(
             &gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]),
             1.0
         ));
         // Grazing from above by 1e-15: within rounding, so not excluded either.
-        assert!(!proves_positive::<false>(
+        assert!(!proves_positive(
             &gap([-1.0, 1.0 + 1e-15], [2.0, 0.0], [0.0, 0.0]),
             1.0
         ));
         // Grazing from above by 1e-12: above rounding, and halving proves the miss.
-        assert!(proves_positive::<false>(
+        assert!(proves_positive(
             &gap([-1.0, 1.0 + 1e-12], [2.0, 0.0], [0.0, 0.0]),
             1.0
         ));
         // Contact just inside the window's end (|d| = 3 − 4u = 1 at u = 0.5).
-        assert!(!proves_positive::<false>(
+        assert!(!proves_positive(
             &gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]),
             0.5 + 1e-9
         ));
@@ -245,8 +229,8 @@ mod tests {
         // |d| = 3 − 4u reaches 1 at u = 0.5, after a window that ends at u = 0.4 (a ball
         // stops there: past it the formula is fictitious). [0, 1] could not be proven.
         let g = gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]);
-        assert!(proves_positive::<false>(&g, 0.4));
-        assert!(!proves_positive::<false>(&g, 1.0));
+        assert!(proves_positive(&g, 0.4));
+        assert!(!proves_positive(&g, 1.0));
     }
 
     #[test]
@@ -256,7 +240,7 @@ mod tests {
         let [a4, a3, a2, a1, a0] = g.quartic();
         let b2 = a0 + 0.5 * a1 + a2 / 6.0;
         assert!(b2 < 0.0 && a4 == 0.0 && a3 == 0.0); // not provable without halving
-        assert!(proves_positive::<false>(&g, 1.0));
+        assert!(proves_positive(&g, 1.0));
     }
 
     #[test]
@@ -285,7 +269,7 @@ mod tests {
         // Passing 3e-4 above the other ball (closest at u = 0.45): three halvings do not show
         // it, five do.
         let g = gap([-0.9, 1.0003], [2.0, 0.0], [0.0, 0.0]);
-        assert!(!proves_positive::<false>(&g, 1.0));
+        assert!(!proves_positive(&g, 1.0));
         assert_eq!(isolate_first_crossing(&g, 1.0), Isolation::Positive);
         // Passing 3e-4 inside: a crossing, but entry and exit are too close to isolate.
         let g = gap([-0.9, 0.9997], [2.0, 0.0], [0.0, 0.0]);

@@ -6,10 +6,10 @@
 //! negative, searched window by window:
 //!
 //! 1. time is scaled by a power of two to the window (exact), so each window is `[0, ≤ 1]`;
-//! 2. a Bernstein-basis test proves most windows contact-free at once (`exclusion`);
-//! 3. a finer subdivision proves most of the rest contact-free, or isolates the first
-//!    crossing on a piece where `g` has a single root, found there by bracketed Newton;
-//! 4. otherwise the critical points of `g` split the window into monotone pieces, and the
+//! 2. a Bernstein-basis subdivision proves most windows contact-free, or isolates the first
+//!    crossing on a piece where `g` has a single root, found there by bracketed Newton
+//!    (`exclusion`);
+//! 3. otherwise the critical points of `g` split the window into monotone pieces, and the
 //!    first piece that goes from positive to negative is solved by bracketed Newton.
 //!
 //! When exactly one ball is at rest the relative motion is a straight line and the gap a
@@ -227,11 +227,6 @@ fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearc
     };
     let scaled = gap.time_scaled(h);
     let end = length / h;
-    if exclusion::proves_positive::<false>(&scaled, end) {
-        return WindowSearch::NoEntry {
-            ends_positive: true,
-        };
-    }
     let found = isolated_entry(&scaled, end)
         .unwrap_or_else(|| first_entry(&scaled, end, previous_positive));
     match found {
