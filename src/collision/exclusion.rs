@@ -21,7 +21,7 @@ use crate::coefficients::Gap;
 
 /// How many times [`isolate_first_crossing`] may halve a window (its margin, shared with
 /// [`proves_positive`], covers the rounding of that many halvings).
-const ISOLATING_SPLITS: u32 = 5;
+const ISOLATING_SPLITS: u32 = 6;
 
 /// Whether `g(u) > 0` is proven for every `u ∈ [0, end]` (time already scaled so that
 /// `0 ≤ end ≤ 1`), by the Bernstein coefficients of the window or of its pieces down to three
@@ -61,7 +61,7 @@ pub(crate) enum Isolation {
 /// or starts at or below the margin.
 pub(crate) fn isolate_first_crossing(gap: &Gap, end: f64) -> Isolation {
     let (b, margin) = bernstein(gap, end);
-    // Right halves still to visit, with their start and depth (at most one per level).
+    // Right halves still to visit: coefficients, start and depth (at most one per level).
     let mut later = [([0.0; 5], 0.0, 0); ISOLATING_SPLITS as usize];
     let mut pending = 0;
     let (mut b, mut start, mut depth) = (b, 0.0, 0);
@@ -75,10 +75,8 @@ pub(crate) fn isolate_first_crossing(gap: &Gap, end: f64) -> Isolation {
             continue;
         }
         if depth == ISOLATING_SPLITS || b[0] <= margin {
-            // Exact: a power of two times a dyadic start.
-            let stop = start + 0.5f64.powi(depth as i32);
             return if one_sign_change(&b, margin) {
-                Isolation::Crossing(start, stop)
+                Isolation::Crossing(start, start + piece_width(depth))
             } else {
                 Isolation::Unsettled
             };
@@ -86,11 +84,16 @@ pub(crate) fn isolate_first_crossing(gap: &Gap, end: f64) -> Isolation {
         let (left, right) = halves(b);
         depth += 1;
         if let Some(slot) = later.get_mut(pending) {
-            *slot = (right, start + 0.5f64.powi(depth as i32), depth);
+            *slot = (right, start + piece_width(depth), depth);
             pending += 1;
         }
         b = left;
     }
+}
+
+/// `2^−depth`, the width of a piece `depth` halvings deep (exact: a power of two).
+fn piece_width(depth: u32) -> f64 {
+    f64::from_bits((1023 - u64::from(depth)) << 52)
 }
 
 /// The Bernstein coefficients of `g` on `[0, end]`, and the margin above their rounding errors
@@ -267,12 +270,13 @@ mod tests {
     #[test]
     fn a_finer_subdivision_proves_a_closer_miss() {
         // Passing 3e-4 above the other ball (closest at u = 0.45): three halvings do not show
-        // it, five do.
+        // it, six do.
         let g = gap([-0.9, 1.0003], [2.0, 0.0], [0.0, 0.0]);
         assert!(!proves_positive(&g, 1.0));
         assert_eq!(isolate_first_crossing(&g, 1.0), Isolation::Positive);
-        // Passing 3e-4 inside: a crossing, but entry and exit are too close to isolate.
-        let g = gap([-0.9, 0.9997], [2.0, 0.0], [0.0, 0.0]);
+        // Passing 1e-5 inside: a crossing, but entry and exit (5e-3 apart) are too close to
+        // isolate on pieces of 1/64.
+        let g = gap([-0.9, 0.99999], [2.0, 0.0], [0.0, 0.0]);
         assert_eq!(isolate_first_crossing(&g, 1.0), Isolation::Unsettled);
     }
 }
