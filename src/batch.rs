@@ -389,16 +389,13 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> ([f64; LANES], [bool; 
             } else {
                 ((pair.pos_a, pair.vel_a, pair.friction_a), pair.pos_b)
             };
-            // The mover's stop time as `Ball::new` forms it (|v| in the range where it is
-            // √(x² + y²), which the closed form requires anyway).
-            let tau = (v[0] * v[0] + v[1] * v[1]).sqrt() / mu;
             let g0 = gap_value(
                 pair.pos_a[0] - pair.pos_b[0],
                 pair.pos_a[1] - pair.pos_b[1],
                 pair.radius,
             );
             let (applies, t) =
-                straight::contact([p[0] - q[0], p[1] - q[1]], v, tau, pair.radius, g0);
+                straight::contact([p[0] - q[0], p[1] - q[1]], v, mu, pair.radius, g0);
             let t = if t < pair.t_max { t } else { f64::INFINITY };
             if open & applies {
                 *answer = t;

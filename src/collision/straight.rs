@@ -5,7 +5,7 @@
 //! covered (increasing until it stops at `τ`, where `σ = τ/2`). The gap is then a quadratic in
 //! `σ`, `G(σ) = |v|²σ² + 2(Δ·v)σ + |Δ|² − r²`, whose smaller root is the contact if it comes
 //! before the stop; `t` follows from `σ` in a form without cancellation. This replaces two
-//! root searches (critical point and entry) by three square roots and a few divisions.
+//! root searches (critical point and entry) by three square roots and two divisions.
 
 use crate::motion::Ball;
 
@@ -30,23 +30,17 @@ pub(crate) fn first_contact(
     };
     let delta = mover.position() - rest.position();
     let v = mover.velocity();
-    let (applies, t) = contact(
-        [delta.x, delta.y],
-        [v.x, v.y],
-        mover.stop_time(),
-        radius,
-        g0,
-    );
+    let (applies, t) = contact([delta.x, delta.y], [v.x, v.y], mover.friction(), radius, g0);
     applies.then_some((t < t_max).then_some(t))
 }
 
 /// The closed form proper, for a mover at `Δ` from the resting ball with velocity `v` and
-/// stop time `τ`: whether it applies, and the contact time (`∞` for none).
+/// friction `μ`: whether it applies, and the contact time (`∞` for none).
 ///
 /// Branch-free (choices are selects), so that the batch evaluates it lane-wise; the scalar
-/// [`first_contact`] calls the same function.
+/// [`first_contact`] calls the same function. Three square roots and two divisions.
 #[inline(always)]
-pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], tau: f64, radius: f64, g0: f64) -> (bool, f64) {
+pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], mu: f64, radius: f64, g0: f64) -> (bool, f64) {
     let [dx, dy] = delta;
     let [vx, vy] = v;
     let speed2 = vx * vx + vy * vy;
@@ -62,18 +56,21 @@ pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], tau: f64, radius: f64, g0: f
     let approach = dx * vx + dy * vy;
     // G's discriminant/4 = |v|²·(r² − h²) = (r|v| − |Δ×v|)(r|v| + |Δ×v|), h the line's
     // distance from the resting centre: ≤ 0 when the line passes outside or exactly tangent.
-    let reach = radius * speed2.sqrt();
+    let speed = speed2.sqrt();
+    let reach = radius * speed;
     let cross = (dx * vy - dy * vx).abs();
     let disc = (reach - cross) * (reach + cross);
     let meets = (approach < 0.0) & (disc > 0.0);
-    // Smaller root, without cancellation (approach < 0): g0 / (√disc − approach).
-    let sigma = g0 / (disc.max(0.0).sqrt() - approach);
-    // Before the stop, where σ reaches τ/2 (never without friction).
-    let before_stop = 2.0 * sigma < tau;
-    // σ = t − t²/(2τ)  ⇒  t = 2σ / (1 + √(1 − 2σ/τ))  (= σ without friction).
-    let t = 2.0 * sigma / (1.0 + (1.0 - 2.0 * sigma / tau).max(0.0).sqrt());
-    // A contact whose σ or t overflowed is left to the general search.
-    let settled = !meets | (sigma.is_finite() & (!before_stop | t.is_finite()));
+    // The smaller root, without cancellation (approach < 0): σ = g0/D.
+    let d = disc.max(0.0).sqrt() - approach;
+    // u = 2σ/τ = 2σμ/|v|, the share of its stopping distance the mover has covered at the
+    // contact: below 1 if it comes before the stop (always, without friction).
+    let u = (2.0 * g0 * mu) / (d * speed);
+    let before_stop = u < 1.0;
+    // σ = t − t²/(2τ)  ⇒  t = 2σ / (1 + √(1 − u))  (= σ without friction).
+    let t = (2.0 * g0) / (d * (1.0 + (1.0 - u).max(0.0).sqrt()));
+    // A contact whose time overflowed is left to the general search.
+    let settled = !meets | !before_stop | t.is_finite();
     let hit = meets & before_stop;
     (plain & settled, if hit { t } else { f64::INFINITY })
 }
