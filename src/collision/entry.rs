@@ -1,6 +1,6 @@
 //! The first entry (+ → − sign change of the gap) on one time window.
 
-use super::exclusion::{Isolation, isolate_first_crossing};
+use super::exclusion::{OpenPieces, Shape};
 use crate::coefficients::Gap;
 use crate::poly::{bracketed_newton, solve_quadratic};
 
@@ -96,31 +96,61 @@ pub(crate) fn first_entry(gap: &Gap, end: f64, previous_positive: bool) -> Windo
     }
 }
 
-/// The window `[0, end]` settled by a finer Bernstein subdivision
-/// ([`isolate_first_crossing`]), without the critical points: proven positive, or its first
-/// crossing isolated on a piece holding exactly one root, found there. `None` leaves the window
-/// to [`first_entry`]. On random pairs this settles most contacts and near misses at about
-/// half the cost.
-pub(crate) fn isolated_entry(gap: &Gap, end: f64) -> Option<WindowSearch> {
-    match isolate_first_crossing(gap, end) {
-        Isolation::Positive => Some(WindowSearch::NoEntry {
-            ends_positive: true,
-        }),
-        Isolation::Crossing(start, stop) => {
-            let (left, right) = (end * start, end * stop);
-            let (g_left, g_right) = (gap.value(left), gap.value(right));
-            // The accurate values must confirm the bracket that the coefficients promise.
-            (g_left > 0.0 && g_right < 0.0).then(|| {
-                WindowSearch::Entry(entry_root(
-                    gap,
-                    (left, right),
-                    (g_left, g_right),
-                    gap.value_noise(),
-                ))
-            })
+/// The window `[0, end]` settled piece by piece ([`OpenPieces`]), without the critical points
+/// of the whole window: the pieces proven positive need nothing; the first open piece with a
+/// single root holds the entry; an open piece with a single minimum holds the entry if `g` is
+/// negative there (found between the piece's start and the minimum), and none otherwise.
+/// `None` leaves the window to [`first_entry`]: a piece of another shape, or values that do not
+/// confirm what the coefficients promise.
+///
+/// On random pairs this settles nearly all contacts and near misses at about half the cost of
+/// [`first_entry`].
+pub(crate) fn piecewise_entry(gap: &Gap, end: f64) -> Option<WindowSearch> {
+    let noise = gap.value_noise();
+    for piece in OpenPieces::new(gap, end) {
+        let (left, right) = (end * piece.start, end * piece.stop);
+        let g_left = gap.value(left);
+        if g_left <= 0.0 {
+            return None;
         }
-        Isolation::Unsettled => None,
+        match piece.shape {
+            Shape::OneRoot => {
+                let g_right = gap.value(right);
+                return (g_right < 0.0).then(|| {
+                    WindowSearch::Entry(entry_root(gap, (left, right), (g_left, g_right), noise))
+                });
+            }
+            Shape::OneDip => {
+                let (slope_left, slope_right) = (gap.half_slope(left), gap.half_slope(right));
+                if !(slope_left < 0.0 && slope_right > 0.0) {
+                    return None;
+                }
+                let lowest = bracketed_newton(
+                    |u| (gap.half_slope(u), gap.half_curvature(u)),
+                    left,
+                    right,
+                    slope_left,
+                    slope_right,
+                    // The slope is nearly linear on a small piece: start from its secant root.
+                    left + (right - left) * (slope_left / (slope_left - slope_right)),
+                    gap.half_slope_noise(),
+                );
+                let g_lowest = gap.value(lowest);
+                if g_lowest < 0.0 {
+                    return Some(WindowSearch::Entry(entry_root(
+                        gap,
+                        (left, lowest),
+                        (g_left, g_lowest),
+                        noise,
+                    )));
+                }
+            }
+            Shape::Other => return None,
+        }
     }
+    Some(WindowSearch::NoEntry {
+        ends_positive: gap.value(end) > 0.0,
+    })
 }
 
 /// The root of `g` in `(left, right)`, where `g(left) > 0 > g(right)` and `g` is monotone.
@@ -155,4 +185,59 @@ fn entry_root(
         start,
         noise,
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector2;
+
+    fn gap(offset: [f64; 2], velocity: [f64; 2]) -> Gap {
+        Gap {
+            offset: Vector2::from(offset),
+            velocity: Vector2::from(velocity),
+            acceleration: Vector2::zeros(),
+            radius: 1.0,
+        }
+    }
+
+    #[test]
+    fn a_dip_is_settled_on_its_piece_as_the_whole_window_search_does() {
+        // Passing 1e-7 above the other ball: no entry; 1e-4 below: an entry just before the
+        // closest approach (u = 0.45), where |d|² = 1 first: (2u − 0.9)² = 1 − 0.9999²·…
+        for (y, entry) in [
+            (1.0000001, None),
+            (0.9999, Some(0.45 - (1.0 - 0.9999f64 * 0.9999).sqrt() / 2.0)),
+        ] {
+            let g = gap([-0.9, y], [2.0, 0.0]);
+            let piecewise = piecewise_entry(&g, 1.0);
+            let whole = first_entry(&g, 1.0, true);
+            match entry {
+                None => {
+                    assert_eq!(
+                        piecewise,
+                        Some(WindowSearch::NoEntry {
+                            ends_positive: true
+                        })
+                    );
+                    assert_eq!(
+                        whole,
+                        WindowSearch::NoEntry {
+                            ends_positive: true
+                        }
+                    );
+                }
+                Some(u) => {
+                    let (Some(WindowSearch::Entry(a)), WindowSearch::Entry(b)) = (piecewise, whole)
+                    else {
+                        panic!("{piecewise:?} {whole:?}")
+                    };
+                    assert!(
+                        (a - u).abs() < 1e-15 && (b - u).abs() < 1e-15,
+                        "{a} {b} {u}"
+                    );
+                }
+            }
+        }
+    }
 }

@@ -12,14 +12,14 @@
 //! ball round, and that fictitious return would often spoil the proof. Where the first test
 //! fails, the window is halved (de Casteljau, exact halvings and one rounding per average),
 //! which tightens the bounds quadratically around a near miss: three times at most in the
-//! batch's lane-wise test ([`proves_positive`]), five in the search
-//! ([`isolate_first_crossing`]), which also stops at the first piece, in time, that is not
-//! positive: where its coefficients change sign once, it holds the first crossing, and nothing
-//! else.
+//! batch's lane-wise test ([`proves_positive`]), six in the search ([`OpenPieces`]), which
+//! lists the pieces, in time order, that it cannot prove positive, with what their
+//! coefficients show: a single root (the first crossing, if it is the first such piece), or a
+//! single minimum (a near miss or a grazing contact, settled there by the search).
 
 use crate::coefficients::Gap;
 
-/// How many times [`isolate_first_crossing`] may halve a window (its margin, shared with
+/// How many times [`OpenPieces`] may halve a window (its margin, shared with
 /// [`proves_positive`], covers the rounding of that many halvings).
 const ISOLATING_SPLITS: u32 = 6;
 
@@ -30,7 +30,7 @@ const ISOLATING_SPLITS: u32 = 6;
 /// `false` means "not proven", not "there is a root".
 ///
 /// Branch-free (every piece is evaluated), so that a batch runs it lane-wise over many
-/// windows. The search itself runs [`isolate_first_crossing`], which takes the same
+/// windows. The search itself runs [`OpenPieces`], which takes the same
 /// coefficients and margin and subdivides further: every window proven here, it proves too,
 /// so a pair that the batch settles with this test is one the search answers the same way.
 #[inline(always)]
@@ -39,55 +39,116 @@ pub(crate) fn proves_positive(gap: &Gap, end: f64) -> bool {
     positive_within_3_halvings(b, margin)
 }
 
-/// What a subdivision down to [`ISOLATING_SPLITS`] halvings shows of a window.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Isolation {
-    /// `g > 0` on the whole window.
-    Positive,
-    /// The first piece, in time, that is not proven positive has exactly one root of `g`,
-    /// robustly: its Bernstein coefficients are positive, then negative, none within the margin
-    /// of zero. Earlier pieces being positive, that root is the window's first crossing; the
-    /// piece brackets it (`start`, `end` as fractions of the window).
-    Crossing(f64, f64),
-    /// Neither: a near miss, an entry and an exit close together, ...
-    Unsettled,
+/// The pieces of a window that a subdivision down to [`ISOLATING_SPLITS`] halvings leaves
+/// open (not proven positive), in time order: an iterator.
+///
+/// Pieces not proven positive are halved (even where `g` may cross zero at their end, to
+/// isolate the crossing) until their shape is plain (a single root or a single minimum), or
+/// they are at the finest level, or start at or below the margin; those are the open pieces.
+/// Everything between them is proven positive.
+pub(crate) struct OpenPieces {
+    margin: f64,
+    /// Pieces still to visit, the next on top: coefficients, start and depth (at most one per
+    /// level, plus the one being halved).
+    stack: [([f64; 5], f64, u32); ISOLATING_SPLITS as usize + 1],
+    pending: usize,
 }
 
-/// The window `[0, end]` under a subdivision down to [`ISOLATING_SPLITS`] halvings: positive
-/// throughout, or its first crossing isolated, or neither.
-///
-/// Pieces are visited in time order, halving those not proven positive (even where `g` may
-/// cross zero at their end, to isolate the crossing), until one is open at the finest level,
-/// or starts at or below the margin.
-pub(crate) fn isolate_first_crossing(gap: &Gap, end: f64) -> Isolation {
-    let (b, margin) = bernstein(gap, end);
-    // Right halves still to visit: coefficients, start and depth (at most one per level).
-    let mut later = [([0.0; 5], 0.0, 0); ISOLATING_SPLITS as usize];
-    let mut pending = 0;
-    let (mut b, mut start, mut depth) = (b, 0.0, 0);
-    loop {
-        if above(&b, margin) {
-            if pending == 0 {
-                return Isolation::Positive;
+/// An open piece of a window: where it lies (fractions of the window) and what `g` does there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct OpenPiece {
+    /// Start, as a fraction of the window.
+    pub start: f64,
+    /// End, as a fraction of the window.
+    pub stop: f64,
+    /// The shape of `g` on it.
+    pub shape: Shape,
+}
+
+/// What the Bernstein coefficients of `g` on a piece show, robustly (no coefficient, nor
+/// difference of two, within the rounding margin of zero).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Shape {
+    /// From positive to negative, with exactly one root (one sign change among the
+    /// coefficients: Descartes' rule of signs for the Bernstein basis).
+    OneRoot,
+    /// Positive at the start, falling then rising, with exactly one critical point, a minimum
+    /// (one sign change, − to +, among the differences of the coefficients, which are those of
+    /// `g′`): a near miss, a grazing contact, or an entry and an exit close together.
+    OneDip,
+    /// Anything else.
+    Other,
+}
+
+impl OpenPieces {
+    /// The open pieces of `g` on `[0, end]` (time scaled so that `end ≤ 1`).
+    pub(crate) fn new(gap: &Gap, end: f64) -> Self {
+        let (b, margin) = bernstein(gap, end);
+        let mut stack = [([0.0; 5], 0.0, 0); ISOLATING_SPLITS as usize + 1];
+        stack[0] = (b, 0.0, 0);
+        Self {
+            margin,
+            stack,
+            pending: 1,
+        }
+    }
+}
+
+impl Iterator for OpenPieces {
+    type Item = OpenPiece;
+
+    fn next(&mut self) -> Option<OpenPiece> {
+        let margin = self.margin;
+        while self.pending > 0 {
+            self.pending -= 1;
+            let (b, start, depth) = self.stack[self.pending];
+            if above(&b, margin) {
+                continue;
             }
-            pending -= 1;
-            (b, start, depth) = later[pending];
-            continue;
+            // A piece whose shape is plain already needs no halving.
+            let shape = shape(&b, margin);
+            if shape != Shape::Other || depth == ISOLATING_SPLITS || b[0] <= margin {
+                return Some(OpenPiece {
+                    start,
+                    stop: start + piece_width(depth),
+                    shape,
+                });
+            }
+            let (left, right) = halves(b);
+            let depth = depth + 1;
+            // The right half under the left one, so that the left is visited first (the stack
+            // holds one piece per level and the one being halved: there is always room).
+            if self.pending + 2 <= self.stack.len() {
+                self.stack[self.pending] = (right, start + piece_width(depth), depth);
+                self.stack[self.pending + 1] = (left, start, depth);
+                self.pending += 2;
+            }
         }
-        if depth == ISOLATING_SPLITS || b[0] <= margin {
-            return if one_sign_change(&b, margin) {
-                Isolation::Crossing(start, start + piece_width(depth))
-            } else {
-                Isolation::Unsettled
-            };
-        }
-        let (left, right) = halves(b);
-        depth += 1;
-        if let Some(slot) = later.get_mut(pending) {
-            *slot = (right, start + piece_width(depth), depth);
-            pending += 1;
-        }
-        b = left;
+        None
+    }
+}
+
+/// The shape of `g` on a piece with Bernstein coefficients `b`.
+fn shape(b: &[f64; 5], margin: f64) -> Shape {
+    let clear = b.iter().all(|&x| x.abs() > margin);
+    let changes = b
+        .windows(2)
+        .filter(|w| (w[0] > 0.0) != (w[1] > 0.0))
+        .count();
+    if clear && b[0] > 0.0 && changes == 1 {
+        return Shape::OneRoot;
+    }
+    // The differences carry the errors of two coefficients.
+    let slopes = [b[1] - b[0], b[2] - b[1], b[3] - b[2], b[4] - b[3]];
+    let steep = slopes.iter().all(|&x| x.abs() > 2.0 * margin);
+    let turns = slopes
+        .windows(2)
+        .filter(|w| (w[0] > 0.0) != (w[1] > 0.0))
+        .count();
+    if b[0] > margin && steep && slopes[0] < 0.0 && turns == 1 {
+        Shape::OneDip
+    } else {
+        Shape::Other
     }
 }
 
@@ -151,18 +212,6 @@ fn positive_within_3_halvings(b: [f64; 5], margin: f64) -> bool {
 #[inline(always)]
 fn above(b: &[f64; 5], margin: f64) -> bool {
     b.iter().fold(true, |all, &x| all & (x > margin))
-}
-
-/// Whether the coefficients go from above `margin` to below `−margin` exactly once, and are
-/// never within `margin` of zero: by Descartes' rule of signs for the Bernstein basis the
-/// polynomial then has exactly one root on the piece.
-fn one_sign_change(b: &[f64; 5], margin: f64) -> bool {
-    let clear = b.iter().all(|&x| x.abs() > margin);
-    let changes = b
-        .windows(2)
-        .filter(|w| (w[0] > 0.0) != (w[1] > 0.0))
-        .count();
-    clear && b[0] > 0.0 && changes == 1
 }
 
 /// De Casteljau's subdivision at the midpoint: the Bernstein coefficients on each half.
@@ -248,35 +297,47 @@ mod tests {
 
     #[test]
     fn the_first_crossing_is_isolated_on_a_piece_that_brackets_it() {
-        // Head-on: |d| = 3.3 − 4u reaches 1 at u = 0.575 (entry), and leaves after the window.
+        // Head-on: |d| = 3.3 − 4u reaches 1 at u = 0.575 (entry), and leaves after the window:
+        // a single root on the whole window.
         let g = gap([3.3, 0.0], [-4.0, 0.0], [0.0, 0.0]);
-        let Isolation::Crossing(start, stop) = isolate_first_crossing(&g, 1.0) else {
-            panic!("not isolated: {:?}", isolate_first_crossing(&g, 1.0))
+        let first = OpenPieces::new(&g, 1.0).next();
+        let Some(OpenPiece {
+            start,
+            stop,
+            shape: Shape::OneRoot,
+        }) = first
+        else {
+            panic!("not isolated: {first:?}")
         };
+        assert!(start < 0.575 && 0.575 < stop, "{start} {stop}");
+        // With |d| = 2.9 − 4u the balls enter at u = 0.475 and leave at u = 0.975: the window
+        // shows a single minimum (at 0.725), which the search resolves.
+        let g = gap([2.9, 0.0], [-4.0, 0.0], [0.0, 0.0]);
+        let pieces: Vec<_> = OpenPieces::new(&g, 1.0).collect();
+        assert_eq!(pieces.len(), 1, "{pieces:?}");
+        assert_eq!(pieces[0].shape, Shape::OneDip);
         assert!(
-            start < 0.575 && 0.575 < stop && stop - start <= 0.25,
-            "{start} {stop}"
+            pieces[0].start < 0.725 && 0.725 < pieces[0].stop,
+            "{pieces:?}"
         );
-        // Within a window ending at u = 0.75, still the same root.
-        let Isolation::Crossing(start, stop) = isolate_first_crossing(&g, 0.75) else {
-            panic!("not isolated")
-        };
-        assert!(start * 0.75 < 0.575 && 0.575 < stop * 0.75);
-        // A root right on a piece's end (u = 0.5) is left to the general search.
-        let g = gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]);
-        assert_eq!(isolate_first_crossing(&g, 1.0), Isolation::Unsettled);
     }
 
     #[test]
-    fn a_finer_subdivision_proves_a_closer_miss() {
-        // Passing 3e-4 above the other ball (closest at u = 0.45): three halvings do not show
-        // it, six do.
-        let g = gap([-0.9, 1.0003], [2.0, 0.0], [0.0, 0.0]);
-        assert!(!proves_positive(&g, 1.0));
-        assert_eq!(isolate_first_crossing(&g, 1.0), Isolation::Positive);
-        // Passing 1e-5 inside: a crossing, but entry and exit (5e-3 apart) are too close to
-        // isolate on pieces of 1/64.
-        let g = gap([-0.9, 0.99999], [2.0, 0.0], [0.0, 0.0]);
-        assert_eq!(isolate_first_crossing(&g, 1.0), Isolation::Unsettled);
+    fn a_near_miss_shows_as_a_single_dip() {
+        // Passing 1e-7 above or below the other ball (closest at u = 0.45): too close for the
+        // coefficients to decide; the piece around it shows a single minimum, which the search
+        // settles. Three halvings prove nothing either way.
+        for y in [1.0000001, 0.9999999] {
+            let g = gap([-0.9, y], [2.0, 0.0], [0.0, 0.0]);
+            assert!(!proves_positive(&g, 1.0));
+            let pieces: Vec<_> = OpenPieces::new(&g, 1.0).collect();
+            assert_eq!(pieces.len(), 1, "{pieces:?}");
+            assert_eq!(pieces[0].shape, Shape::OneDip);
+            assert!(pieces[0].start < 0.45 && 0.45 < pieces[0].stop);
+        }
+        // Passing 0.2 above: a miss the coefficients show at once.
+        let g = gap([-0.9, 1.2], [2.0, 0.0], [0.0, 0.0]);
+        assert!(proves_positive(&g, 1.0));
+        assert_eq!(OpenPieces::new(&g, 1.0).next(), None);
     }
 }

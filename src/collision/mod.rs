@@ -6,9 +6,10 @@
 //! negative, searched window by window:
 //!
 //! 1. time is scaled by a power of two to the window (exact), so each window is `[0, ≤ 1]`;
-//! 2. a Bernstein-basis subdivision proves most windows contact-free, or isolates the first
-//!    crossing on a piece where `g` has a single root, found there by bracketed Newton
-//!    (`exclusion`);
+//! 2. a Bernstein-basis subdivision (`exclusion`) proves most of the window contact-free, and
+//!    shows the shape of `g` on the pieces it cannot: on the first piece with a single root,
+//!    the entry is found by bracketed Newton; on a piece with a single minimum, by bracketed
+//!    Newton for the minimum, then for the entry if `g` is negative there;
 //! 3. otherwise the critical points of `g` split the window into monotone pieces, and the
 //!    first piece that goes from positive to negative is solved by bracketed Newton.
 //!
@@ -39,7 +40,7 @@ use crate::coefficients::Gap;
 use crate::error::{InputError, check_horizon, check_radius};
 use crate::motion::Ball;
 use crate::poly::scaling::{exponent, pow2};
-use entry::{WindowSearch, first_entry, isolated_entry};
+use entry::{WindowSearch, first_entry, piecewise_entry};
 
 /// Options of a collision query ([`collision_time_with`]).
 ///
@@ -227,7 +228,7 @@ fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearc
     };
     let scaled = gap.time_scaled(h);
     let end = length / h;
-    let found = isolated_entry(&scaled, end)
+    let found = piecewise_entry(&scaled, end)
         .unwrap_or_else(|| first_entry(&scaled, end, previous_positive));
     match found {
         WindowSearch::Entry(u) => WindowSearch::Entry(u * h),
