@@ -26,12 +26,10 @@ pub(crate) fn critical_points(gap: &Gap, end: f64, noise: f64) -> ([f64; 3], usi
     for right in inner.chain(std::iter::once(end)) {
         let slope_right = gap.half_slope(right);
         if (slope_left < 0.0 && slope_right > 0.0) || (slope_left > 0.0 && slope_right < 0.0) {
-            let x = bracketed_newton(
-                |u| (gap.half_slope(u), gap.half_curvature(u)),
-                left,
-                right,
-                slope_left,
-                slope_right,
+            let x = slope_root(
+                gap,
+                (left, right),
+                (slope_left, slope_right),
                 0.5 * (left + right),
                 noise,
             );
@@ -47,6 +45,26 @@ pub(crate) fn critical_points(gap: &Gap, end: f64, noise: f64) -> ([f64; 3], usi
         slope_left = slope_right;
     }
     (out, count)
+}
+
+/// A critical point of `g` (a root of `½g′ = d·d′`) in `(left, right)`, where the slope changes
+/// sign, by bracketed Newton from `start`; below `noise` the slope's sign is rounding.
+fn slope_root(
+    gap: &Gap,
+    (left, right): (f64, f64),
+    (slope_left, slope_right): (f64, f64),
+    start: f64,
+    noise: f64,
+) -> f64 {
+    bracketed_newton(
+        |u| (gap.half_slope(u), gap.half_curvature(u)),
+        left,
+        right,
+        slope_left,
+        slope_right,
+        start,
+        noise,
+    )
 }
 
 /// The outcome of searching one window.
@@ -125,12 +143,10 @@ pub(crate) fn piecewise_entry(gap: &Gap, end: f64) -> Option<WindowSearch> {
                 if !(slope_left < 0.0 && slope_right > 0.0) {
                     return None;
                 }
-                let lowest = bracketed_newton(
-                    |u| (gap.half_slope(u), gap.half_curvature(u)),
-                    left,
-                    right,
-                    slope_left,
-                    slope_right,
+                let lowest = slope_root(
+                    gap,
+                    (left, right),
+                    (slope_left, slope_right),
                     // The slope is nearly linear on a small piece: start from its secant root.
                     left + (right - left) * (slope_left / (slope_left - slope_right)),
                     gap.half_slope_noise(),
