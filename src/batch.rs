@@ -364,20 +364,32 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> ([f64; LANES], [bool; 
     let mut answers = [f64::NAN; LANES];
     let mut open = [false; LANES];
     let mut crossing = [false; LANES];
-    for (k, ((answer, open), crossing)) in answers
-        .iter_mut()
-        .zip(&mut open)
-        .zip(&mut crossing)
-        .enumerate()
-    {
-        let pair = lane(k);
-        let valid = valid(&pair) & (k < len);
-        let apart = valid & never_touch(&pair);
-        *answer = if apart { f64::INFINITY } else { f64::NAN };
-        // Left for the closed form: valid, not apart, exactly one ball at rest.
-        *open = valid & !apart & (rests(pair.vel_a) != rests(pair.vel_b));
-        // Left for the timing test: valid, not apart, both moving.
-        *crossing = valid & !apart & !rests(pair.vel_a) & !rests(pair.vel_b);
+    // A block where every pair has one ball at rest (a cue ball against the others, say)
+    // goes to the closed form alone, which settles misses as well as the screening does.
+    let mut one_at_rest = [false; LANES];
+    for (k, one) in one_at_rest.iter_mut().enumerate() {
+        *one = rests(vel_a[k]) != rests(vel_b[k]);
+    }
+    if one_at_rest.iter().all(|&x| x) {
+        for (k, open) in open.iter_mut().enumerate() {
+            *open = valid(&lane(k)) & (k < len);
+        }
+    } else {
+        for (k, ((answer, open), crossing)) in answers
+            .iter_mut()
+            .zip(&mut open)
+            .zip(&mut crossing)
+            .enumerate()
+        {
+            let pair = lane(k);
+            let valid = valid(&pair) & (k < len);
+            let apart = valid & never_touch(&pair);
+            *answer = if apart { f64::INFINITY } else { f64::NAN };
+            // Left for the closed form: valid, not apart, exactly one ball at rest.
+            *open = valid & !apart & one_at_rest[k];
+            // Left for the timing test: valid, not apart, both moving.
+            *crossing = valid & !apart & !rests(pair.vel_a) & !rests(pair.vel_b);
+        }
     }
     // Most blocks of moving balls have none: skip the closed form's roots and divisions.
     if open.iter().any(|&x| x) {
