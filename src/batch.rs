@@ -145,8 +145,9 @@ pub fn collision_times(
     })
 }
 
-/// Pairs screened together by the whole-trajectory test ([`never_touch`]): a block fills a
-/// few vector registers per input, and the compiler turns the block loop into vector code.
+/// Pairs tested together by the lane-wise tests ([`never_touch`], [`straight::contact`],
+/// [`never_meet`]): a block fills a vector register or two per input, and the compiler turns
+/// the block loops into vector code.
 const LANES: usize = 8;
 
 /// The collision times of pairs `offset..offset + out.len()`.
@@ -332,7 +333,8 @@ fn search(pairs: &Pairs<'_>, i: usize) -> Result<f64, InputError> {
 /// The answers that need no search, lane-wise, for pairs `start..start + len`
 /// (`len ≤ LANES`): `∞` for pairs proven apart ([`never_touch`]), the closed form's time (or
 /// `∞`) where one ball is at rest ([`straight::contact`]), and NaN for the rest (and for lanes
-/// past `len`), which the scalar search answers.
+/// past `len`); with them, which of the rest are valid moving pairs, for the timing test
+/// ([`never_meet`]). Whatever is left goes to the scalar search.
 ///
 /// Each input is first copied as a whole block (a few vector moves, and no narrow stores
 /// that wide loads would then stall on), so that the arithmetic runs on whole vectors. The
