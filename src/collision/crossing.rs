@@ -41,18 +41,8 @@ pub(crate) fn never_meet(pair: &PairInput) -> bool {
         & plain(square_b)
         & plain(mu_a)
         & plain(mu_b)
-        & plain(
-            pair.pos_a[0]
-                .abs()
-                .max(pair.pos_a[1].abs())
-                .max(1.0 / LIMIT),
-        )
-        & plain(
-            pair.pos_b[0]
-                .abs()
-                .max(pair.pos_b[1].abs())
-                .max(1.0 / LIMIT),
-        )
+        & (pair.pos_a[0].abs().max(pair.pos_a[1].abs()) <= LIMIT)
+        & (pair.pos_b[0].abs().max(pair.pos_b[1].abs()) <= LIMIT)
         & plain(radius);
 
     // The first window, [0, min(τ_A, τ_B, t_max)], as `first_contact` builds and scales it.
