@@ -54,12 +54,12 @@ pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], mu: f64, radius: f64, g0: f6
     // G = |v|²σ² + 2(Δ·v)σ + g0: no unit vector (and its roundings) is needed.
     // G′(0)/2 = Δ·v: not approaching (G convex) means no contact ever.
     let approach = dx * vx + dy * vy;
-    // G's discriminant/4 = |v|²·(r² − h²) = (r|v| − |Δ×v|)(r|v| + |Δ×v|), h the line's
-    // distance from the resting centre: ≤ 0 when the line passes outside or exactly tangent.
+    // G's discriminant/4 = |v|²·(r² − h²) = (r|v|)² − |Δ×v|², h the line's distance from
+    // the resting centre: ≤ 0 when the line passes outside or exactly tangent. Formed without
+    // |v| (the difference fused), so that its square root need not wait for |v|'s.
+    let cross = dx * vy - dy * vx;
+    let disc = (radius * radius).mul_add(speed2, -cross * cross);
     let speed = speed2.sqrt();
-    let reach = radius * speed;
-    let cross = (dx * vy - dy * vx).abs();
-    let disc = (reach - cross) * (reach + cross);
     let meets = (approach < 0.0) & (disc > 0.0);
     // The smaller root, without cancellation (approach < 0): σ = g0/D.
     let d = disc.max(0.0).sqrt() - approach;
