@@ -14,8 +14,9 @@ use rayon::prelude::*;
 use rayon::{ThreadPool, ThreadPoolBuilder};
 
 use crate::coefficients::gap_value;
-use crate::collision::crossing::never_meet;
-use crate::collision::first_contact;
+use crate::collision::crossing::apart_by_window;
+use crate::collision::first_contact_given;
+use crate::collision::moving_entry::{WhileMoving, while_moving};
 use crate::collision::prefilter::{PairInput, never_touch, valid};
 use crate::collision::straight;
 use crate::error::{
@@ -146,7 +147,7 @@ pub fn collision_times(
 }
 
 /// Pairs tested together by the lane-wise tests ([`never_touch`], [`straight::contact`],
-/// [`never_meet`]): a block fills a vector register or two per input, and the compiler turns
+/// [`apart_by_window`], [`while_moving`]): a block fills a vector register or two per input, and the compiler turns
 /// the block loops into vector code.
 const LANES: usize = 8;
 
@@ -226,8 +227,9 @@ unsafe fn solve_chunk_avx512(
 }
 
 /// Screens blocks of [`LANES`] pairs ([`screen`]); the moving pairs it leaves open are
-/// gathered into blocks of their own for the timing test ([`never_meet`]), and whatever is
-/// still open goes to the full validated search. Invalid pairs reach the search as soon as
+/// gathered into blocks of their own for the timing test ([`apart_by_window`]) and the
+/// first window's plain contacts ([`while_moving`]), and whatever is still open goes to the
+/// full validated search. Invalid pairs reach the search as soon as
 /// they are met, so the first error found is the lowest index's (the pairs held back are
 /// valid: they cannot fail).
 #[inline(always)]
@@ -249,7 +251,7 @@ fn solve_chunk_portable(
                 }
             } else {
                 out[start + k] = if answers[k].is_nan() {
-                    search(pairs, i)?
+                    search(pairs, i, None)?
                 } else {
                     answers[k]
                 };
@@ -292,15 +294,38 @@ impl Held {
         for (lane, &i) in lanes.iter_mut().zip(held) {
             *lane = input(pairs, i);
         }
-        let mut apart = [false; LANES];
+        let mut apart = [(false, false); LANES];
         for (apart, lane) in apart.iter_mut().zip(&lanes) {
-            *apart = never_meet(lane);
+            *apart = apart_by_window(lane);
         }
-        for (&i, &apart) in held.iter().zip(&apart) {
-            out[i - offset] = if apart {
-                f64::INFINITY
+        let mut moving = [None; LANES];
+        // Most blocks hold a pair that may touch: the first window is settled lane-wise
+        // where it is plain.
+        if apart[..held.len()]
+            .iter()
+            .any(|&(first, second)| !(first & second))
+        {
+            let mut entry = [f64::NAN; LANES];
+            let mut no_entry = [false; LANES];
+            for ((entry, no_entry), lane) in entry.iter_mut().zip(&mut no_entry).zip(&lanes) {
+                let m = while_moving(lane);
+                (*entry, *no_entry) = (m.entry, m.no_entry);
+            }
+            for ((moving, &entry), &no_entry) in moving.iter_mut().zip(&entry).zip(&no_entry) {
+                *moving = Some(WhileMoving { entry, no_entry });
+            }
+        }
+        for ((&i, &(first, second)), &moving) in held.iter().zip(&apart).zip(&moving) {
+            let answer = match moving {
+                _ if first & second => f64::INFINITY,
+                Some(m) if !m.entry.is_nan() => m.entry,
+                Some(m) if m.no_entry & second => f64::INFINITY,
+                _ => f64::NAN,
+            };
+            out[i - offset] = if answer.is_nan() {
+                search(pairs, i, moving)?
             } else {
-                search(pairs, i)?
+                answer
             };
         }
         self.len = 0;
@@ -323,9 +348,10 @@ fn input(pairs: &Pairs<'_>, i: usize) -> PairInput {
     }
 }
 
-/// Pair `i`'s collision time by the full search (`∞` for none), or its input error.
-fn search(pairs: &Pairs<'_>, i: usize) -> Result<f64, InputError> {
-    Ok(pair_time(pairs, i)
+/// Pair `i`'s collision time by the full search (`∞` for none), or its input error; `moving`
+/// is what [`while_moving`] found for it, if the lanes ran it.
+fn search(pairs: &Pairs<'_>, i: usize, moving: Option<WhileMoving>) -> Result<f64, InputError> {
+    Ok(pair_time(pairs, i, moving)
         .map_err(|e| e.at(i))?
         .unwrap_or(f64::INFINITY))
 }
@@ -334,7 +360,7 @@ fn search(pairs: &Pairs<'_>, i: usize) -> Result<f64, InputError> {
 /// (`len ≤ LANES`): `∞` for pairs proven apart ([`never_touch`]), the closed form's time (or
 /// `∞`) where one ball is at rest ([`straight::contact`]), and NaN for the rest (and for lanes
 /// past `len`); with them, which of the rest are valid moving pairs, for the timing test
-/// ([`never_meet`]). Whatever is left goes to the scalar search.
+/// ([`apart_by_window`]). Whatever is left goes to the scalar search.
 ///
 /// Each input is first copied as a whole block (a few vector moves, and no narrow stores
 /// that wide loads would then stall on), so that the arithmetic runs on whole vectors. The
@@ -497,7 +523,11 @@ pub fn positions_at(
 }
 
 /// One pair's collision time, validating its inputs.
-fn pair_time(pairs: &Pairs<'_>, i: usize) -> Result<Option<f64>, InputError> {
+fn pair_time(
+    pairs: &Pairs<'_>,
+    i: usize,
+    moving: Option<WhileMoving>,
+) -> Result<Option<f64>, InputError> {
     let a = ball(
         pairs.pos_a[i],
         pairs.vel_a[i],
@@ -512,7 +542,7 @@ fn pair_time(pairs: &Pairs<'_>, i: usize) -> Result<Option<f64>, InputError> {
     )?;
     let radius = check_radius("radius", pairs.radius.get(i))?;
     let t_max = check_horizon("t_max", pairs.t_max.get(i))?;
-    Ok(first_contact(&a, &b, radius, t_max))
+    Ok(first_contact_given(&a, &b, radius, t_max, moving))
 }
 
 /// A validated ball whose errors carry the batch's argument names.

@@ -77,6 +77,7 @@ impl Gap {
     /// };
     /// assert_eq!(gap.time_scaled(4.0).value(0.25), gap.value(1.0));
     /// ```
+    #[inline(always)]
     pub fn time_scaled(&self, h: f64) -> Self {
         Self {
             offset: self.offset,
@@ -108,6 +109,7 @@ impl Gap {
     /// assert_eq!(roots.len(), 2);
     /// assert!((roots[0] - 1.0).abs() < 1e-12 && (roots[1] - 3.0).abs() < 1e-12);
     /// ```
+    #[inline(always)]
     pub fn quartic(&self) -> [f64; 5] {
         let (p, v, f) = (self.offset, self.velocity, self.acceleration);
         [
@@ -136,11 +138,13 @@ impl Gap {
     /// assert_eq!(gap.half_slope(2.0), 0.0); // closest approach
     /// assert_eq!(gap.half_curvature(2.0), 1.0); // 0 + (1, 1)·(1, 0)
     /// ```
+    #[inline(always)]
     pub fn separation(&self, s: f64) -> Vector2<f64> {
         self.offset + (self.velocity + self.acceleration * (0.5 * s)) * s
     }
 
     /// `d′(s)`: the relative velocity at time `s` of the window (example: [`Gap::separation`]).
+    #[inline(always)]
     pub fn relative_velocity(&self, s: f64) -> Vector2<f64> {
         self.velocity + self.acceleration * s
     }
@@ -151,6 +155,7 @@ impl Gap {
     /// The larger component goes last whatever the axes, so that rotating or reflecting the
     /// whole configuration by quarter turns changes nothing, bit for bit. Example:
     /// [`Gap::separation`].
+    #[inline(always)]
     pub fn value(&self, s: f64) -> f64 {
         let d = self.separation(s);
         gap_value(d.x, d.y, self.radius)
@@ -158,12 +163,14 @@ impl Gap {
 
     /// `½·g′(s) = d(s)·d′(s)`: negative while the balls approach (example:
     /// [`Gap::separation`]).
+    #[inline(always)]
     pub fn half_slope(&self, s: f64) -> f64 {
         self.separation(s).dot(&self.relative_velocity(s))
     }
 
     /// `½·g″(s) = |d′(s)|² + d(s)·d″`: the derivative of [`Gap::half_slope`] (example:
     /// [`Gap::separation`]).
+    #[inline(always)]
     pub fn half_curvature(&self, s: f64) -> f64 {
         self.relative_velocity(s).norm_squared() + self.separation(s).dot(&self.acceleration)
     }
@@ -174,6 +181,7 @@ impl Gap {
     ///
     /// `d(s)` is formed with an error below `2ε·S`, where `S` sums the magnitudes of all
     /// components of its three terms, and `d′(s)` with one below `2ε·S′`; `d·d′` inherits them.
+    #[inline(always)]
     pub(crate) fn half_slope_noise(&self) -> f64 {
         let rate = self.velocity.abs().sum() + self.acceleration.abs().sum();
         let size = self.offset.abs().sum() + rate;
@@ -182,6 +190,7 @@ impl Gap {
 
     /// A bound on the rounding error of [`Gap::value`] for `0 ≤ s ≤ 1` where `|d(s)| ≈ r`
     /// (near a contact): `2r·2ε·S + 2ε·r²`, with `S` as in [`Gap::half_slope_noise`].
+    #[inline(always)]
     pub(crate) fn value_noise(&self) -> f64 {
         let size =
             self.offset.abs().sum() + self.velocity.abs().sum() + self.acceleration.abs().sum();

@@ -59,7 +59,7 @@ use nalgebra::Vector2;
 use rayon::prelude::*;
 
 use crate::batch::{PerPair, Threads};
-use crate::collision::first_contact;
+use crate::collision::first_contact_screened;
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius};
 use crate::motion::Ball;
 use broad_phase::Sweep;
@@ -341,13 +341,11 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
     let t_max = options.t_max;
     check(balls, radii, t_max)?;
     let n = balls.len();
-    let kernel = |i: usize, j: usize| {
-        first_contact(&balls[i], &balls[j], radii[i] + radii[j], t_max).map(|time| Hit {
-            time,
-            i,
-            j,
-        })
-    };
+    let kernel =
+        |i: usize, j: usize| {
+            first_contact_screened(&balls[i], &balls[j], radii[i] + radii[j], t_max)
+                .map(|time| Hit { time, i, j })
+        };
     // The broad phase numbers balls in 32 bits; beyond that (never in memory today), all pairs.
     let search = if u32::try_from(n).is_ok() {
         options.search

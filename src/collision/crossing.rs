@@ -22,40 +22,85 @@ use super::prefilter::{LIMIT, MARGIN, PairInput, valid};
 use super::{LONGEST_WINDOW, normal_time_unit};
 use crate::coefficients::Gap;
 
+/// The first window of two moving balls with friction, `[0, min(τ_A, τ_B, t_max)]`, exactly as
+/// [`first_contact`](super::first_contact) builds and scales it.
+pub(crate) struct FirstWindow {
+    /// Whether the pair qualifies for the lane-wise tests: valid, both balls moving with
+    /// friction, every magnitude in the plain range, a window of normal length.
+    pub qualifies: bool,
+    /// The relative motion, time in units of [`FirstWindow::unit`].
+    pub gap: Gap,
+    /// The window's end in those units (`≤ 1`).
+    pub end: f64,
+    /// The time unit, a power of two.
+    pub unit: f64,
+    /// The stop times.
+    pub tau: [f64; 2],
+}
+
+impl FirstWindow {
+    /// The first window of `pair`.
+    #[inline(always)]
+    pub(crate) fn of(pair: &PairInput) -> Self {
+        let [vax, vay] = pair.vel_a;
+        let [vbx, vby] = pair.vel_b;
+        let (mu_a, mu_b, radius, t_max) =
+            (pair.friction_a, pair.friction_b, pair.radius, pair.t_max);
+        // Speeds and stop times as `Ball::new` forms them (|v|² in this range takes its
+        // square root), so that the window below is the search's own.
+        let (square_a, square_b) = (vax * vax + vay * vay, vbx * vbx + vby * vby);
+        let (speed_a, speed_b) = (square_a.sqrt(), square_b.sqrt());
+        let (tau_a, tau_b) = (speed_a / mu_a, speed_b / mu_b);
+        let plain = |x: f64| (1.0 / LIMIT..=LIMIT).contains(&x);
+        let length = tau_a.min(tau_b).min(t_max).min(LONGEST_WINDOW);
+        let qualifies = valid(pair)
+            & plain(square_a)
+            & plain(square_b)
+            & plain(mu_a)
+            & plain(mu_b)
+            & (pair.pos_a[0].abs().max(pair.pos_a[1].abs()) <= LIMIT)
+            & (pair.pos_b[0].abs().max(pair.pos_b[1].abs()) <= LIMIT)
+            & plain(radius)
+            & (length >= f64::MIN_POSITIVE);
+        let unit = normal_time_unit(length);
+        let gap = Gap {
+            offset: Vector2::new(pair.pos_a[0] - pair.pos_b[0], pair.pos_a[1] - pair.pos_b[1]),
+            velocity: Vector2::new(vax - vbx, vay - vby),
+            acceleration: Vector2::new(-vax / tau_a - -vbx / tau_b, -vay / tau_a - -vby / tau_b),
+            radius,
+        }
+        .time_scaled(unit);
+        Self {
+            qualifies,
+            gap,
+            end: length / unit,
+            unit,
+            tau: [tau_a, tau_b],
+        }
+    }
+}
+
 /// Whether two valid moving balls with friction provably never touch. `false` means "not
 /// proven" (and is the answer for inputs that do not qualify: a ball at rest or without
-/// friction, magnitudes outside the plain range, a horizon of 0).
-#[inline(always)]
+/// friction, magnitudes outside the plain range, a horizon of 0). The batch takes the two
+/// proofs apart ([`apart_by_window`]); the tests take them together.
+#[cfg(test)]
 pub(crate) fn never_meet(pair: &PairInput) -> bool {
+    let (first, second) = apart_by_window(pair);
+    first & second
+}
+
+/// [`never_meet`]'s proofs one window at a time: the balls never touch while both move (the
+/// first window), and never after one has stopped (the second window and after). Each is
+/// `false` for inputs that do not qualify.
+#[inline(always)]
+pub(crate) fn apart_by_window(pair: &PairInput) -> (bool, bool) {
     let [vax, vay] = pair.vel_a;
     let [vbx, vby] = pair.vel_b;
-    let (mu_a, mu_b, radius, t_max) = (pair.friction_a, pair.friction_b, pair.radius, pair.t_max);
-    // Speeds and stop times as `Ball::new` forms them (|v|² in this range takes its square
-    // root), so that the window below is the search's own.
-    let (square_a, square_b) = (vax * vax + vay * vay, vbx * vbx + vby * vby);
-    let (speed_a, speed_b) = (square_a.sqrt(), square_b.sqrt());
-    let (tau_a, tau_b) = (speed_a / mu_a, speed_b / mu_b);
-    let plain = |x: f64| (1.0 / LIMIT..=LIMIT).contains(&x);
-    let qualifies = valid(pair)
-        & plain(square_a)
-        & plain(square_b)
-        & plain(mu_a)
-        & plain(mu_b)
-        & (pair.pos_a[0].abs().max(pair.pos_a[1].abs()) <= LIMIT)
-        & (pair.pos_b[0].abs().max(pair.pos_b[1].abs()) <= LIMIT)
-        & plain(radius);
-
-    // The first window, [0, min(τ_A, τ_B, t_max)], as `first_contact` builds and scales it.
-    let length = tau_a.min(tau_b).min(t_max).min(LONGEST_WINDOW);
-    let h = normal_time_unit(length);
-    let gap = Gap {
-        offset: Vector2::new(pair.pos_a[0] - pair.pos_b[0], pair.pos_a[1] - pair.pos_b[1]),
-        velocity: Vector2::new(vax - vbx, vay - vby),
-        acceleration: Vector2::new(-vax / tau_a - -vbx / tau_b, -vay / tau_a - -vby / tau_b),
-        radius,
-    }
-    .time_scaled(h);
-    let first = (length >= f64::MIN_POSITIVE) & proves_positive(&gap, length / h);
+    let (radius, t_max) = (pair.radius, pair.t_max);
+    let window = FirstWindow::of(pair);
+    let [tau_a, tau_b] = window.tau;
+    let first = proves_positive(&window.gap, window.end);
 
     // The second window: the ball that stops first rests at its stopping point; the other
     // runs on from where it is at that moment to where it stops.
@@ -79,7 +124,7 @@ pub(crate) fn never_meet(pair: &PairInput) -> bool {
     );
     let second = (t_max <= tau_rest)
         | point_clears_segment(p_rest, v_rest, tau_rest, p_run, v_run, tau_run, radius);
-    qualifies & first & second
+    (window.qualifies & first, window.qualifies & second)
 }
 
 /// Whether the stopping point of the ball at `p_rest` (velocity `v_rest`, stop time

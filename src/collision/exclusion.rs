@@ -39,6 +39,69 @@ pub(crate) fn proves_positive(gap: &Gap, end: f64) -> bool {
     positive_within_3_halvings(b, margin)
 }
 
+/// The first eighth of the window `[0, end]` (time scaled so that `end ≤ 1`) whose Bernstein
+/// coefficients do not prove `g > 0`, as its index `0..8` (`8` if there is none), and its
+/// shape: whether it holds exactly one root ([`Shape::OneRoot`]: then that root is the
+/// window's first crossing, from + to −), or a single minimum ([`Shape::OneDip`]); and
+/// whether every later eighth is proven positive.
+///
+/// Branch-free (every eighth is evaluated), so that a batch runs it lane-wise. The margin is
+/// that of [`proves_positive`], and each eighth comes from three exact halvings.
+#[inline(always)]
+pub(crate) fn first_open_eighth(gap: &Gap, end: f64) -> OpenEighth {
+    let (b, margin) = bernstein(gap, end);
+    let (l, r) = halves(b);
+    let ((ll, lr), (rl, rr)) = (halves(l), halves(r));
+    let ((e0, e1), (e2, e3), (e4, e5), (e6, e7)) = (halves(ll), halves(lr), halves(rl), halves(rr));
+    let eighths = [e0, e1, e2, e3, e4, e5, e6, e7];
+    // From the last to the first, so that the first open eighth is the one kept.
+    let (mut index, mut piece, mut open) = (8.0, e7, 0u32);
+    for k in (0..8).rev() {
+        let positive = above(&eighths[k], margin);
+        index = if positive { index } else { k as f64 };
+        piece = if positive { piece } else { eighths[k] };
+        open += u32::from(!positive);
+    }
+    OpenEighth {
+        index,
+        one_root: (open > 0) & one_root(&piece, margin),
+        one_dip: (open > 0) & one_dip(&piece, margin),
+        rest_positive: open <= 1,
+    }
+}
+
+/// Whether the Bernstein coefficients of the whole window `[0, end]` prove `g > 0`: the first
+/// test of [`proves_positive`] and [`OpenPieces`], alone.
+#[inline(always)]
+pub(crate) fn proves_positive_at_once(gap: &Gap, end: f64) -> bool {
+    let (b, margin) = bernstein(gap, end);
+    above(&b, margin)
+}
+
+/// What [`first_open_eighth`] found.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct OpenEighth {
+    /// The first eighth not proven positive, `0..8` (`8` if there is none).
+    pub index: f64,
+    /// It holds a single root ([`Shape::OneRoot`]).
+    pub one_root: bool,
+    /// It holds a single minimum ([`Shape::OneDip`]).
+    pub one_dip: bool,
+    /// Every eighth after it is proven positive.
+    pub rest_positive: bool,
+}
+
+/// Whether the coefficients `b` show exactly one root, from positive to negative, robustly:
+/// none within `margin` of zero, and one sign change ([`Shape::OneRoot`]), without a branch.
+#[inline(always)]
+fn one_root(b: &[f64; 5], margin: f64) -> bool {
+    let clear = b.iter().fold(true, |all, &x| all & (x.abs() > margin));
+    let changes = b
+        .windows(2)
+        .fold(0u32, |n, w| n + u32::from((w[0] > 0.0) != (w[1] > 0.0)));
+    clear & (b[0] > 0.0) & (changes == 1)
+}
+
 /// The pieces of a window that a subdivision down to [`ISOLATING_SPLITS`] halvings leaves
 /// open (not proven positive), in time order: an iterator.
 ///
@@ -130,26 +193,26 @@ impl Iterator for OpenPieces {
 
 /// The shape of `g` on a piece with Bernstein coefficients `b`.
 fn shape(b: &[f64; 5], margin: f64) -> Shape {
-    let clear = b.iter().all(|&x| x.abs() > margin);
-    let changes = b
-        .windows(2)
-        .filter(|w| (w[0] > 0.0) != (w[1] > 0.0))
-        .count();
-    if clear && b[0] > 0.0 && changes == 1 {
-        return Shape::OneRoot;
+    match (one_root(b, margin), one_dip(b, margin)) {
+        (true, _) => Shape::OneRoot,
+        (false, true) => Shape::OneDip,
+        (false, false) => Shape::Other,
     }
-    // The differences carry the errors of two coefficients.
+}
+
+/// Whether the coefficients `b` show [`Shape::OneDip`], without a branch: a start above
+/// `margin`, and one sign change, − to +, among the differences (the coefficients of `g′`),
+/// none of them within the rounding of two coefficients (`2·margin`) of zero.
+#[inline(always)]
+fn one_dip(b: &[f64; 5], margin: f64) -> bool {
     let slopes = [b[1] - b[0], b[2] - b[1], b[3] - b[2], b[4] - b[3]];
-    let steep = slopes.iter().all(|&x| x.abs() > 2.0 * margin);
+    let steep = slopes
+        .iter()
+        .fold(true, |all, &x| all & (x.abs() > 2.0 * margin));
     let turns = slopes
         .windows(2)
-        .filter(|w| (w[0] > 0.0) != (w[1] > 0.0))
-        .count();
-    if b[0] > margin && steep && slopes[0] < 0.0 && turns == 1 {
-        Shape::OneDip
-    } else {
-        Shape::Other
-    }
+        .fold(0u32, |n, w| n + u32::from((w[0] > 0.0) != (w[1] > 0.0)));
+    (b[0] > margin) & steep & (slopes[0] < 0.0) & (turns == 1)
 }
 
 /// `2^−depth`, the width of a piece `depth` halvings deep (exact: a power of two).
