@@ -90,7 +90,7 @@ pub(crate) fn never_meet(pair: &PairInput) -> bool {
     first & second
 }
 
-/// [`never_meet`]'s proofs one window at a time: the balls never touch while both move (the
+/// `never_meet`'s proofs one window at a time: the balls never touch while both move (the
 /// first window), and never after one has stopped (the second window and after). Each is
 /// `false` for inputs that do not qualify.
 #[inline(always)]

@@ -164,7 +164,7 @@ pub(crate) fn first_contact(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> Opti
     first_contact_given(a, b, radius, t_max, None)
 }
 
-/// [`first_contact`], given what [`while_moving`] found for the pair if the caller (a batch,
+/// [`first_contact`], given what [`while_moving`](moving_entry::while_moving) found for the pair if the caller (a batch,
 /// lane-wise) has run it already: the search takes the same steps either way.
 pub(crate) fn first_contact_given(
     a: &Ball,
