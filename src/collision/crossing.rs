@@ -162,7 +162,7 @@ fn point_clears_segment(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::collision::prefilter::test_support::{pair, search};
+    use crate::collision::prefilter::test_support::{moving_ball, pair, search};
     use crate::test_rng::Rng;
 
     #[test]
@@ -232,18 +232,7 @@ mod tests {
         let (mut proven, mut misses) = (0, 0);
         for k in 0..20_000 {
             let scale = 10f64.powf(rng.uniform(-6.0, 6.0));
-            let ball = |rng: &mut Rng| {
-                let p = [
-                    rng.uniform(-1.0, 1.0) * scale,
-                    rng.uniform(-1.0, 1.0) * scale,
-                ];
-                let (s, a) = (rng.uniform(0.1, 3.0) * scale, rng.uniform(0.0, 6.3));
-                (
-                    p,
-                    [s * a.cos(), s * a.sin()],
-                    rng.uniform(0.05, 2.0) * scale,
-                )
-            };
+            let ball = |rng: &mut Rng| moving_ball(rng, scale);
             let (pa, va, mu_a) = ball(&mut rng);
             let (pb, vb, mu_b) = ball(&mut rng);
             let input = PairInput {

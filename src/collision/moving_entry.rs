@@ -106,7 +106,10 @@ fn settle(
     let dip = dip & (slope_lo < 0.0) & (slope_hi > 0.0);
     // One pair skips the steps whose results would be masked out below (lanes take them all:
     // the results are the same).
-    let (lowest, lowest_found) = if one_pair && !(dip && !(root && g_hi < 0.0)) {
+    // The minimum is used for a dip, unless a single root with g < 0 at the eighth's end
+    // already brackets the entry (and rules out a miss).
+    let lowest_used = dip && !(root && g_hi < 0.0);
+    let (lowest, lowest_found) = if one_pair && !lowest_used {
         (hi, false)
     } else {
         fixed_newton(
@@ -239,7 +242,7 @@ fn fixed_newton(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::collision::prefilter::test_support::{pair, search};
+    use crate::collision::prefilter::test_support::{moving_ball, pair, search};
     use crate::test_rng::Rng;
 
     #[test]
@@ -274,18 +277,7 @@ mod tests {
         let mut settled = 0;
         for _ in 0..20_000 {
             let scale = 10f64.powf(rng.uniform(-6.0, 6.0));
-            let ball = |rng: &mut Rng| {
-                let p = [
-                    rng.uniform(-1.0, 1.0) * scale,
-                    rng.uniform(-1.0, 1.0) * scale,
-                ];
-                let (s, a) = (rng.uniform(0.1, 3.0) * scale, rng.uniform(0.0, 6.3));
-                (
-                    p,
-                    [s * a.cos(), s * a.sin()],
-                    rng.uniform(0.05, 2.0) * scale,
-                )
-            };
+            let ball = |rng: &mut Rng| moving_ball(rng, scale);
             let ((pa, va, ma), (pb, vb, mb)) = (ball(&mut rng), ball(&mut rng));
             let t_max = if rng.uniform(0.0, 1.0) < 0.2 {
                 rng.uniform(0.0, 2.0)

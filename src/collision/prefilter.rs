@@ -160,6 +160,7 @@ pub(crate) mod test_support {
     use super::PairInput;
     use crate::collision::first_contact;
     use crate::motion::Ball;
+    use crate::test_rng::Rng;
     use nalgebra::Vector2;
 
     /// A pair with friction 1 on both balls, contact distance 0.1 and no horizon.
@@ -179,6 +180,22 @@ pub(crate) mod test_support {
             radius: 0.1,
             t_max: f64::INFINITY,
         }
+    }
+
+    /// A ball anywhere in the square of half-side `scale` round the origin, moving in any
+    /// direction at 0.1–3 `scale` per unit time, with friction 0.05–2 `scale`: position,
+    /// velocity and friction.
+    pub(crate) fn moving_ball(rng: &mut Rng, scale: f64) -> ([f64; 2], [f64; 2], f64) {
+        let p = [
+            rng.uniform(-1.0, 1.0) * scale,
+            rng.uniform(-1.0, 1.0) * scale,
+        ];
+        let (s, a) = (rng.uniform(0.1, 3.0) * scale, rng.uniform(0.0, 6.3));
+        (
+            p,
+            [s * a.cos(), s * a.sin()],
+            rng.uniform(0.05, 2.0) * scale,
+        )
     }
 
     /// The search's answer for a valid `pair`.
