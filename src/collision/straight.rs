@@ -63,14 +63,16 @@ pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], mu: f64, radius: f64, g0: f6
     let meets = (approach < 0.0) & (disc > 0.0);
     // The smaller root, without cancellation (approach < 0): σ = g0/D.
     let d = disc.max(0.0).sqrt() - approach;
-    // u = 2σ/τ = 2σμ/|v|, the share of its stopping distance the mover has covered at the
-    // contact: below 1 if it comes before the stop (always, without friction).
-    let u = (2.0 * g0 * mu) / (d * speed);
-    let before_stop = u < 1.0;
-    // σ = t − t²/(2τ)  ⇒  t = 2σ / (1 + √(1 − u))  (= σ without friction).
-    let t = (2.0 * g0) / (d * (1.0 + (1.0 - u).max(0.0).sqrt()));
-    // A contact whose time overflowed is left to the general search.
-    let settled = !meets | !before_stop | t.is_finite();
+    // The contact comes before the stop when σ < τ/2 = |v|/(2μ), that is when D > k with
+    // k = 2·g0·μ/|v|; k needs no root of G, so its division runs beside √disc.
+    let k = (2.0 * g0 * mu) / speed;
+    let before_stop = d > k;
+    // σ = t − t²/(2τ)  ⇒  t = 2σ/(1 + √(1 − k/D)) = 2·g0/(D + √(D·(D − k))): one division
+    // after the roots (D·(D − k) stays normal for the magnitudes `plain` admits).
+    let t = (2.0 * g0) / (d + (d * (d - k)).max(0.0).sqrt());
+    // A contact whose time overflowed, or whose D is so small that D·(D − k) could lose
+    // digits to underflow, is left to the general search.
+    let settled = !meets | !before_stop | (t.is_finite() & (d >= 1e-100));
     let hit = meets & before_stop;
     (plain & settled, if hit { t } else { f64::INFINITY })
 }
