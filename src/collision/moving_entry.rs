@@ -201,8 +201,11 @@ fn fixed_newton(
     let within = |&(_, _, best, best_value, best_step, _): &State, ulps: f64| {
         (best_value == 0.0) | (best_step <= ulps * f64::EPSILON * best)
     };
-    // Steps stop where the next could not move the iterate.
-    let converged = |state: &State| within(state, 0.5);
+    // Stalled: within rounding noise of zero, a step failed to lower |f| (as the search's
+    // polishing stops); from there on, steps only jitter in the noise.
+    let stalled = |&(_, _, _, best_value, _, improved): &State| !improved & (best_value <= noise);
+    // Steps stop where the next could not move the iterate, or where they stall.
+    let converged = |state: &State| within(state, 0.5) | stalled(state);
     let step = |state: State| -> State {
         let ((lo, hi), x, best, best_value, best_step, _) = state;
         let (fx, dfx) = f(x);
@@ -241,11 +244,7 @@ fn fixed_newton(
         // Written out rather than looped, so that a batch's lane loop around it vectorises.
         state = step(step(step(step(step(step(state))))));
     }
-    let (_, _, best, best_value, _, improved) = state;
-    (
-        best,
-        within(&state, 2.0) | (!improved & (best_value <= noise)),
-    )
+    (state.2, within(&state, 2.0) | stalled(&state))
 }
 
 #[cfg(test)]
