@@ -28,7 +28,9 @@ pub(crate) struct FirstWindow {
     /// Whether the pair qualifies for the lane-wise tests: valid, both balls moving with
     /// friction, every magnitude in the plain range, a window of normal length.
     pub qualifies: bool,
-    /// The relative motion, time in units of [`FirstWindow::unit`].
+    /// The relative motion from time 0, in seconds: the search's own `Gap::between(a, b, r, 0)`.
+    pub initial: Gap,
+    /// The same, time in units of [`FirstWindow::unit`].
     pub gap: Gap,
     /// The window's end in those units (`≤ 1`).
     pub end: f64,
@@ -63,16 +65,16 @@ impl FirstWindow {
             & plain(radius)
             & (length >= f64::MIN_POSITIVE);
         let unit = normal_time_unit(length);
-        let gap = Gap {
+        let initial = Gap {
             offset: Vector2::new(pair.pos_a[0] - pair.pos_b[0], pair.pos_a[1] - pair.pos_b[1]),
             velocity: Vector2::new(vax - vbx, vay - vby),
             acceleration: Vector2::new(-vax / tau_a - -vbx / tau_b, -vay / tau_a - -vby / tau_b),
             radius,
-        }
-        .time_scaled(unit);
+        };
         Self {
             qualifies,
-            gap,
+            initial,
+            gap: initial.time_scaled(unit),
             end: length / unit,
             unit,
             tau: [tau_a, tau_b],

@@ -10,10 +10,14 @@
 //! gap there is within its rounding bound of zero, which is where the float arithmetic puts
 //! the root: the answer the general search would give, to its accuracy.
 //!
+//! Balls that already touch or overlap and move into each other meet at 0 (SPEC): decided
+//! here too, on the search's own values at time 0.
+//!
 //! Anything else (a ball at rest or without friction, a first open eighth of another shape,
 //! Newton not settled in time) is left to the general search, which first calls this same
 //! function: a batch that settles a pair lane-wise gives it the search's own bits.
 
+use super::approaching;
 use super::crossing::FirstWindow;
 use super::exclusion::{OpenEighth, first_open_eighth, proves_positive_at_once};
 use super::prefilter::PairInput;
@@ -72,6 +76,13 @@ fn while_moving_one_portable(pair: &PairInput) -> WhileMoving {
         no_entry: false,
     };
     let window = FirstWindow::of(pair);
+    let start = at_start(&window);
+    if !start.is_nan() {
+        return WhileMoving {
+            entry: start,
+            no_entry: false,
+        };
+    }
     // A window proven positive whole has no entry, which the search finds at once: `settle`
     // would find no entry there either (at most that there is none, which the search then
     // takes the same way).
@@ -162,10 +173,21 @@ fn settle(
         (false, _) => f64::NAN,
     };
     let missed = plain & dip & lowest_found & (g_lowest >= 0.0) & (g_hi > 0.0);
+    let start = at_start(window);
     WhileMoving {
-        entry,
+        entry: if start.is_nan() { entry } else { start },
         no_entry: missed & eighth.rest_positive,
     }
+}
+
+/// The answer for balls touching or overlapping at the start and moving into each other: a
+/// contact at 0 (SPEC; a qualifying window has a horizon above 0); NaN for every other pair.
+/// Decided on the search's own values at time 0 (`window.initial`), so both decide alike.
+#[inline(always)]
+fn at_start(window: &FirstWindow) -> f64 {
+    let touching =
+        window.qualifies & (window.initial.value(0.0) <= 0.0) & approaching(&window.initial);
+    if touching { 0.0 } else { f64::NAN }
 }
 
 /// The root of the chord through `(lo, f_lo)` and `(hi, f_hi)`.
@@ -262,6 +284,26 @@ mod tests {
             (t - exact).abs() <= 2.0 * f64::EPSILON * exact,
             "{t} {exact}"
         );
+    }
+
+    #[test]
+    fn overlapping_balls_moving_into_each_other_touch_at_0() {
+        // 0.05 apart at contact distance 0.1, closing; then the same pair separating, which
+        // is not a contact at 0 (SPEC) and is left to the search.
+        let closing = pair([0.0, 0.0], [1.0, 0.0], [0.05, 0.0], [-1.0, 0.0]);
+        assert_eq!(while_moving(&closing).entry, 0.0);
+        assert_eq!(while_moving_one(&closing).entry, 0.0);
+        assert_eq!(search(&closing), Some(0.0));
+        let no_time = PairInput {
+            t_max: 0.0,
+            ..closing
+        };
+        // No time at all: not a window the lanes take (the search answers none).
+        assert!(while_moving(&no_time).entry.is_nan());
+        assert_eq!(search(&no_time), None);
+        let parting = pair([0.0, 0.0], [-1.0, 0.0], [0.05, 0.0], [1.0, 0.0]);
+        assert!(while_moving(&parting).entry.is_nan());
+        assert!(while_moving_one(&parting).entry.is_nan());
     }
 
     #[test]
