@@ -14,7 +14,8 @@ use rayon::prelude::*;
 use rayon::{ThreadPool, ThreadPoolBuilder};
 
 use crate::coefficients::gap_value;
-use crate::collision::crossing::apart_by_window;
+use crate::collision::after_stop::after_first_stop;
+use crate::collision::crossing::{FirstWindow, apart_by_window};
 use crate::collision::first_contact_given;
 use crate::collision::moving_entry::{WhileMoving, while_moving};
 use crate::collision::prefilter::{PairInput, never_touch, valid};
@@ -246,7 +247,7 @@ fn solve_chunk_portable(
             let i = offset + start + k;
             if crossing[k] {
                 // Answered when its block is settled.
-                held.crossing.push(i, false);
+                held.crossing.push(i, (false, false));
             } else {
                 out[start + k] = if answers[k].is_nan() {
                     search(pairs, i, None)?
@@ -269,41 +270,43 @@ fn solve_chunk_portable(
 struct Held {
     /// Pairs screened as crossing, for [`apart_by_window`].
     crossing: Queue,
-    /// Pairs the timing test left open, flagged when it proved the second window apart.
+    /// Pairs the timing test left open, with what it proved: the first window apart, the
+    /// second.
     open: Queue,
 }
 
-/// Pair indices, each with a flag: room for a block and the most a stage adds before the
+/// Pair indices, each with two flags: room for a block and the most a stage adds before the
 /// block is taken.
 #[derive(Default)]
 struct Queue {
     index: [usize; 2 * LANES],
-    flag: [bool; 2 * LANES],
+    flags: [(bool, bool); 2 * LANES],
     len: usize,
 }
 
 impl Queue {
-    /// Holds pair `i` with its flag (the callers keep `len` below `2·LANES`).
+    /// Holds pair `i` with its flags (the callers keep `len` below `2·LANES`).
     #[inline(always)]
-    fn push(&mut self, i: usize, flag: bool) {
-        if let (Some(slot), Some(f)) = (self.index.get_mut(self.len), self.flag.get_mut(self.len)) {
-            (*slot, *f) = (i, flag);
+    fn push(&mut self, i: usize, flags: (bool, bool)) {
+        if let (Some(slot), Some(f)) = (self.index.get_mut(self.len), self.flags.get_mut(self.len))
+        {
+            (*slot, *f) = (i, flags);
             self.len += 1;
         }
     }
 
     /// Takes the first block of up to [`LANES`] pairs: their indices and flags, and how many.
     #[inline(always)]
-    fn take(&mut self) -> ([usize; LANES], [bool; LANES], usize) {
+    fn take(&mut self) -> ([usize; LANES], [(bool, bool); LANES], usize) {
         let len = self.len.min(LANES);
         let mut index = [0; LANES];
-        let mut flag = [false; LANES];
+        let mut flags = [(false, false); LANES];
         index.copy_from_slice(&self.index[..LANES]);
-        flag.copy_from_slice(&self.flag[..LANES]);
+        flags.copy_from_slice(&self.flags[..LANES]);
         self.index.copy_within(LANES.., 0);
-        self.flag.copy_within(LANES.., 0);
+        self.flags.copy_within(LANES.., 0);
         self.len -= len;
-        (index, flag, len)
+        (index, flags, len)
     }
 }
 
@@ -365,14 +368,15 @@ impl Held {
             if first & second {
                 out[i - offset] = f64::INFINITY;
             } else {
-                self.open.push(i, second);
+                self.open.push(i, (first, second));
             }
         }
     }
 
     /// Answers a block of open pairs: the entry where [`while_moving`] settles the first
-    /// window, `∞` where it proves that window free of contact and the second was proven
-    /// apart, the search's answer elsewhere.
+    /// window; where the first window is free (proven apart, or no entry found), `∞` if the
+    /// second was proven apart, else the closed form from the first stop on
+    /// ([`after_first_stop`]) where it applies; the search's answer elsewhere.
     #[inline(always)]
     fn settle_first_window(
         &mut self,
@@ -380,7 +384,7 @@ impl Held {
         offset: usize,
         out: &mut [f64],
     ) -> Result<(), InputError> {
-        let (index, second_apart, len) = self.open.take();
+        let (index, apart, len) = self.open.take();
         let lanes = lanes(pairs, &index, len);
         let mut entry = [f64::NAN; LANES];
         let mut no_entry = [false; LANES];
@@ -388,12 +392,36 @@ impl Held {
             let m = while_moving(lane);
             (*entry, *no_entry) = (m.entry, m.no_entry);
         }
-        let answers = entry.iter().zip(&no_entry).zip(&second_apart);
-        for (&i, ((&entry, &no_entry), &second)) in index[..len].iter().zip(answers) {
+        let mut free = [false; LANES];
+        for ((free, &(first, _)), &no_entry) in free.iter_mut().zip(&apart).zip(&no_entry) {
+            *free = first | no_entry;
+        }
+        // In a loop of its own, run only where some lane needs it (contacts after a stop are
+        // rarer than contacts while both move).
+        let mut after = [(false, f64::NAN); LANES];
+        let needed = free
+            .iter()
+            .zip(&apart)
+            .take(len)
+            .any(|(&free, &(_, second))| free & !second);
+        if needed {
+            for (after, lane) in after.iter_mut().zip(&lanes) {
+                *after = after_first_stop(lane, &FirstWindow::of(lane));
+            }
+        }
+        let lane_answers = entry
+            .iter()
+            .zip(&no_entry)
+            .zip(free.iter().zip(&apart).zip(&after));
+        for (&i, ((&entry, &no_entry), ((&free, &(_, second)), &(applies, t)))) in
+            index[..len].iter().zip(lane_answers)
+        {
             out[i - offset] = if !entry.is_nan() {
                 entry
-            } else if no_entry & second {
+            } else if free & second {
                 f64::INFINITY
+            } else if free & applies {
+                t
             } else {
                 search(pairs, i, Some(WhileMoving { entry, no_entry }))?
             };

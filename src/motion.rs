@@ -123,6 +123,23 @@ impl Ball {
         self.stop_time
     }
 
+    /// A ball whose inputs are known valid and whose stop time is already formed as
+    /// [`Ball::new`] forms it (the lane-wise tests build balls from checked inputs).
+    #[inline(always)]
+    pub(crate) fn from_parts(
+        position: [f64; 2],
+        velocity: [f64; 2],
+        friction: f64,
+        stop_time: f64,
+    ) -> Self {
+        Self {
+            position: Vector2::from(position),
+            velocity: Vector2::from(velocity),
+            friction,
+            stop_time,
+        }
+    }
+
     /// Whether the ball is at rest from the start (`v = 0`).
     ///
     /// ```

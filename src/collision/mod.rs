@@ -17,7 +17,8 @@
 //! quadratic in the distance covered: a closed form answers instead (`straight`). When both
 //! move, the first window is first tried whole, without a branch (`moving_entry`): where its
 //! first open eighth holds a single root or a single minimum, a fixed number of bracketed
-//! Newton steps settles it; the steps above handle the rest. Batches first screen out,
+//! Newton steps settles it; the steps above handle the rest. From the first stop on, one ball
+//! rests and the other runs along a line: the closed form answers there too (`after_stop`). Batches first screen out,
 //! lane-wise, the pairs whose paths stay apart (`prefilter`), then, among moving pairs whose
 //! paths cross, those that are never there at the same time (`crossing`), then run
 //! `moving_entry` lane-wise; single queries run the same proofs first, so both give the same
@@ -35,6 +36,7 @@
 //! - a contact shallower than about 1e-13 of the radius is beyond what float64 inputs decide
 //!   (the gap's minimum is then within rounding of zero): either answer may come back.
 
+pub(crate) mod after_stop;
 pub(crate) mod crossing;
 mod entry;
 mod exclusion;
@@ -46,7 +48,8 @@ use crate::coefficients::Gap;
 use crate::error::{InputError, check_horizon, check_radius};
 use crate::motion::Ball;
 use crate::poly::scaling::{exponent, pow2};
-use crossing::apart_by_window;
+use after_stop::after_first_stop;
+use crossing::{FirstWindow, apart_by_window};
 use entry::{WindowSearch, first_entry, piecewise_entry};
 use moving_entry::{WhileMoving, while_moving_one};
 use prefilter::{PairInput, never_touch};
@@ -200,6 +203,14 @@ pub(crate) fn first_contact_given(
         let end = end.min(t_max);
         if end <= start {
             continue;
+        }
+        // From the first stop on, one ball rests: the closed form, where it applies.
+        if start == t1 && start > 0.0 {
+            let pair = pair_input(a, b, radius, t_max);
+            let (applies, t) = after_first_stop(&pair, &FirstWindow::of(&pair));
+            if applies {
+                return t.is_finite().then_some(t);
+            }
         }
         let gap = if start == 0.0 {
             initial
