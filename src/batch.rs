@@ -14,7 +14,7 @@ use rayon::prelude::*;
 use rayon::{ThreadPool, ThreadPoolBuilder};
 
 use crate::coefficients::gap_value;
-use crate::collision::after_stop::after_first_stop;
+use crate::collision::after_stop::after_first_stop_of;
 use crate::collision::crossing::{FirstWindow, apart_by_window};
 use crate::collision::first_contact_given;
 use crate::collision::moving_entry::{WhileMoving, while_moving};
@@ -376,7 +376,7 @@ impl Held {
     /// Answers a block of open pairs: the entry where [`while_moving`] settles the first
     /// window; where the first window is free (proven apart, or no entry found), `∞` if the
     /// second was proven apart, else the closed form from the first stop on
-    /// ([`after_first_stop`]) where it applies; the search's answer elsewhere.
+    /// ([`after_first_stop_of`]) where it applies; the search's answer elsewhere.
     #[inline(always)]
     fn settle_first_window(
         &mut self,
@@ -406,7 +406,7 @@ impl Held {
             .any(|(&free, &(_, second))| free & !second);
         if needed {
             for (after, lane) in after.iter_mut().zip(&lanes) {
-                *after = after_first_stop(lane, &FirstWindow::of(lane));
+                *after = after_first_stop_of(lane, &FirstWindow::of(lane));
             }
         }
         let lane_answers = entry

@@ -13,40 +13,47 @@ use super::straight;
 use crate::coefficients::Gap;
 use crate::motion::Ball;
 
-/// The first contact from the first stop on, for a pair whose first window holds none: its
-/// time (`∞` for none, or at or past the horizon), where the closed form settles it.
+/// The first contact from the first stop on, for balls `a` and `b` whose first window holds
+/// none: its time (`∞` for none, or at or past the horizon), where the closed form settles it.
 ///
-/// Returns whether it applies: the pair qualifies for the lane-wise tests (both balls moving
-/// with friction, plain magnitudes), the balls stop at different times, and the closed form
-/// applies (apart at the first stop, magnitudes in its range). Branch-free apart from what the
-/// compiler turns into selects, so that a batch runs it lane-wise.
+/// Returns whether it applies: both balls move and stop at different times, and the closed
+/// form applies (apart at the first stop, magnitudes in its range). Its range is the closed
+/// form's alone, so that scaling every input by a power of two changes nothing. Branch-free
+/// apart from what the compiler turns into selects, so that a batch runs it lane-wise.
 #[inline(always)]
-pub(crate) fn after_first_stop(pair: &PairInput, window: &FirstWindow) -> (bool, f64) {
-    let [tau_a, tau_b] = window.tau;
+pub(crate) fn after_first_stop(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> (bool, f64) {
+    let (tau_a, tau_b) = (a.stop_time(), b.stop_time());
     let t1 = tau_a.min(tau_b);
-    let a = Ball::from_parts(pair.pos_a, pair.vel_a, pair.friction_a, tau_a);
-    let b = Ball::from_parts(pair.pos_b, pair.vel_b, pair.friction_b, tau_b);
-    let gap = Gap::between(&a, &b, pair.radius, t1);
+    let gap = Gap::between(a, b, radius, t1);
     // The mover is the ball that stops later. `straight::contact` wants it against the
     // resting ball; the offset and velocity here are A's against B's, which (both negated
     // when B moves) give the same products, bit for bit.
     let mu = if tau_a < tau_b {
-        pair.friction_b
+        b.friction()
     } else {
-        pair.friction_a
+        a.friction()
     };
     let (applies, t) = straight::contact(
         [gap.offset.x, gap.offset.y],
         [gap.velocity.x, gap.velocity.y],
         mu,
-        pair.radius,
+        radius,
         gap.value(0.0),
     );
     let t = t1 + t;
-    (
-        window.qualifies & (tau_a != tau_b) & applies,
-        if t < pair.t_max { t } else { f64::INFINITY },
-    )
+    let moving = (t1 > 0.0) & t1.is_finite() & (tau_a != tau_b);
+    (moving & applies, if t < t_max { t } else { f64::INFINITY })
+}
+
+/// [`after_first_stop`] for a pair of the lane-wise tests (whose stop times its first window
+/// holds); it does not apply where the pair does not qualify for them.
+#[inline(always)]
+pub(crate) fn after_first_stop_of(pair: &PairInput, window: &FirstWindow) -> (bool, f64) {
+    let [tau_a, tau_b] = window.tau;
+    let a = Ball::from_parts(pair.pos_a, pair.vel_a, pair.friction_a, tau_a);
+    let b = Ball::from_parts(pair.pos_b, pair.vel_b, pair.friction_b, tau_b);
+    let (applies, t) = after_first_stop(&a, &b, pair.radius, pair.t_max);
+    (window.qualifies & applies, t)
 }
 
 #[cfg(test)]
@@ -63,7 +70,7 @@ mod tests {
             friction_b: 2.0,
             ..pair([0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [1.0, 0.0])
         };
-        let (applies, t) = after_first_stop(&p, &FirstWindow::of(&p));
+        let (applies, t) = after_first_stop_of(&p, &FirstWindow::of(&p));
         assert!(applies);
         // A covers 2t − t²/4 = 1.25 − 0.1.
         let exact = 4.0 - (16.0f64 - 4.0 * 1.15).sqrt();
@@ -92,7 +99,7 @@ mod tests {
                 ..pair(pa, va, pb, vb)
             };
             let window = FirstWindow::of(&p);
-            let (applies, t) = after_first_stop(&p, &window);
+            let (applies, t) = after_first_stop_of(&p, &window);
             let first = crate::collision::crossing::apart_by_window(&p).0;
             if !(applies & first) {
                 continue;

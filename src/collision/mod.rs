@@ -49,7 +49,7 @@ use crate::error::{InputError, check_horizon, check_radius};
 use crate::motion::Ball;
 use crate::poly::scaling::{exponent, pow2};
 use after_stop::after_first_stop;
-use crossing::{FirstWindow, apart_by_window};
+use crossing::apart_by_window;
 use entry::{WindowSearch, first_entry, piecewise_entry};
 use moving_entry::{WhileMoving, while_moving_one};
 use prefilter::{PairInput, never_touch};
@@ -206,8 +206,7 @@ pub(crate) fn first_contact_given(
         }
         // From the first stop on, one ball rests: the closed form, where it applies.
         if start == t1 && start > 0.0 {
-            let pair = pair_input(a, b, radius, t_max);
-            let (applies, t) = after_first_stop(&pair, &FirstWindow::of(&pair));
+            let (applies, t) = after_first_stop(a, b, radius, t_max);
             if applies {
                 return t.is_finite().then_some(t);
             }
