@@ -59,7 +59,7 @@ pub(crate) fn after_first_stop_of(pair: &PairInput, window: &FirstWindow) -> (bo
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::collision::prefilter::test_support::{moving_ball, pair, search};
+    use crate::collision::prefilter::test_support::{moving_ball, pair, pair_of, search};
     use crate::test_rng::Rng;
 
     #[test]
@@ -90,14 +90,8 @@ mod tests {
         let mut checked = 0;
         for _ in 0..20_000 {
             let scale = 10f64.powf(rng.uniform(-6.0, 6.0));
-            let ((pa, va, ma), (pb, vb, mb)) =
-                (moving_ball(&mut rng, scale), moving_ball(&mut rng, scale));
-            let p = PairInput {
-                friction_a: ma,
-                friction_b: mb,
-                radius: rng.uniform(0.05, 0.5) * scale,
-                ..pair(pa, va, pb, vb)
-            };
+            let (a, b) = (moving_ball(&mut rng, scale), moving_ball(&mut rng, scale));
+            let p = pair_of(a, b, rng.uniform(0.05, 0.5) * scale, f64::INFINITY);
             let window = FirstWindow::of(&p);
             let (applies, t) = after_first_stop_of(&p, &window);
             let first = crate::collision::crossing::apart_by_window(&p).0;

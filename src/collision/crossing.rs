@@ -164,7 +164,7 @@ fn point_clears_segment(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::collision::prefilter::test_support::{moving_ball, pair, search};
+    use crate::collision::prefilter::test_support::{moving_ball, pair, pair_of, search};
     use crate::test_rng::Rng;
 
     #[test]
@@ -235,22 +235,17 @@ mod tests {
         for k in 0..20_000 {
             let scale = 10f64.powf(rng.uniform(-6.0, 6.0));
             let ball = |rng: &mut Rng| moving_ball(rng, scale);
-            let (pa, va, mu_a) = ball(&mut rng);
-            let (pb, vb, mu_b) = ball(&mut rng);
-            let input = PairInput {
-                pos_a: pa,
-                vel_a: va,
-                friction_a: mu_a,
-                pos_b: pb,
-                vel_b: vb,
-                friction_b: mu_b,
-                radius: 0.2 * scale * 10f64.powf(-rng.uniform(0.0, 2.0)),
-                t_max: if k % 7 == 0 {
+            let (a, b) = (ball(&mut rng), ball(&mut rng));
+            let input = pair_of(
+                a,
+                b,
+                0.2 * scale * 10f64.powf(-rng.uniform(0.0, 2.0)),
+                if k % 7 == 0 {
                     rng.uniform(0.0, 2.0)
                 } else {
                     f64::INFINITY
                 },
-            };
+            );
             let found = search(&input).is_some();
             if never_meet(&input) {
                 proven += 1;

@@ -272,7 +272,7 @@ fn fixed_newton(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::collision::prefilter::test_support::{moving_ball, pair, search};
+    use crate::collision::prefilter::test_support::{moving_ball, pair, pair_of, search};
     use crate::test_rng::Rng;
 
     #[test]
@@ -328,19 +328,13 @@ mod tests {
         for _ in 0..20_000 {
             let scale = 10f64.powf(rng.uniform(-6.0, 6.0));
             let ball = |rng: &mut Rng| moving_ball(rng, scale);
-            let ((pa, va, ma), (pb, vb, mb)) = (ball(&mut rng), ball(&mut rng));
+            let (a, b) = (ball(&mut rng), ball(&mut rng));
             let t_max = if rng.uniform(0.0, 1.0) < 0.2 {
                 rng.uniform(0.0, 2.0)
             } else {
                 f64::INFINITY
             };
-            let p = PairInput {
-                friction_a: ma,
-                friction_b: mb,
-                radius: rng.uniform(0.05, 1.0) * scale,
-                t_max,
-                ..pair(pa, va, pb, vb)
-            };
+            let p = pair_of(a, b, rng.uniform(0.05, 1.0) * scale, t_max);
             let t = while_moving(&p).entry;
             if t.is_nan() {
                 continue;

@@ -185,7 +185,7 @@ pub(crate) mod test_support {
     /// A ball anywhere in the square of half-side `scale` round the origin, moving in any
     /// direction at 0.1–3 `scale` per unit time, with friction 0.05–2 `scale`: position,
     /// velocity and friction.
-    pub(crate) fn moving_ball(rng: &mut Rng, scale: f64) -> ([f64; 2], [f64; 2], f64) {
+    pub(crate) fn moving_ball(rng: &mut Rng, scale: f64) -> Drawn {
         let p = [
             rng.uniform(-1.0, 1.0) * scale,
             rng.uniform(-1.0, 1.0) * scale,
@@ -196,6 +196,24 @@ pub(crate) mod test_support {
             [s * a.cos(), s * a.sin()],
             rng.uniform(0.05, 2.0) * scale,
         )
+    }
+
+    /// A ball as [`moving_ball`] draws it: position, velocity and friction.
+    pub(crate) type Drawn = ([f64; 2], [f64; 2], f64);
+
+    /// Balls `a` and `b` (as [`moving_ball`] draws them) at contact distance `radius`, with
+    /// horizon `t_max`.
+    pub(crate) fn pair_of(a: Drawn, b: Drawn, radius: f64, t_max: f64) -> PairInput {
+        PairInput {
+            pos_a: a.0,
+            vel_a: a.1,
+            friction_a: a.2,
+            pos_b: b.0,
+            vel_b: b.1,
+            friction_b: b.2,
+            radius,
+            t_max,
+        }
     }
 
     /// The search's answer for a valid `pair`.
