@@ -296,16 +296,7 @@ mod tests {
                 runner_friction,
             );
             let (a, b) = if a_rests { (rest, run) } else { (run, rest) };
-            let input = PairInput {
-                pos_a: a.0,
-                vel_a: a.1,
-                friction_a: a.2,
-                pos_b: b.0,
-                vel_b: b.1,
-                friction_b: b.2,
-                radius,
-                t_max: f64::INFINITY,
-            };
+            let input = pair_of(a, b, radius, f64::INFINITY);
             if never_meet(&input) {
                 proven += 1;
                 assert_eq!(search(&input), None, "{input:?}");
