@@ -18,7 +18,7 @@ use crate::collision::after_stop::after_first_stop_of;
 use crate::collision::crossing::{FirstWindow, apart_by_window};
 use crate::collision::first_contact_given;
 use crate::collision::moving_entry::{WhileMoving, while_moving};
-use crate::collision::prefilter::{PairInput, never_touch, valid};
+use crate::collision::prefilter::{PairInput, screen_pair, valid};
 use crate::collision::straight;
 use crate::error::{
     InputError, InputErrorKind, check_friction, check_horizon, check_radius, finite,
@@ -242,18 +242,27 @@ fn solve_chunk_portable(
     let mut held = Held::default();
     for start in (0..out.len()).step_by(LANES) {
         let len = LANES.min(out.len() - start);
-        let (answers, crossing) = screen(pairs, offset + start, len);
-        for k in 0..len {
+        let screened = screen(pairs, offset + start, len);
+        match out.get_mut(start..start + LANES) {
+            Some(block) if len == LANES => block.copy_from_slice(&screened.answers),
+            _ => out[start..].copy_from_slice(&screened.answers[..len]),
+        }
+        // The pairs left open, one bit each: on random table pairs, about one a block.
+        let mut open = (screened.answers.iter().take(len).enumerate())
+            .fold(0u32, |bits, (k, x)| bits | (u32::from(x.is_nan()) << k));
+        while open != 0 {
+            let k = open.trailing_zeros() as usize;
+            open &= open - 1;
             let i = offset + start + k;
-            if crossing[k] {
-                // Answered when its block is settled.
+            // Answered when its block is settled.
+            if screened.crossing[k] {
                 held.crossing.push(i, (false, false));
+            } else if screened.at_rest[k] {
+                held.at_rest.push(i, (false, false));
             } else {
-                out[start + k] = if answers[k].is_nan() {
-                    search(pairs, i, None)?
-                } else {
-                    answers[k]
-                };
+                // Invalid, both at rest, one at rest beyond the closed form's range, no
+                // friction, or magnitudes beyond the lane-wise tests' range.
+                out[start + k] = search(pairs, i, None)?;
             }
         }
         // One call, the last block's draining everything: each stage is inlined once.
@@ -273,6 +282,9 @@ struct Held {
     /// Pairs the timing test left open, with what it proved: the first window apart, the
     /// second.
     open: Queue,
+    /// Valid pairs with one ball at rest that the screening left open in a block of moving
+    /// pairs, for the closed form ([`straight::contact`]).
+    at_rest: Queue,
 }
 
 /// Pair indices, each with two flags: room for a block and the most a stage adds before the
@@ -341,6 +353,9 @@ impl Held {
         out: &mut [f64],
         finish: bool,
     ) -> Result<(), InputError> {
+        if self.at_rest.len >= LANES || (finish && self.at_rest.len > 0) {
+            self.settle_at_rest(pairs, offset, out)?;
+        }
         loop {
             let test = self.crossing.len >= LANES || (finish && self.crossing.len > 0);
             // Settling first keeps the open queue below one block before a test adds to it.
@@ -352,6 +367,28 @@ impl Held {
                 return Ok(());
             }
         }
+    }
+
+    /// Answers a block of pairs with one ball at rest: the closed form where it applies, the
+    /// search's answer elsewhere.
+    #[inline(always)]
+    fn settle_at_rest(
+        &mut self,
+        pairs: &Pairs<'_>,
+        offset: usize,
+        out: &mut [f64],
+    ) -> Result<(), InputError> {
+        let (index, _, len) = self.at_rest.take();
+        let lanes = lanes(pairs, &index, len);
+        let answers = at_rest_answers(|k| lanes[k], &first_lanes(len));
+        for (&i, &answer) in index[..len].iter().zip(&answers) {
+            out[i - offset] = if answer.is_nan() {
+                search(pairs, i, None)?
+            } else {
+                answer
+            };
+        }
+        Ok(())
     }
 
     /// Runs the timing test on a block of crossing pairs: `∞` where it proves both windows
@@ -438,18 +475,25 @@ fn search(pairs: &Pairs<'_>, i: usize, moving: Option<WhileMoving>) -> Result<f6
         .unwrap_or(f64::INFINITY))
 }
 
-/// The answers that need no search, lane-wise, for pairs `start..start + len`
-/// (`len ≤ LANES`): `∞` for pairs proven apart ([`never_touch`]), the closed form's time (or
-/// `∞`) where one ball is at rest ([`straight::contact`]), and NaN for the rest (and for lanes
-/// past `len`); with them, which of the rest are valid moving pairs, for the timing test
-/// ([`apart_by_window`]). Whatever is left goes to the scalar search.
+/// What the screening of a block settles, and where the pairs it leaves open go.
+struct Screened {
+    /// `∞` for pairs proven apart ([`never_touch`]), in a block where every pair has one ball
+    /// at rest the closed form's time (or `∞`) where it applies; NaN for the rest (and for
+    /// lanes past the block's length).
+    answers: [f64; LANES],
+    /// Open pairs for the timing test ([`apart_by_window`]): valid, both balls moving.
+    crossing: [bool; LANES],
+    /// Open pairs for the closed form: valid, one ball at rest (in a block of moving pairs).
+    at_rest: [bool; LANES],
+}
+
+/// Screens pairs `start..start + len` (`len ≤ LANES`), lane-wise; whatever it leaves open and
+/// neither `crossing` nor `at_rest` goes to the scalar search.
 ///
 /// Each input is first copied as a whole block (a few vector moves, and no narrow stores
-/// that wide loads would then stall on), so that the arithmetic runs on whole vectors. The
-/// closed form gets exactly the inputs that the scalar search would give it, so it returns
-/// the same bits.
+/// that wide loads would then stall on), so that the arithmetic runs on whole vectors.
 #[inline(always)]
-fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> ([f64; LANES], [bool; LANES]) {
+fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> Screened {
     let (pos_a, vel_a) = (rows(pairs.pos_a, start, len), rows(pairs.vel_a, start, len));
     let (pos_b, vel_b) = (rows(pairs.pos_b, start, len), rows(pairs.vel_b, start, len));
     let (friction_a, friction_b) = (
@@ -470,61 +514,85 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> ([f64; LANES], [bool; 
         radius: radius[k],
         t_max: t_max[k],
     };
-    let rests = |v: [f64; 2]| (v[0] == 0.0) & (v[1] == 0.0);
-    let mut answers = [f64::NAN; LANES];
-    let mut open = [false; LANES];
-    let mut crossing = [false; LANES];
-    // A block where every pair has one ball at rest (a cue ball against the others, say)
-    // goes to the closed form alone, which settles misses as well as the screening does.
     let mut one_at_rest = [false; LANES];
     for (k, one) in one_at_rest.iter_mut().enumerate() {
         *one = rests(vel_a[k]) != rests(vel_b[k]);
     }
+    let mut screened = Screened {
+        answers: [f64::NAN; LANES],
+        crossing: [false; LANES],
+        at_rest: [false; LANES],
+    };
+    // A block where every pair has one ball at rest (a cue ball against the others, say)
+    // goes to the closed form alone, which settles misses as well as the screening does.
     if one_at_rest.iter().all(|&x| x) {
-        for (k, open) in open.iter_mut().enumerate() {
-            *open = valid(&lane(k)) & (k < len);
-        }
-    } else {
-        for (k, ((answer, open), crossing)) in answers
-            .iter_mut()
-            .zip(&mut open)
-            .zip(&mut crossing)
-            .enumerate()
-        {
-            let pair = lane(k);
-            let valid = valid(&pair) & (k < len);
-            let apart = valid & never_touch(&pair);
-            *answer = if apart { f64::INFINITY } else { f64::NAN };
-            // Left for the closed form: valid, not apart, exactly one ball at rest.
-            *open = valid & !apart & one_at_rest[k];
-            // Left for the timing test: valid, not apart, both moving.
-            *crossing = valid & !apart & !rests(pair.vel_a) & !rests(pair.vel_b);
+        screened.answers = at_rest_answers(lane, &first_lanes(len));
+        return screened;
+    }
+    let lanes = (screened.answers.iter_mut())
+        .zip(&mut screened.crossing)
+        .zip(&mut screened.at_rest);
+    for (k, ((answer, crossing), at_rest)) in lanes.enumerate() {
+        let pair = lane(k);
+        let (plain, apart) = screen_pair(&pair);
+        let (plain, apart) = (plain & (k < len), apart);
+        *answer = if plain & apart {
+            f64::INFINITY
+        } else {
+            f64::NAN
+        };
+        let open = plain & !apart;
+        *at_rest = open & one_at_rest[k];
+        *crossing = open & !rests(pair.vel_a) & !rests(pair.vel_b);
+    }
+    screened
+}
+
+/// The lanes `0..len` of a block.
+#[inline(always)]
+fn first_lanes(len: usize) -> [bool; LANES] {
+    let mut first = [false; LANES];
+    for (k, lane) in first.iter_mut().enumerate() {
+        *lane = k < len;
+    }
+    first
+}
+
+/// Whether a ball with this velocity is at rest.
+#[inline(always)]
+fn rests([vx, vy]: [f64; 2]) -> bool {
+    (vx == 0.0) & (vy == 0.0)
+}
+
+/// The closed form's answers for pairs with one ball at rest ([`straight::contact`]),
+/// lane-wise: for each lane `k` that is `open` and valid, where the closed form applies, its
+/// time (`∞` for none, or at or past the horizon); NaN elsewhere.
+///
+/// The closed form gets exactly the inputs that the scalar search would give it, so it returns
+/// the same bits.
+#[inline(always)]
+fn at_rest_answers(lane: impl Fn(usize) -> PairInput, open: &[bool; LANES]) -> [f64; LANES] {
+    let mut answers = [f64::NAN; LANES];
+    for (k, answer) in answers.iter_mut().enumerate() {
+        let pair = lane(k);
+        // The mover (A unless A rests) against the resting ball.
+        let ((p, v, mu), q) = if rests(pair.vel_a) {
+            ((pair.pos_b, pair.vel_b, pair.friction_b), pair.pos_a)
+        } else {
+            ((pair.pos_a, pair.vel_a, pair.friction_a), pair.pos_b)
+        };
+        let g0 = gap_value(
+            pair.pos_a[0] - pair.pos_b[0],
+            pair.pos_a[1] - pair.pos_b[1],
+            pair.radius,
+        );
+        let (applies, t) = straight::contact([p[0] - q[0], p[1] - q[1]], v, mu, pair.radius, g0);
+        let t = if t < pair.t_max { t } else { f64::INFINITY };
+        if open[k] & valid(&pair) & applies {
+            *answer = t;
         }
     }
-    // Most blocks of moving balls have none: skip the closed form's roots and divisions.
-    if open.iter().any(|&x| x) {
-        for (k, (answer, &open)) in answers.iter_mut().zip(&open).enumerate() {
-            let pair = lane(k);
-            // The mover (A unless A rests) against the resting ball.
-            let ((p, v, mu), q) = if rests(pair.vel_a) {
-                ((pair.pos_b, pair.vel_b, pair.friction_b), pair.pos_a)
-            } else {
-                ((pair.pos_a, pair.vel_a, pair.friction_a), pair.pos_b)
-            };
-            let g0 = gap_value(
-                pair.pos_a[0] - pair.pos_b[0],
-                pair.pos_a[1] - pair.pos_b[1],
-                pair.radius,
-            );
-            let (applies, t) =
-                straight::contact([p[0] - q[0], p[1] - q[1]], v, mu, pair.radius, g0);
-            let t = if t < pair.t_max { t } else { f64::INFINITY };
-            if open & applies {
-                *answer = t;
-            }
-        }
-    }
-    (answers, crossing)
+    answers
 }
 
 /// Rows `start..start + len` of `src` as a block of [`LANES`] (zeros past `len`).
@@ -742,6 +810,7 @@ fn first_error(x: Result<(), InputError>, y: Result<(), InputError>) -> Result<(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::collision::prefilter::never_touch;
     use crate::{CollisionOptions, collision_time_with};
 
     #[test]
@@ -911,25 +980,36 @@ mod tests {
             }
         }
         let (mut apart, mut closed) = (0, 0);
+        let one = |i: usize| PairInput {
+            pos_a: r.pos_a[i],
+            vel_a: r.vel_a[i],
+            friction_a: r.mu_a[i],
+            pos_b: r.pos_b[i],
+            vel_b: r.vel_b[i],
+            friction_b: r.mu_b[i],
+            radius: 0.05715,
+            t_max: r.t_max[i],
+        };
         for start in (0..r.pos_a.len()).step_by(LANES) {
             let len = LANES.min(r.pos_a.len() - start);
-            let (answers, _) = screen(&p, start, len);
+            let answers = screen(&p, start, len).answers;
             for (k, &answer) in answers.iter().enumerate().take(len) {
-                let i = start + k;
-                let one = PairInput {
-                    pos_a: r.pos_a[i],
-                    vel_a: r.vel_a[i],
-                    friction_a: r.mu_a[i],
-                    pos_b: r.pos_b[i],
-                    vel_b: r.vel_b[i],
-                    friction_b: r.mu_b[i],
-                    radius: 0.05715,
-                    t_max: r.t_max[i],
-                };
-                if never_touch(&one) {
-                    assert_eq!(answer, f64::INFINITY, "pair {i}");
+                if never_touch(&one(start + k)) {
+                    assert_eq!(answer, f64::INFINITY, "pair {}", start + k);
                     apart += 1;
-                } else if !answer.is_nan() {
+                }
+            }
+        }
+        // The closed form, lane-wise, on blocks of the pairs with one ball at rest.
+        let at_rest: Vec<usize> = (0..r.pos_a.len())
+            .filter(|&i| rests(r.vel_a[i]) != rests(r.vel_b[i]))
+            .collect();
+        for block in at_rest.chunks(LANES) {
+            let mut open = [false; LANES];
+            open[..block.len()].fill(true);
+            let answers = at_rest_answers(|k| one(block[k.min(block.len() - 1)]), &open);
+            for (&i, &answer) in block.iter().zip(&answers) {
+                if !answer.is_nan() {
                     assert_eq!(answer.to_bits(), portable[i].to_bits(), "pair {i}");
                     closed += 1;
                 }

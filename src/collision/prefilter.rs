@@ -48,19 +48,39 @@ pub(crate) const LIMIT: f64 = 1e100;
 /// Whether the two balls of `pair` provably never touch (and the inputs are valid and the
 /// motions bounded). `false` means "not proven".
 ///
+/// ```text
+/// never_touch(pair) == plain & apart, where (plain, apart) = screen_pair(pair)
+/// ```
+#[inline(always)]
+pub(crate) fn never_touch(pair: &PairInput) -> bool {
+    let (plain, apart) = screen_pair(pair);
+    plain & apart
+}
+
+/// Whether `pair` is plain: valid (as [`valid`]: every number finite, frictions ≥ 0,
+/// radius > 0, horizon ≥ 0) with bounded motions (each ball at rest, or moving with friction)
+/// and every magnitude in `[1/LIMIT, LIMIT]`; and, if so, whether its balls provably never
+/// touch (if not, that is meaningless).
+///
+/// A batch gets both for the price of the proof: its survivors that are plain need no other
+/// validation before the lane-wise stages.
+///
 /// Written without branches (comparisons combine with `&`, choices are selects) so that a
 /// loop over a block of pairs vectorises; the same function serves one pair.
 #[inline(always)]
-pub(crate) fn never_touch(pair: &PairInput) -> bool {
+pub(crate) fn screen_pair(pair: &PairInput) -> (bool, bool) {
     let [pax, pay] = pair.pos_a;
     let [vax, vay] = pair.vel_a;
     let [pbx, pby] = pair.pos_b;
     let [vbx, vby] = pair.vel_b;
     let (mu_a, mu_b, radius) = (pair.friction_a, pair.friction_b, pair.radius);
-    let speed_a = (vax * vax + vay * vay).sqrt();
-    let speed_b = (vbx * vbx + vby * vby).sqrt();
-    // Every coordinate the two segments start from is below `size` in magnitude.
-    let size = pax.abs().max(pay.abs()).max(pbx.abs().max(pby.abs())) + radius;
+    let (square_a, square_b) = (vax * vax + vay * vay, vbx * vbx + vby * vby);
+    let speed_a = square_a.sqrt();
+    let speed_b = square_b.sqrt();
+    // Every coordinate the two segments start from is below `size` in magnitude. A sum
+    // rather than a maximum: one instruction each, and a NaN or an infinity carries through
+    // to the range test below.
+    let size = ((pax.abs() + pay.abs()) + (pbx.abs() + pby.abs())) + radius;
     let (dx, dy) = (pbx - pax, pby - pay);
     // B's segment against A's line, then A's against B's (the offset reversed).
     let off_a = line_side(
@@ -84,18 +104,25 @@ pub(crate) fn never_touch(pair: &PairInput) -> bool {
         size,
     );
     // Valid and bounded, magnitudes plain: every rounding error stays relative (nothing
-    // overflows, nothing underflows enough to matter against the margin).
+    // overflows, nothing underflows enough to matter against the margin). This implies
+    // [`valid`]: every number is finite (NaN fails every comparison), frictions ≥ 0,
+    // radius > 0, horizon ≥ 0.
     let plain_range = |x: f64| (1.0 / LIMIT..=LIMIT).contains(&x);
-    // At rest (exactly), or moving at a plain speed with plain friction (a frictionless mover
-    // runs for ever, and an underflowing |v|² would pass for rest).
-    let bounded = |[vx, vy]: [f64; 2], speed: f64, mu: f64| {
-        ((vx == 0.0) & (vy == 0.0)) | (plain_range(speed) & plain_range(mu))
+    // At rest (exactly) with a friction ≥ 0, or moving at a plain speed with plain friction
+    // (a frictionless mover runs for ever, and an underflowing |v|² would pass for rest).
+    // The speed's range is tested on its square, which is ready sooner.
+    let plain_square = |x: f64| (1.0 / (LIMIT * LIMIT)..=LIMIT * LIMIT).contains(&x);
+    let bounded = |[vx, vy]: [f64; 2], square: f64, mu: f64| {
+        (mu <= LIMIT)
+            & (((vx == 0.0) & (vy == 0.0) & (mu >= 0.0))
+                | (plain_square(square) & (mu >= 1.0 / LIMIT)))
     };
     let plain = (size <= LIMIT)
         & plain_range(radius)
-        & bounded(pair.vel_a, speed_a, mu_a)
-        & bounded(pair.vel_b, speed_b, mu_b);
-    (off_a | off_b) & valid(pair) & plain
+        & (pair.t_max >= 0.0)
+        & bounded(pair.vel_a, square_a, mu_a)
+        & bounded(pair.vel_b, square_b, mu_b);
+    (plain, off_a | off_b)
 }
 
 /// Whether the segment of the ball with velocity `v`, speed `speed` and friction `mu`, which
@@ -341,6 +368,54 @@ mod tests {
             vel_b: [1.0, 0.0],
             ..far
         }));
+    }
+
+    #[test]
+    fn plain_pairs_are_valid() {
+        // Every field ordinary (0 included) or, one time in ten, hostile: whatever
+        // `screen_pair` calls plain, `valid` accepts (the batch sends plain survivors on
+        // without validating them).
+        let hostile = [
+            -0.0,
+            -1.0,
+            1e-120,
+            1e120,
+            f64::MAX,
+            f64::MIN_POSITIVE,
+            f64::INFINITY,
+            -f64::INFINITY,
+            f64::NAN,
+        ];
+        let mut rng = Rng(0xba5e);
+        let mut draw = |low: f64, high: f64| {
+            let pick = rng.uniform(0.0, 10.0 * hostile.len() as f64) as usize;
+            match hostile.get(pick) {
+                Some(&x) => x,
+                None if pick.is_multiple_of(4) => 0.0,
+                None => rng.uniform(low, high),
+            }
+        };
+        let (mut plain_count, mut rejected) = (0, 0);
+        for _ in 0..100_000 {
+            let pair = PairInput {
+                pos_a: [draw(-2.0, 2.0), draw(-2.0, 2.0)],
+                vel_a: [draw(-3.0, 3.0), draw(-3.0, 3.0)],
+                friction_a: draw(0.0, 2.0),
+                pos_b: [draw(-2.0, 2.0), draw(-2.0, 2.0)],
+                vel_b: [draw(-3.0, 3.0), draw(-3.0, 3.0)],
+                friction_b: draw(0.0, 2.0),
+                radius: draw(0.01, 0.1),
+                t_max: draw(0.0, 10.0),
+            };
+            let (plain, _) = screen_pair(&pair);
+            assert!(!plain || valid(&pair), "{pair:?}");
+            plain_count += usize::from(plain);
+            rejected += usize::from(!valid(&pair));
+        }
+        assert!(
+            plain_count > 10_000 && rejected > 10_000,
+            "{plain_count} plain, {rejected} invalid"
+        );
     }
 
     #[test]
