@@ -147,7 +147,7 @@ pub fn collision_times(
     })
 }
 
-/// Pairs tested together by the lane-wise tests ([`never_touch`], [`straight::contact`],
+/// Pairs tested together by the lane-wise tests ([`screen_pair`], [`straight::contact`],
 /// [`apart_by_window`], [`while_moving`]): a block fills a vector register or two per input, and the compiler turns
 /// the block loops into vector code.
 const LANES: usize = 8;
@@ -230,7 +230,9 @@ unsafe fn solve_chunk_avx512(
 /// Screens blocks of [`LANES`] pairs ([`screen`]); the moving pairs it leaves open are
 /// gathered into blocks of their own for the timing test ([`apart_by_window`]), those it
 /// leaves open into blocks of their own again for the first window's plain contacts
-/// ([`while_moving`]), and whatever is still open goes to the full validated search.
+/// ([`while_moving`]), and whatever is still open goes to the full validated search. Pairs
+/// with one ball at rest that it leaves open among moving pairs are gathered into blocks for
+/// the closed form ([`straight::contact`]).
 /// Invalid pairs reach the search as soon as they are met, so the first error found is the
 /// lowest index's (the pairs held back are valid: they cannot fail).
 #[inline(always)]
@@ -477,7 +479,7 @@ fn search(pairs: &Pairs<'_>, i: usize, moving: Option<WhileMoving>) -> Result<f6
 
 /// What the screening of a block settles, and where the pairs it leaves open go.
 struct Screened {
-    /// `∞` for pairs proven apart ([`never_touch`]), in a block where every pair has one ball
+    /// `∞` for pairs proven apart ([`screen_pair`]), in a block where every pair has one ball
     /// at rest the closed form's time (or `∞`) where it applies; NaN for the rest (and for
     /// lanes past the block's length).
     answers: [f64; LANES],
