@@ -537,7 +537,7 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> Screened {
     for (k, ((answer, crossing), at_rest)) in lanes.enumerate() {
         let pair = lane(k);
         let (plain, apart) = screen_pair(&pair);
-        let (plain, apart) = (plain & (k < len), apart);
+        let plain = plain & (k < len);
         *answer = if plain & apart {
             f64::INFINITY
         } else {
