@@ -355,13 +355,14 @@ impl Held {
         out: &mut [f64],
         finish: bool,
     ) -> Result<(), InputError> {
-        while self.at_rest.len >= LANES || (finish && self.at_rest.len > 0) {
-            self.settle_at_rest(pairs, offset, out)?;
-        }
+        // Every queue is drained the same way: full blocks, and at the end whatever is held.
+        let ready = |queue: &Queue| queue.len >= LANES || (finish && queue.len > 0);
         loop {
-            let test = self.crossing.len >= LANES || (finish && self.crossing.len > 0);
+            let test = ready(&self.crossing);
             // Settling first keeps the open queue below one block before a test adds to it.
-            if self.open.len >= LANES || (finish && !test && self.open.len > 0) {
+            if ready(&self.at_rest) {
+                self.settle_at_rest(pairs, offset, out)?;
+            } else if self.open.len >= LANES || (finish && !test && self.open.len > 0) {
                 self.settle_first_window(pairs, offset, out)?;
             } else if test {
                 self.time_test(pairs, offset, out);
