@@ -5,7 +5,7 @@
 //! covered (increasing until it stops at `τ`, where `σ = τ/2`). The gap is then a quadratic in
 //! `σ`, `G(σ) = |v|²σ² + 2(Δ·v)σ + |Δ|² − r²`, whose smaller root is the contact if it comes
 //! before the stop; `t` follows from `σ` in a form without cancellation. This replaces two
-//! root searches (critical point and entry) by three square roots and two divisions.
+//! root searches (critical point and entry) by three square roots and one division.
 
 use crate::motion::Ball;
 
@@ -38,7 +38,7 @@ pub(crate) fn first_contact(
 /// friction `μ`: whether it applies, and the contact time (`∞` for none).
 ///
 /// Branch-free (choices are selects), so that the batch evaluates it lane-wise; the scalar
-/// [`first_contact`] calls the same function. Three square roots and two divisions.
+/// [`first_contact`] calls the same function. Three square roots and one division.
 #[inline(always)]
 pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], mu: f64, radius: f64, g0: f64) -> (bool, f64) {
     let [dx, dy] = delta;
@@ -46,9 +46,9 @@ pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], mu: f64, radius: f64, g0: f6
     let speed2 = vx * vx + vy * vy;
     // Products of up to four lengths or speeds (the discriminant) stay in the normal range
     // for these magnitudes; elsewhere the general search, which scales, answers.
-    let plain = (1e-150..=1e150).contains(&speed2)
-        & (1e-75..=1e75).contains(&radius)
-        & (dx.abs().max(dy.abs()) <= 1e75)
+    let plain = (1e-100..=1e100).contains(&speed2)
+        & (1e-50..=1e50).contains(&radius)
+        & (dx.abs().max(dy.abs()) <= 1e50)
         & (g0 > 0.0);
     // With σ = s/|v| (time, slowed by friction: σ = t − t²/(2τ)), d = Δ + v·σ and
     // G = |v|²σ² + 2(Δ·v)σ + g0: no unit vector (and its roundings) is needed.
@@ -56,23 +56,24 @@ pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], mu: f64, radius: f64, g0: f6
     let approach = dx * vx + dy * vy;
     // G's discriminant/4 = |v|²·(r² − h²) = (r|v|)² − |Δ×v|², h the line's distance from
     // the resting centre: ≤ 0 when the line passes outside or exactly tangent. Formed without
-    // |v| (the difference fused), so that its square root need not wait for |v|'s.
+    // |v| (the difference fused), so that its square root runs beside |v|'s.
     let cross = dx * vy - dy * vx;
     let disc = (radius * radius).mul_add(speed2, -cross * cross);
     let speed = speed2.sqrt();
     let meets = (approach < 0.0) & (disc > 0.0);
     // The smaller root, without cancellation (approach < 0): σ = g0/D.
     let d = disc.max(0.0).sqrt() - approach;
-    // The contact comes before the stop when σ < τ/2 = |v|/(2μ), that is when D > k with
-    // k = 2·g0·μ/|v|; k needs no root of G, so its division runs beside √disc.
-    let k = (2.0 * g0 * mu) / speed;
-    let before_stop = d > k;
-    // σ = t − t²/(2τ)  ⇒  t = 2σ/(1 + √(1 − k/D)) = 2·g0/(D + √(D·(D − k))): one division
-    // after the roots (D·(D − k) stays normal for the magnitudes `plain` admits).
-    let t = (2.0 * g0) / (d + (d * (d - k)).max(0.0).sqrt());
-    // A contact whose time overflowed, or whose D is so small that D·(D − k) could lose
-    // digits to underflow, is left to the general search.
-    let settled = !meets | !before_stop | (t.is_finite() & (d >= 1e-100));
+    // In E = D·|v| and m = 2·g0·μ the contact comes before the stop (σ < τ/2 = |v|/(2μ))
+    // when E > m, and σ = t − t²/(2τ) gives t = 2σ/(1 + √(1 − m/E)), that is
+    // t = 2·g0/(E + √(E·(E − m)))·|v|: one division, and no root waits for another division.
+    let e = d * speed;
+    let m = 2.0 * g0 * mu;
+    let before_stop = e > m;
+    let t = (2.0 * g0) / (e + (e * (e - m)).max(0.0).sqrt()) * speed;
+    // A contact whose time overflowed, or whose E is so small that E·(E − m) could lose
+    // digits to underflow, is left to the general search (E·(E − m) stays below the overflow
+    // for the magnitudes `plain` admits).
+    let settled = !meets | !before_stop | (t.is_finite() & (e >= 1e-100));
     let hit = meets & before_stop;
     (plain & settled, if hit { t } else { f64::INFINITY })
 }
