@@ -1,8 +1,11 @@
 //! Collision-time kernel benchmarks on the sets of issue 5: random table pairs, all-grazing
-//! pairs, a ball at rest, and batch throughput (10³ … 10⁷ pairs) with one and two threads.
+//! pairs, a ball at rest, and batch throughput (10³ … 10⁷ pairs) with one and two threads;
+//! and, for scale, the floor under any batch kernel on this machine: reading every input of a
+//! batch once and writing one number per pair.
 //!
 //! `cargo bench --bench collision`; criterion prints the median time per iteration, and the
-//! throughput in pairs per second (elements/s). `-- kernel` or `-- batch` selects a group.
+//! throughput in pairs per second (elements/s). `-- kernel`, `-- batch` or `-- floor` selects
+//! a group.
 //! The one-thread kernel groups time the thread's CPU time (see [`ThreadCpuTime`]), the batch
 //! groups wall time (several threads).
 
@@ -291,10 +294,35 @@ fn throughput(c: &mut Criterion) {
     group.finish();
 }
 
+/// Every input of pair `i` summed: what a kernel that reads each input once and does no
+/// arithmetic would cost. The sum keeps the reads from being optimised away.
+fn read_every_input(s: &Set, out: &mut [f64]) {
+    let rows =
+        (s.pos_a.iter().zip(&s.vel_a).zip(&s.mu_a)).zip(s.pos_b.iter().zip(&s.vel_b).zip(&s.mu_b));
+    for (x, (((pa, va), ma), ((pb, vb), mb))) in out.iter_mut().zip(rows) {
+        *x = (pa[0] + pa[1]) + (va[0] + va[1]) + ma + (pb[0] + pb[1]) + (vb[0] + vb[1]) + mb;
+    }
+}
+
+/// The floor: one thread reading a set of 10⁶ random table pairs from memory (88 bytes a
+/// pair with the output; the batch group's 10⁶ pairs pay it too). In cache the floor is far
+/// lower, and this loop, compiled for the baseline CPU, would not show it.
+fn floor(c: &mut Criterion<ThreadCpuTime>) {
+    let mut group = c.benchmark_group("floor_read_inputs");
+    let n = 1_000_000;
+    let s = set(Kind::RandomTable, n, 11);
+    let mut out = vec![0.0; n];
+    group.throughput(Throughput::Elements(n as u64));
+    group.bench_function(BenchmarkId::from_parameter(n), |bench| {
+        bench.iter(|| read_every_input(black_box(&s), &mut out))
+    });
+    group.finish();
+}
+
 criterion_group! {
     name = kernels;
     config = Criterion::default().with_measurement(ThreadCpuTime);
-    targets = kernel
+    targets = kernel, floor
 }
 criterion_group!(batches, throughput);
 criterion_main!(kernels, batches);
