@@ -14,6 +14,7 @@
 //! `TypeError` naming it too. Nothing here panics on any input.
 
 use std::num::NonZeroUsize;
+use std::sync::OnceLock;
 
 use numpy::ndarray::{Dim, Dimension, Ix2};
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray, PyReadonlyArray1};
@@ -116,14 +117,21 @@ fn threads(num_threads: Option<i64>) -> PyResult<Threads> {
     match num_threads {
         None => Ok(Threads::All),
         Some(n) if n >= 1 => {
-            let cores = std::thread::available_parallelism().map_or(1, NonZeroUsize::get);
-            let n = usize::try_from(n).unwrap_or(usize::MAX).min(cores);
+            let n = usize::try_from(n).unwrap_or(usize::MAX).min(cores());
             Ok(NonZeroUsize::new(n).map_or(Threads::All, Threads::AtMost))
         }
         Some(n) => Err(PyValueError::new_err(format!(
             "num_threads: must be None (all cores) or ≥ 1, got {n}"
         ))),
     }
+}
+
+/// The cores this process may use, read once: `available_parallelism` reads the cgroup quota
+/// and the affinity mask on every call (~25 µs on Linux), more than a call on a few hundred
+/// pairs costs in all.
+fn cores() -> usize {
+    static CORES: OnceLock<usize> = OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, NonZeroUsize::get))
 }
 
 /// Collision times of N pairs (see `ballcollide.collision_times`); arrays must be
