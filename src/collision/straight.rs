@@ -44,8 +44,9 @@ pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], mu: f64, radius: f64, g0: f6
     let [dx, dy] = delta;
     let [vx, vy] = v;
     let speed2 = vx * vx + vy * vy;
-    // Products of up to four lengths or speeds (the discriminant) stay in the normal range
-    // for these magnitudes; elsewhere the general search, which scales, answers.
+    // Products of up to six lengths or speeds (E·(E − m) below: E is a length times |v|²)
+    // stay in the normal range for these magnitudes; elsewhere the general search, which
+    // scales, answers.
     let plain = (1e-100..=1e100).contains(&speed2)
         & (1e-50..=1e50).contains(&radius)
         & (dx.abs().max(dy.abs()) <= 1e50)
