@@ -165,10 +165,10 @@ def make_set(name: str, n: int, seed: int) -> Pairs:
 # ballcollide
 
 
-def bc_times(p: Pairs, threads: int | None) -> np.ndarray:
-    """ballcollide's collision times (``inf`` for none)."""
+def bc_times(p: Pairs, threads: int | None, out: np.ndarray | None = None) -> np.ndarray:
+    """ballcollide's collision times (``inf`` for none), into ``out`` if given."""
     return bc.collision_times(
-        p.pos_a, p.vel_a, p.mu_a, p.pos_b, p.vel_b, p.mu_b, p.radius, num_threads=threads
+        p.pos_a, p.vel_a, p.mu_a, p.pos_b, p.vel_b, p.mu_b, p.radius, num_threads=threads, out=out
     )
 
 
@@ -701,10 +701,11 @@ def rust_kernel(
 def overhead(args: argparse.Namespace) -> None:
     """``collision_times`` from Python vs the Rust kernel on the same 10⁶ pairs, 1 thread.
 
-    Python and Rust alternate for ``--overhead-rounds`` rounds (each the median of
-    ``--repeats`` calls), so that a change of load on shared cores hits both alike. The Rust
-    kernel runs twice per round: reusing one output buffer (the kernel alone) and with a
-    fresh buffer per call (what the binding does: it returns a new array every call).
+    Like is timed against like: Python writing into one array passed as ``out=`` against the
+    kernel reusing one buffer, and Python returning a new array each call against the kernel
+    writing into a fresh buffer each call (a fresh array costs its page faults, whoever
+    allocates it). The four alternate for ``--overhead-rounds`` rounds (each the median of
+    ``--repeats`` calls), so that a change of load on shared cores hits all alike.
     """
     data = make_set("random", args.overhead_pairs, args.seed)
     print(f"\n## Python overhead: {len(data)} random pairs, 1 thread, median of {args.repeats}")
@@ -715,33 +716,53 @@ def overhead(args: argparse.Namespace) -> None:
     one = data.head(1)
     fixed, _ = median_time(lambda: bc_times(one, 1), 1000)
     print(f"python: one call on 1 pair (fixed cost per call) {fixed * 1e6:.2f} µs")
-    py, rs, rf = [], [], []
+    buffer = np.empty(len(data))
+    rounds: dict[str, list[float]] = {"py_out": [], "rust": [], "py_new": [], "rust_fresh": []}
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "pairs.bin"
         write_raw(data, path)
         for k in range(args.overhead_rounds):
-            py_s, _ = median_time(lambda: bc_times(data, 1), args.repeats)
+            py_out, _ = median_time(lambda: bc_times(data, 1, out=buffer), args.repeats)
             rust = rust_kernel(args, path, "1")
+            py_new, _ = median_time(lambda: bc_times(data, 1), args.repeats)
             fresh = rust_kernel(args, path, "1", fresh=True)
             if rust is None or fresh is None:
                 return
-            py.append(py_s / len(data) * 1e9)
-            rs.append(float(rust["median_ns_per_pair"]))
-            rf.append(float(fresh["median_ns_per_pair"]))
-            same = int(rust["hits"]) == finite.size and float(rust["sum"]) == total
-            print(
-                f"round {k + 1}: python {py[-1]:.3f}, rust {rs[-1]:.3f}, rust fresh buffer "
-                f"{rf[-1]:.3f} ns/pair; overhead {(py[-1] - rs[-1]) / rs[-1] * 100:+.2f} % "
-                f"(vs fresh {(py[-1] - rf[-1]) / rf[-1] * 100:+.2f} %); same answers: {same}"
+            for key, value in [
+                ("py_out", py_out / len(data) * 1e9),
+                ("rust", float(rust["median_ns_per_pair"])),
+                ("py_new", py_new / len(data) * 1e9),
+                ("rust_fresh", float(fresh["median_ns_per_pair"])),
+            ]:
+                rounds[key].append(value)
+            same = (
+                int(rust["hits"]) == finite.size
+                and float(rust["sum"]) == total
+                and np.array_equal(buffer, times)
             )
-    p, r, f = np.array(py), np.array(rs), np.array(rf)
+            r = {key: values[-1] for key, values in rounds.items()}
+            print(
+                f"round {k + 1}: python out= {r['py_out']:.3f}, rust {r['rust']:.3f} ns/pair "
+                f"({(r['py_out'] - r['rust']) / r['rust'] * 100:+.2f} %); python new array "
+                f"{r['py_new']:.3f}, rust fresh buffer {r['rust_fresh']:.3f} ns/pair "
+                f"({(r['py_new'] - r['rust_fresh']) / r['rust_fresh'] * 100:+.2f} %); "
+                f"same answers: {same}"
+            )
+    a = {key: np.array(values) for key, values in rounds.items()}
+    med = {key: float(np.median(values)) for key, values in a.items()}
     print(
-        f"medians over rounds: python {np.median(p):.3f}, rust {np.median(r):.3f}, rust fresh "
-        f"buffer {np.median(f):.3f} ns/pair; overhead = (python − rust)/rust: "
-        f"{(np.median(p) - np.median(r)) / np.median(r) * 100:+.2f} % from the medians, "
-        f"{np.median((p - r) / r) * 100:+.2f} % median of rounds "
-        f"(vs fresh buffer {np.median((p - f) / f) * 100:+.2f} %)"
+        f"medians over rounds: python out= {med['py_out']:.3f}, rust {med['rust']:.3f}, python "
+        f"new array {med['py_new']:.3f}, rust fresh buffer {med['rust_fresh']:.3f} ns/pair"
     )
+    for label, py, rust in [
+        ("out= vs reused buffer", "py_out", "rust"),
+        ("new array vs fresh buffer", "py_new", "rust_fresh"),
+    ]:
+        print(
+            f"overhead = (python − rust)/rust, {label}: "
+            f"{(med[py] - med[rust]) / med[rust] * 100:+.2f} % from the medians, "
+            f"{np.median((a[py] - a[rust]) / a[rust]) * 100:+.2f} % median of rounds"
+        )
 
 
 # ---------------------------------------------------------------------------------------------
@@ -824,7 +845,7 @@ def parse(argv: Sequence[str] | None) -> argparse.Namespace:
     ap.add_argument("--plot-peer-max", type=int, default=1_000_000, help="largest N, peers")
     ap.add_argument("--overhead", action="store_true", help="Python vs Rust kernel, 1 thread")
     ap.add_argument("--overhead-pairs", type=int, default=1_000_000)
-    ap.add_argument("--overhead-rounds", type=int, default=3, help="Python/Rust alternations")
+    ap.add_argument("--overhead-rounds", type=int, default=5, help="Python/Rust alternations")
     ap.add_argument("--kernel-bin", help="prebuilt examples/kernel_timing binary (else cargo)")
     args = ap.parse_args(argv)
     if args.quick:

@@ -16,9 +16,10 @@
 use std::num::NonZeroUsize;
 use std::sync::OnceLock;
 
-use numpy::ndarray::{Dim, Dimension, Ix2};
-use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray, PyReadonlyArray1};
-use numpy::{PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods};
+use numpy::ndarray::{Dim, Dimension, Ix1, Ix2};
+use numpy::{BorrowError, PyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray};
+use numpy::{PyReadonlyArray1, PyReadonlyArray2, PyReadwriteArray};
+use numpy::{PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyMemoryError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use rayon::prelude::*;
@@ -111,6 +112,50 @@ fn rows<'a>(name: &str, a: &'a PyReadonlyArray2<'_, f64>) -> PyResult<&'a [[f64;
     Ok(flat.as_chunks::<2>().0)
 }
 
+/// A caller's output array (`out=`), borrowed for writing: a float64 array of dimension `D`
+/// (else a `TypeError`), of shape `shape`, C-contiguous, writeable and sharing no memory with
+/// the inputs, which are borrowed read-only while it is written (else a `ValueError`; numpy's
+/// borrow tracking in rust-numpy detects the overlap).
+///
+/// Its shape is checked here, before the core sees it: the core measures every input against
+/// the output's length, and would blame the first input for an output of the wrong length.
+fn out_array<'py, D: Dimension>(
+    obj: &Bound<'py, PyAny>,
+    shape: &[usize],
+    expected: &str,
+) -> PyResult<PyReadwriteArray<'py, f64, D>> {
+    let array = obj
+        .cast::<PyArray<f64, D>>()
+        .map_err(|_| type_error("out", expected, obj))?;
+    if array.shape() != shape {
+        return Err(PyValueError::new_err(format!(
+            "out: expected shape {}, got {}",
+            shape_text(shape),
+            shape_text(array.shape())
+        )));
+    }
+    if !array.is_c_contiguous() {
+        return Err(layout_error("out"));
+    }
+    array.try_readwrite().map_err(|e| {
+        PyValueError::new_err(match e {
+            BorrowError::NotWriteable => "out: the array is read-only",
+            _ => "out: the array shares memory with an input",
+        })
+    })
+}
+
+/// A shape as numpy prints it: `(3,)`, `(3, 2)`.
+fn shape_text(shape: &[usize]) -> String {
+    match shape {
+        [n] => format!("({n},)"),
+        _ => {
+            let dims: Vec<String> = shape.iter().map(usize::to_string).collect();
+            format!("({})", dims.join(", "))
+        }
+    }
+}
+
 /// `num_threads`: `None` → every core; `n ≥ 1` → at most `n` (and at most the cores there are,
 /// so that a huge `n` cannot start thousands of threads).
 fn threads(num_threads: Option<i64>) -> PyResult<Threads> {
@@ -137,7 +182,7 @@ fn cores() -> usize {
 /// Collision times of N pairs (see `ballcollide.collision_times`); arrays must be
 /// C-contiguous float64.
 #[pyfunction]
-#[pyo3(signature = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max=None, num_threads=None))]
+#[pyo3(signature = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max=None, num_threads=None, out=None))]
 #[allow(clippy::too_many_arguments)]
 fn collision_times<'py>(
     py: Python<'py>,
@@ -150,6 +195,7 @@ fn collision_times<'py>(
     radius: &Bound<'py, PyAny>,
     t_max: Option<&Bound<'py, PyAny>>,
     num_threads: Option<i64>,
+    out: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let pos_a = array::<Ix2>("pos_a", pos_a, ROWS)?;
     let vel_a = array::<Ix2>("vel_a", vel_a, ROWS)?;
@@ -173,11 +219,21 @@ fn collision_times<'py>(
         t_max: t_max.per_pair("t_max")?,
     };
     let threads = threads(num_threads)?;
-    let mut out = vec![0.0; pairs.pos_a.len()];
-    py.detach(|| batch::collision_times(&pairs, &mut out, threads))
+    let n = pairs.pos_a.len();
+    let Some(out) = out else {
+        let mut out = vec![0.0; n];
+        py.detach(|| batch::collision_times(&pairs, &mut out, threads))
+            .map_err(value_error)?;
+        return Ok(PyArray1::from_vec(py, out));
+    };
+    let mut written = out_array::<Ix1>(out, &[n], OUT_TIMES)?;
+    let out = written.as_slice_mut().map_err(|_| layout_error("out"))?;
+    py.detach(|| batch::collision_times(&pairs, out, threads))
         .map_err(value_error)?;
-    Ok(PyArray1::from_vec(py, out))
+    Ok((**written).clone())
 }
+
+const OUT_TIMES: &str = "a 1-D float64 array of shape (N,)";
 
 /// The collision time of one pair (`inf` if none); the same search as one row of
 /// `collision_times`, without an index in error messages.
@@ -213,7 +269,8 @@ fn collision_time(
 
 /// Centres of N balls at time `t` (see `ballcollide.positions_at`).
 #[pyfunction]
-#[pyo3(signature = (pos, vel, friction, t, num_threads=None))]
+#[pyo3(signature = (pos, vel, friction, t, num_threads=None, out=None))]
+#[allow(clippy::too_many_arguments)]
 fn positions_at<'py>(
     py: Python<'py>,
     pos: &Bound<'py, PyAny>,
@@ -221,6 +278,7 @@ fn positions_at<'py>(
     friction: &Bound<'py, PyAny>,
     t: &Bound<'py, PyAny>,
     num_threads: Option<i64>,
+    out: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let pos = array::<Ix2>("pos", pos, ROWS)?;
     let vel = array::<Ix2>("vel", vel, ROWS)?;
@@ -232,10 +290,18 @@ fn positions_at<'py>(
     let t = t.per_pair("t")?;
     let threads = threads(num_threads)?;
     let n = pos.len();
-    let mut out = vec![[0.0; 2]; n];
-    py.detach(|| batch::positions_at(pos, vel, friction, t, &mut out, threads))
+    let Some(out) = out else {
+        let mut out = vec![[0.0; 2]; n];
+        py.detach(|| batch::positions_at(pos, vel, friction, t, &mut out, threads))
+            .map_err(value_error)?;
+        return PyArray1::from_vec(py, out.into_flattened()).reshape(Dim([n, 2]));
+    };
+    let mut written = out_array::<Ix2>(out, &[n, 2], ROWS)?;
+    let flat = written.as_slice_mut().map_err(|_| layout_error("out"))?;
+    let out = flat.as_chunks_mut::<2>().0;
+    py.detach(|| batch::positions_at(pos, vel, friction, t, out, threads))
         .map_err(value_error)?;
-    PyArray1::from_vec(py, out.into_flattened()).reshape(Dim([n, 2]))
+    Ok((**written).clone())
 }
 
 /// Real roots of N polynomials of degree k = 1..4, coefficients `(N, k+1)` highest degree

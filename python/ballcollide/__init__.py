@@ -187,6 +187,7 @@ def collision_times(
     *,
     t_max: PerPair = np.inf,
     num_threads: int | None = None,
+    out: npt.NDArray[np.float64] | None = None,
 ) -> npt.NDArray[np.float64]:
     """The collision time of each of N pairs of balls (``inf`` where they never touch).
 
@@ -207,11 +208,17 @@ def collision_times(
     num_threads
         ``None`` (default): all cores. An int ``n ≥ 1``: at most ``n`` threads. The result
         does not depend on it, bit for bit.
+    out
+        ``None`` (default): the times go into a new array. Else a writeable, C-contiguous
+        float64 array of shape ``(N,)`` that shares no memory with the inputs: the times are
+        written into it and it is returned, as numpy's ``out=``. A simulator that asks again
+        after every event saves the allocation, and the page faults of a fresh array, on
+        each call. If the call raises, its contents are unspecified.
 
     Returns
     -------
     numpy.ndarray
-        Shape ``(N,)``, float64.
+        Shape ``(N,)``, float64 (``out`` itself if given).
 
     Raises
     ------
@@ -219,9 +226,11 @@ def collision_times(
         A NaN or infinite number, a negative friction, ``radius ≤ 0``, a negative ``t_max``,
         a wrong shape or a length that differs from ``pos_a``'s; the message names the
         argument and the first offending index, e.g. ``friction_b[7]: friction must be ≥ 0,
-        got -0.1``.
+        got -0.1``. An ``out`` of the wrong shape, not C-contiguous, read-only or sharing
+        memory with an input.
     TypeError
-        An argument that is not made of real numbers, or a non-integer ``num_threads``.
+        An argument that is not made of real numbers, a non-integer ``num_threads``, or an
+        ``out`` that is not a float64 array of one dimension.
 
     Notes
     -----
@@ -240,6 +249,9 @@ def collision_times(
     array([0.5 ,  inf, 0.25])
     >>> bc.collision_times(pos_a, vel_a, [0.0, 0.0, 8.0], pos_b, np.zeros((3, 2)), 0.0, 0.5)
     array([0.5, inf, inf])
+    >>> times = np.empty(3)
+    >>> bc.collision_times(pos_a, vel_a, 0.0, pos_b, np.zeros((3, 2)), 0.0, 0.5, out=times)
+    array([0.5 ,  inf, 0.25])
     """
     return _core.collision_times(
         _rows("pos_a", pos_a),
@@ -251,6 +263,7 @@ def collision_times(
         _per_pair("radius", radius),
         _per_pair("t_max", t_max),
         _threads(num_threads),
+        out,
     )
 
 
@@ -261,6 +274,7 @@ def positions_at(
     t: PerPair,
     *,
     num_threads: int | None = None,
+    out: npt.NDArray[np.float64] | None = None,
 ) -> npt.NDArray[np.float64]:
     """The centres of N balls at time ``t``; a ball that has stopped stays where it stopped.
 
@@ -276,11 +290,13 @@ def positions_at(
         Scalars or shape ``(N,)``: friction decelerations (``≥ 0``) and times (finite).
     num_threads
         As in :func:`collision_times`.
+    out
+        As in :func:`collision_times`, of shape ``(N, 2)``.
 
     Returns
     -------
     numpy.ndarray
-        Shape ``(N, 2)``, float64.
+        Shape ``(N, 2)``, float64 (``out`` itself if given).
 
     Examples
     --------
@@ -296,6 +312,7 @@ def positions_at(
         _per_pair("friction", friction),
         _per_pair("t", t),
         _threads(num_threads),
+        out,
     )
 
 

@@ -36,12 +36,15 @@ def collision_times(
     radius: _PerPair,
     t_max: _PerPair | None = None,
     num_threads: int | None = None,
+    out: _F64Array1 | None = None,
 ) -> _F64Array1:
     """Collision times of N pairs, ``inf`` where none (see ``ballcollide.collision_times``).
 
     ``pos_*``, ``vel_*``: C-contiguous float64 arrays of shape ``(N, 2)``; ``friction_*``,
     ``radius``, ``t_max`` (``None``: ``inf``): a float or a contiguous float64 array of shape
-    ``(N,)``. ``num_threads``: ``None`` for all cores, else ``≥ 1``. Releases the GIL.
+    ``(N,)``. ``num_threads``: ``None`` for all cores, else ``≥ 1``. ``out``: ``None``, or a
+    writeable C-contiguous float64 array of shape ``(N,)`` sharing no memory with the
+    inputs, written and returned. Releases the GIL.
 
     Raises ``ValueError`` naming the argument and first bad index for invalid values,
     wrong shapes, lengths or layouts, and ``TypeError`` for other types or dtypes.
@@ -69,10 +72,12 @@ def positions_at(
     friction: _PerPair,
     t: _PerPair,
     num_threads: int | None = None,
+    out: _F64Array2 | None = None,
 ) -> _F64Array2:
     """Centres of N balls at time ``t``, shape ``(N, 2)`` (see ``ballcollide.positions_at``).
 
-    A ball that has stopped stays where it stopped. Releases the GIL.
+    A ball that has stopped stays where it stopped. ``out``: as in :func:`collision_times`,
+    shape ``(N, 2)``. Releases the GIL.
     """
 
 def real_roots(coeffs: _F64Array2) -> _F64Array2:

@@ -515,6 +515,78 @@ def test_core_type_errors_name_the_argument() -> None:
         _core.collision_times(a, a, 0.1, a, np.zeros((4, 2))[::2], 0.1, 1.0)
 
 
+# --- out= ---------------------------------------------------------------------------------
+
+
+def test_out_receives_the_same_bits_and_is_returned() -> None:
+    batch = random_batch(5_000, seed=23)
+    fresh = bc.collision_times(**batch, num_threads=1)
+    assert np.isfinite(fresh).sum() > 100
+    out = np.full(5_000, -1.0)
+    for threads in (1, 2):
+        got = bc.collision_times(**batch, num_threads=threads, out=out)
+        assert got is out
+        np.testing.assert_array_equal(bits(out), bits(fresh))
+    # Written again in place, whatever it held: a second batch's answers replace the first's.
+    other = random_batch(5_000, seed=24)
+    np.testing.assert_array_equal(
+        bits(bc.collision_times(**other, out=out)), bits(bc.collision_times(**other))
+    )
+    pos, vel = batch["pos_a"], batch["vel_a"]
+    t = np.linspace(0.0, 3.0, 5_000)
+    centres = np.full((5_000, 2), np.nan)
+    got = bc.positions_at(pos, vel, batch["friction_a"], t, out=centres)
+    assert got is centres
+    np.testing.assert_array_equal(
+        bits(centres), bits(bc.positions_at(pos, vel, batch["friction_a"], t))
+    )
+
+
+def read_only(n: int) -> np.ndarray:
+    a = np.empty(n)
+    a.flags.writeable = False
+    return a
+
+
+def test_out_errors_name_out() -> None:
+    batch = random_batch(4, seed=25)
+    call = lambda out: bc.collision_times(**batch, out=out)  # noqa: E731
+    for bad, exc, message in [
+        (np.empty(3), ValueError, "out: expected shape (4,), got (3,)"),
+        (
+            np.empty((4, 1)),
+            TypeError,
+            "out: expected a 1-D float64 array of shape (N,), got a 2-D array of dtype float64",
+        ),
+        (
+            np.empty(4, dtype=np.float32),
+            TypeError,
+            "out: expected a 1-D float64 array of shape (N,), got a 1-D array of dtype float32",
+        ),
+        ([0.0] * 4, TypeError, "out: expected a 1-D float64 array of shape (N,), got list"),
+        (np.empty(8)[::2], ValueError, "out: expected a C-contiguous"),
+        (read_only(4), ValueError, "out: the array is read-only"),
+        (batch["friction_a"], ValueError, "out: the array shares memory with an input"),
+    ]:
+        with pytest.raises(exc, match="^" + re.escape(message)):
+            call(bad)
+    call(batch["pos_b"][:, 0].copy())  # a copy of an input's column is memory of its own
+    # Memory shared with a row input: the first two rows of pos_a, flattened (a view).
+    flat = batch["pos_a"].reshape(-1)[:4]
+    with pytest.raises(ValueError, match=r"^out: the array shares memory with an input"):
+        call(flat)
+    pos = np.zeros((3, 2))
+    with pytest.raises(ValueError, match=re.escape("out: expected shape (3, 2), got (3, 3)")):
+        bc.positions_at(pos, pos, 0.1, 1.0, out=np.empty((3, 3)))
+    with pytest.raises(ValueError, match=r"^out: expected a C-contiguous"):
+        bc.positions_at(pos, pos, 0.1, 1.0, out=np.asfortranarray(np.empty((3, 2))))
+    with pytest.raises(ValueError, match=r"^out: the array shares memory with an input"):
+        bc.positions_at(pos, pos, 0.1, 1.0, out=pos)
+    # An input error still names its argument and index; nothing else is promised of `out`.
+    with pytest.raises(ValueError, match=r"^radius\[2\]: radius"):
+        bc.collision_times(**{**batch, "radius": [0.1, 0.1, -1.0, 0.1]}, out=np.empty(4))
+
+
 # --- the GIL -----------------------------------------------------------------------------
 
 
