@@ -659,13 +659,7 @@ pub fn positions_at(
     out: &mut [[f64; 2]],
     threads: Threads,
 ) -> Result<(), InputError> {
-    let n = out.len();
-    check_len("pos", pos.len(), n)?;
-    check_len("vel", vel.len(), n)?;
-    friction.check_len("friction", n)?;
-    t.check_len("t", n)?;
-    friction.check_shared("friction", check_friction)?;
-    t.check_shared("t", finite)?;
+    check_ball_arrays(pos, vel, friction, t, out.len())?;
     run_chunks(out, threads, |offset, chunk| {
         for (k, slot) in chunk.iter_mut().enumerate() {
             let i = offset + k;
@@ -719,8 +713,9 @@ fn ball(
 }
 
 /// Checks the array lengths and the values shared by all pairs. A bad shared value is an error
-/// (without an index: it belongs to no pair in particular) even in an empty batch.
-fn check_lengths(pairs: &Pairs<'_>, n: usize) -> Result<(), InputError> {
+/// (without an index: it belongs to no pair in particular) even in an empty batch. The Python
+/// binding runs them before it looks at a caller's `out` array.
+pub(crate) fn check_lengths(pairs: &Pairs<'_>, n: usize) -> Result<(), InputError> {
     check_len("pos_a", pairs.pos_a.len(), n)?;
     check_len("vel_a", pairs.vel_a.len(), n)?;
     pairs.friction_a.check_len("friction_a", n)?;
@@ -737,6 +732,23 @@ fn check_lengths(pairs: &Pairs<'_>, n: usize) -> Result<(), InputError> {
         .check_shared("friction_b", check_friction)?;
     pairs.radius.check_shared("radius", check_radius)?;
     pairs.t_max.check_shared("t_max", check_horizon)
+}
+
+/// The checks of [`positions_at`] that need no pair: every array of length `n`, shared values
+/// valid. The Python binding runs them before it looks at a caller's `out` array.
+pub(crate) fn check_ball_arrays(
+    pos: &[[f64; 2]],
+    vel: &[[f64; 2]],
+    friction: PerPair<'_>,
+    t: PerPair<'_>,
+    n: usize,
+) -> Result<(), InputError> {
+    check_len("pos", pos.len(), n)?;
+    check_len("vel", vel.len(), n)?;
+    friction.check_len("friction", n)?;
+    t.check_len("t", n)?;
+    friction.check_shared("friction", check_friction)?;
+    t.check_shared("t", finite)
 }
 
 fn check_len(argument: &'static str, len: usize, n: usize) -> Result<(), InputError> {

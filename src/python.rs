@@ -117,8 +117,9 @@ fn rows<'a>(name: &str, a: &'a PyReadonlyArray2<'_, f64>) -> PyResult<&'a [[f64;
 /// the inputs, which are borrowed read-only while it is written (else a `ValueError`; numpy's
 /// borrow tracking in rust-numpy detects the overlap).
 ///
-/// Its shape is checked here, before the core sees it: the core measures every input against
-/// the output's length, and would blame the first input for an output of the wrong length.
+/// Its shape is checked here, before the core sees it (and after the inputs' lengths): the
+/// core measures every input against the output's length, and would blame the first input
+/// for an output of the wrong length.
 fn out_array<'py, D: Dimension>(
     obj: &Bound<'py, PyAny>,
     shape: &[usize],
@@ -226,6 +227,8 @@ fn collision_times<'py>(
             .map_err(value_error)?;
         return Ok(PyArray1::from_vec(py, out));
     };
+    // The inputs' own errors first, as without `out`.
+    batch::check_lengths(&pairs, n).map_err(value_error)?;
     let mut written = out_array::<Ix1>(out, &[n], OUT_TIMES)?;
     let out = written.as_slice_mut().map_err(|_| layout_error("out"))?;
     py.detach(|| batch::collision_times(&pairs, out, threads))
@@ -296,6 +299,7 @@ fn positions_at<'py>(
             .map_err(value_error)?;
         return PyArray1::from_vec(py, out.into_flattened()).reshape(Dim([n, 2]));
     };
+    batch::check_ball_arrays(pos, vel, friction, t, n).map_err(value_error)?;
     let mut written = out_array::<Ix2>(out, &[n, 2], ROWS)?;
     let flat = written.as_slice_mut().map_err(|_| layout_error("out"))?;
     let out = flat.as_chunks_mut::<2>().0;

@@ -10,6 +10,7 @@ transformed inputs can move it.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, replace
 from fractions import Fraction
 
@@ -228,12 +229,19 @@ def _valid(batch: dict, n: int) -> bool:
 @given(fuzz_batches())
 def test_any_batch_gives_times_or_a_clear_error(case: tuple[dict, int]) -> None:
     batch, n = case
+    out = np.full(n, np.nan)
     try:
         t = bc.collision_times(**batch)
     except (ValueError, TypeError) as e:
         assert not _valid(batch, n), f"a valid input raised {e!r}"
         assert str(e).split(":")[0].split("[")[0] in {*batch, "num_threads"}, str(e)
+        # The same error when writing into a caller's array.
+        with pytest.raises(type(e), match="^" + re.escape(str(e)) + "$"):
+            bc.collision_times(**batch, out=out)
         return
+    # Into a caller's array: the same bits.
+    assert bc.collision_times(**batch, out=out) is out
+    assert (out.view(np.uint64) == t.view(np.uint64)).all()
     # Values are checked pair by pair: with no pair, a bad scalar goes unnoticed.
     assert _valid(batch, n) or n == 0
     assert t.shape == (n,) and t.dtype == np.float64
