@@ -52,6 +52,7 @@ from typing import Any
 import numpy as np
 
 import ballcollide as bc
+from ballcollide import _core
 
 RADIUS = 2 * 0.028575  # contact distance: two pool balls of radius 28.575 mm
 TABLE = (2.54, 1.27)  # playing area of a 9-ft table, m
@@ -717,6 +718,22 @@ def overhead(args: argparse.Namespace) -> None:
     fixed, _ = median_time(lambda: bc_times(one, 1), 1000)
     print(f"python: one call on 1 pair (fixed cost per call) {fixed * 1e6:.2f} µs")
     buffer = np.empty(len(data))
+    # In the same call: the call's own time against the kernel's inside it, which no change
+    # of load between runs can tilt.
+    added, inside = [], []
+    for _ in range(args.repeats):
+        start = time.perf_counter()
+        bc_times(data, 1, out=buffer)
+        whole = time.perf_counter() - start
+        kernel = _core._last_kernel_seconds()
+        added.append(whole - kernel)
+        inside.append(kernel)
+    print(
+        f"python, in the same call (out=, median of {args.repeats}): the kernel "
+        f"{np.median(inside) / len(data) * 1e9:.3f} ns/pair, the binding adds "
+        f"{np.median(added) * 1e6:.1f} µs a call, "
+        f"{np.median(np.array(added) / np.array(inside)) * 100:+.3f} % of the kernel's time"
+    )
     rounds: dict[str, list[float]] = {"py_out": [], "rust": [], "py_new": [], "rust_fresh": []}
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "pairs.bin"

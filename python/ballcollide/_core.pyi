@@ -15,6 +15,7 @@ _I64Array1 = npt.NDArray[np.int64]
 
 __all__ = [
     "__version__",
+    "_last_kernel_seconds",
     "collision_time",
     "collision_times",
     "earliest_collision",
@@ -49,6 +50,10 @@ def collision_times(
     Raises ``ValueError`` naming the argument and first bad index for invalid values,
     wrong shapes, lengths or layouts, and ``TypeError`` for other types or dtypes.
     """
+
+def _last_kernel_seconds() -> float:
+    """Seconds the Rust kernel took inside this thread's last :func:`collision_times` call
+    (NaN before any). Private: for ``benchmarks/compare.py``'s overhead measurement."""
 
 def collision_time(
     pos_a: tuple[float, float],

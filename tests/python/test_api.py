@@ -587,6 +587,18 @@ def test_out_errors_name_out() -> None:
         bc.collision_times(**{**batch, "radius": [0.1, 0.1, -1.0, 0.1]}, out=np.empty(4))
 
 
+def test_last_kernel_seconds_is_the_kernel_inside_the_call() -> None:
+    batch = random_batch(200_000, seed=26)
+    out = np.empty(200_000)
+    start = time.perf_counter()
+    bc.collision_times(**batch, num_threads=1, out=out)
+    whole = time.perf_counter() - start
+    kernel = _core._last_kernel_seconds()
+    assert 0 < kernel <= whole
+    bc.collision_times(**random_batch(10, seed=27), num_threads=1)
+    assert _core._last_kernel_seconds() < kernel  # the newest call's
+
+
 # --- the GIL -----------------------------------------------------------------------------
 
 
