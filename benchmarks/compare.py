@@ -702,7 +702,9 @@ def rust_kernel(
 def overhead(args: argparse.Namespace) -> None:
     """``collision_times`` from Python vs the Rust kernel on the same 10⁶ pairs, 1 thread.
 
-    Like is timed against like: Python writing into one array passed as ``out=`` against the
+    First in the same call: the whole call's time against the kernel's inside it
+    (``_core._last_kernel_seconds()``), writing into ``out=``. Then in separate runs, where
+    like is timed against like: Python writing into one array passed as ``out=`` against the
     kernel reusing one buffer, and Python returning a new array each call against the kernel
     writing into a fresh buffer each call (a fresh array costs its page faults, whoever
     allocates it). The four alternate for ``--overhead-rounds`` rounds (each the median of

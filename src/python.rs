@@ -301,7 +301,6 @@ fn collision_time(
 /// Centres of N balls at time `t` (see `ballcollide.positions_at`).
 #[pyfunction]
 #[pyo3(signature = (pos, vel, friction, t, num_threads=None, out=None))]
-#[allow(clippy::too_many_arguments)]
 fn positions_at<'py>(
     py: Python<'py>,
     pos: &Bound<'py, PyAny>,
