@@ -148,8 +148,8 @@ pub fn collision_times(
 }
 
 /// Pairs tested together by the lane-wise tests ([`screen_pair`], [`straight::contact`],
-/// [`apart_by_window`], [`while_moving`]): a block fills a vector register or two per input, and the compiler turns
-/// the block loops into vector code.
+/// [`apart_by_window`], [`while_moving`]): a block fills a vector register or two per input,
+/// and the compiler turns the block loops into vector code.
 const LANES: usize = 8;
 
 /// The collision times of pairs `offset..offset + out.len()`.
@@ -647,7 +647,8 @@ fn scalars(src: PerPair<'_>, start: usize, len: usize) -> [f64; LANES] {
 /// ```
 /// use ballcollide::batch::{positions_at, PerPair, Threads};
 /// let mut out = [[0.0; 2]; 1];
-/// positions_at(&[[0.0, 0.0]], &[[2.0, 0.0]], PerPair::All(0.5), PerPair::All(10.0), &mut out, Threads::All)?;
+/// let (pos, vel) = ([[0.0, 0.0]], [[2.0, 0.0]]);
+/// positions_at(&pos, &vel, PerPair::All(0.5), PerPair::All(10.0), &mut out, Threads::All)?;
 /// assert_eq!(out, [[4.0, 0.0]]);
 /// # Ok::<(), ballcollide::InputError>(())
 /// ```

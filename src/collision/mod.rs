@@ -18,11 +18,11 @@
 //! move, the first window is first tried whole, without a branch (`moving_entry`): where its
 //! first open eighth holds a single root or a single minimum, a fixed number of bracketed
 //! Newton steps settles it; the steps above handle the rest. From the first stop on, one ball
-//! rests and the other runs along a line: the closed form answers there too (`after_stop`). Batches first screen out,
-//! lane-wise, the pairs whose paths stay apart (`prefilter`), then, among moving pairs whose
-//! paths cross, those that are never there at the same time (`crossing`), then run
-//! `moving_entry` lane-wise; single queries run the same proofs first, so both give the same
-//! bits.
+//! rests and the other runs along a line: the closed form answers there too (`after_stop`).
+//! Batches first screen out, lane-wise, the pairs whose paths stay apart (`prefilter`), then,
+//! among moving pairs whose paths cross, those that are never there at the same time
+//! (`crossing`), then run `moving_entry` lane-wise; single queries run the same proofs first,
+//! so both give the same bits.
 //!
 //! The quartic is never divided by its leading coefficient, so equal or nearly equal friction
 //! vectors (where it vanishes or nearly so) need no special case.
@@ -167,8 +167,9 @@ pub(crate) fn first_contact(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> Opti
     first_contact_given(a, b, radius, t_max, None)
 }
 
-/// [`first_contact`], given what [`while_moving`](moving_entry::while_moving) found for the pair if the caller (a batch,
-/// lane-wise) has run it already: the search takes the same steps either way.
+/// [`first_contact`], given what [`while_moving`](moving_entry::while_moving) found for the
+/// pair if the caller (a batch, lane-wise) has run it already: the search takes the same
+/// steps either way.
 pub(crate) fn first_contact_given(
     a: &Ball,
     b: &Ball,

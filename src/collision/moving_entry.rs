@@ -6,9 +6,10 @@
 //! prove positive ([`first_open_eighth`]) holds exactly one root, and every eighth before
 //! it is proven clear, so that root is the first contact. It is found by a fixed number of
 //! Newton steps kept inside the eighth (a step that would leave the bracket is replaced by
-//! bisection), all on the accurate form of the gap ([`Gap::value`](crate::coefficients::Gap::value)), and kept only if the
-//! gap there is within its rounding bound of zero, which is where the float arithmetic puts
-//! the root: the answer the general search would give, to its accuracy.
+//! bisection), all on the accurate form of the gap
+//! ([`Gap::value`](crate::coefficients::Gap::value)), and kept only if the gap there is within
+//! its rounding bound of zero, which is where the float arithmetic puts the root: the answer
+//! the general search would give, to its accuracy.
 //!
 //! Balls that already touch or overlap and move into each other meet at 0 (SPEC): decided
 //! here too, on the search's own values at time 0.
