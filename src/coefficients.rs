@@ -87,6 +87,32 @@ impl Gap {
         }
     }
 
+    /// The same motion from `s` on (time since `s`): the separation and relative velocity at
+    /// `s` as [`Gap::separation`] and [`Gap::relative_velocity`] give them.
+    ///
+    /// ```
+    /// use ballcollide::Gap;
+    /// use nalgebra::Vector2;
+    /// let gap = Gap {
+    ///     offset: Vector2::new(3.0, 1.0),
+    ///     velocity: Vector2::new(-2.0, 0.0),
+    ///     acceleration: Vector2::new(1.0, 0.0),
+    ///     radius: 1.0,
+    /// };
+    /// let later = gap.shifted(2.0);
+    /// assert_eq!(later.offset, Vector2::new(1.0, 1.0));
+    /// assert_eq!(later.value(1.0), gap.value(3.0));
+    /// ```
+    #[inline(always)]
+    pub fn shifted(&self, s: f64) -> Self {
+        Self {
+            offset: self.separation(s),
+            velocity: self.relative_velocity(s),
+            acceleration: self.acceleration,
+            radius: self.radius,
+        }
+    }
+
     /// The coefficients `[a, b, c, d, e]` of `g(s) = a·s⁴ + b·s³ + c·s² + d·s + e`, highest
     /// degree first (SPEC's formula with `Δp`, `Δv`, `Δf` the offset, velocity and
     /// acceleration), each formed in plain float arithmetic. [`Gap::value`] is the accurate

@@ -145,11 +145,12 @@ pub(crate) fn finite(argument: &'static str, x: f64) -> Result<f64, InputError> 
     }
 }
 
-/// Checks a friction deceleration: finite and ≥ 0.
+/// Checks a friction deceleration: finite and ≥ 0. Returns it with `−0.0` made `+0.0`: a
+/// friction of `−0` is no friction, and the stop time `|v|/μ` formed from it must be `+∞`.
 pub(crate) fn check_friction(argument: &'static str, friction: f64) -> Result<f64, InputError> {
     finite(argument, friction)?;
     if friction >= 0.0 {
-        Ok(friction)
+        Ok(friction + 0.0)
     } else {
         Err(InputError::new(
             argument,
