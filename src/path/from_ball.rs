@@ -47,3 +47,118 @@ impl Ball {
         Path::new(segments)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::InputErrorKind;
+    use crate::test_rng::Rng;
+    use nalgebra::Vector2;
+    use proptest::prelude::*;
+
+    fn ball(p: [f64; 2], v: [f64; 2], friction: f64) -> Ball {
+        Ball::new(p.into(), v.into(), friction).expect("valid ball")
+    }
+
+    fn path(ball: &Ball) -> Path2 {
+        ball.path().expect("representable path")
+    }
+
+    /// The largest per-component difference between the path's and the ball's positions at
+    /// `t`, in units of ε·(|p| + |v|·t): the size of the terms of the ball's formula.
+    fn position_error(ball: &Ball, t: f64) -> f64 {
+        let (x, y) = (path(ball).position_at(t), ball.position_at(t));
+        (0..2)
+            .map(|i| {
+                let size = ball.position()[i].abs() + ball.velocity()[i].abs() * t;
+                (x[i] - y[i]).abs() / (f64::EPSILON * size)
+            })
+            .fold(0.0, f64::max)
+    }
+
+    #[test]
+    fn a_ball_at_rest_is_one_segment_at_rest() {
+        let b = ball([0.5, -2.0], [0.0, 0.0], 0.3);
+        assert_eq!(path(&b).segments(), &[Segment::at_rest(0.0, b.position())]);
+    }
+
+    #[test]
+    fn a_frictionless_ball_is_one_segment_without_acceleration() {
+        let b = ball([0.5, -2.0], [1.0, 3.0], 0.0);
+        let expected = Segment::new(0.0, b.position(), b.velocity(), Vector2::zeros());
+        assert_eq!(path(&b).segments(), &[expected]);
+        assert_eq!(path(&b).position_at(1e6), b.position_at(1e6));
+    }
+
+    #[test]
+    fn a_slowing_ball_is_a_slide_then_a_rest() {
+        let b = ball([1.0, 2.0], [0.3, -0.4], 0.2);
+        let rest = b.rest_position().expect("it stops");
+        assert_eq!(
+            path(&b).segments(),
+            &[
+                Segment::new(0.0, b.position(), b.velocity(), b.friction_vector()),
+                Segment::at_rest(b.stop_time(), rest),
+            ]
+        );
+    }
+
+    #[test]
+    fn positions_agree_exactly_at_the_start_and_from_the_stop_on() {
+        let mut rng = Rng(0x5eed_ba11);
+        for _ in 0..10_000 {
+            let scale = 2f64.powi(rng.below(81) as i32 - 40);
+            let b = ball(
+                [
+                    rng.uniform(-3.0, 3.0) * scale,
+                    rng.uniform(-3.0, 3.0) * scale,
+                ],
+                [
+                    rng.uniform(-3.0, 3.0) * scale,
+                    rng.uniform(-3.0, 3.0) * scale,
+                ],
+                rng.uniform(0.0, 5.0) * scale,
+            );
+            let (path, tau) = (path(&b), b.stop_time());
+            for t in [0.0, tau, tau.next_up(), 2.0 * tau, 1e300, f64::INFINITY] {
+                assert_eq!(path.position_at(t), b.position_at(t), "{b:?} at {t}");
+            }
+            for t in [tau, 2.0 * tau, f64::INFINITY] {
+                assert_eq!(path.velocity_at(t), b.velocity_at(t), "{b:?} at {t}");
+            }
+            assert_eq!(path.velocity_at(0.0), b.velocity_at(0.0));
+        }
+    }
+
+    #[test]
+    fn a_resting_point_beyond_the_float_range_is_an_error() {
+        // |v|²/2μ = 1e10/2e-300 overflows, though τ = 5e304 does not.
+        let b = ball([0.0, 0.0], [1e5, 0.0], 2e-300);
+        let err = b.path().expect_err("the path has an infinite position");
+        assert_eq!((err.argument(), err.index()), ("position", Some(1)));
+        assert_eq!(err.kind(), InputErrorKind::NotFinite(f64::INFINITY));
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(4000))]
+        #[test]
+        fn positions_and_velocities_agree_to_a_couple_of_ulps(
+            p in prop::array::uniform2(-3.0..3.0f64),
+            v in prop::array::uniform2(-3.0..3.0f64),
+            friction in 1e-3..5.0f64,
+            scale in -40..=40i32,
+            when in 0.0..1.5f64,
+        ) {
+            // Lengths scaled by a power of two, at times up to half again the stop time.
+            let scale = 2f64.powi(scale);
+            let b = ball(p.map(|x| x * scale), v.map(|x| x * scale), friction * scale);
+            let t = b.stop_time() * when;
+            prop_assert!(position_error(&b, t) <= 2.0, "{b:?} at {t}");
+            let (x, y) = (path(&b).velocity_at(t), b.velocity_at(t));
+            for i in 0..2 {
+                prop_assert!((x[i] - y[i]).abs() <= 2.0 * f64::EPSILON * b.velocity()[i].abs(),
+                    "{b:?} at {t}");
+            }
+        }
+    }
+}

@@ -7,8 +7,9 @@
 //! two-segment case ([`Ball::path`]).
 //!
 //! - [`Segment`] (`segment.rs`): one piece, and its formula in time relative to its start;
-//! - [`Path`] (`piecewise.rs`): checked construction ([`Path::new`]), the active segment at a
-//!   time, positions and velocities;
+//! - [`Path`] (`piecewise.rs`): checked construction ([`Path::new`]), the spans where each
+//!   segment is active ([`Path::spans`]), the active segment at a time, positions and
+//!   velocities;
 //! - [`Path::from_rows`] (`rows.rs`): a path from rows of the batch arrays, with their `+∞`
 //!   padding;
 //! - [`Ball::path`] (`from_ball.rs`): the friction ball as a path.

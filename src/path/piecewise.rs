@@ -131,6 +131,30 @@ impl<const D: usize> Path<D> {
         self.segments[0].start
     }
 
+    /// The segments that are ever active, each with the time at which it ends: the next
+    /// segment's start, or `+∞` for the last. Each is active on `[start, end)`; empty segments
+    /// are skipped.
+    ///
+    /// ```
+    /// use ballcollide::path::{Path2, Segment2};
+    /// use nalgebra::Vector2;
+    /// let rest = |t: f64| Segment2::at_rest(t, Vector2::zeros());
+    /// let path = Path2::new(vec![rest(0.0), rest(1.0), rest(1.0), rest(3.0)])?;
+    /// let spans: Vec<_> = path.spans().map(|(segment, end)| (segment.start, end)).collect();
+    /// assert_eq!(spans, [(0.0, 1.0), (1.0, 3.0), (3.0, f64::INFINITY)]);
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
+    pub fn spans(&self) -> impl Iterator<Item = (&Segment<D>, f64)> {
+        let ends = self.segments[1..]
+            .iter()
+            .map(|segment| segment.start)
+            .chain(std::iter::once(f64::INFINITY));
+        self.segments
+            .iter()
+            .zip(ends)
+            .filter(|(segment, end)| segment.start < *end)
+    }
+
     /// The segment active at `t`: the last one whose start is ≤ `t`. An empty segment (one
     /// whose start equals the next one's) is therefore never active; times before the first
     /// start (and NaN) are taken as the first start.
@@ -152,7 +176,8 @@ impl<const D: usize> Path<D> {
     }
 
     /// The centre at `t`, by the [active segment](Path::segment_at)'s formula
-    /// ([`Segment::position_at`]); times before the first start give the first start's.
+    /// ([`Segment::position_at`]); times before the first start give the first start's, and
+    /// `t = +∞` the largest finite time's (a resting point, if the path ends at rest).
     ///
     /// ```
     /// use ballcollide::path::{Path3, Segment3};
@@ -186,9 +211,11 @@ impl<const D: usize> Path<D> {
         self.segment_at(t).acceleration
     }
 
-    /// The segment active at `t`, and `t` itself, taken as the first start if earlier (or NaN).
+    /// The segment active at `t`, and `t` itself, taken as the first start if earlier (or NaN),
+    /// and as the largest finite time if `+∞` (so that a path ending at rest reports its resting
+    /// point there rather than `0·∞`).
     fn locate(&self, t: f64) -> (&Segment<D>, f64) {
-        let t = t.max(self.first_start());
+        let t = t.max(self.first_start()).min(f64::MAX);
         // The starts never decrease, so the segments begun by `t` are a prefix, and it holds
         // at least the first segment, which begins at the first start ≤ `t`.
         let begun = self.segments.partition_point(|segment| segment.start <= t);
@@ -212,5 +239,245 @@ pub(super) fn check_order(
         ))
     } else {
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::path::{Path2, Path3, Segment2, Segment3};
+    use nalgebra::{Vector2, Vector3};
+    use proptest::prelude::*;
+
+    fn rest(t: f64, x: f64) -> Segment2 {
+        Segment2::at_rest(t, Vector2::new(x, 0.0))
+    }
+
+    fn error(segments: Vec<Segment2>) -> InputError {
+        match Path2::new(segments) {
+            Ok(path) => panic!("accepted {path:?}"),
+            Err(err) => err,
+        }
+    }
+
+    #[test]
+    fn a_path_needs_a_segment() {
+        let err = error(vec![]);
+        assert_eq!(err.argument(), "segments");
+        assert_eq!(err.kind(), InputErrorKind::NoSegments);
+        assert_eq!(
+            err.to_string(),
+            "segments: a path needs at least one segment"
+        );
+    }
+
+    #[test]
+    fn a_non_finite_value_is_named_with_its_segment() {
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            let mut v = Vector2::zeros();
+            v.y = bad;
+            for (argument, segment) in [
+                (
+                    "start",
+                    Segment2 {
+                        start: bad,
+                        ..rest(2.0, 0.0)
+                    },
+                ),
+                (
+                    "position",
+                    Segment2 {
+                        position: v,
+                        ..rest(2.0, 0.0)
+                    },
+                ),
+                (
+                    "velocity",
+                    Segment2 {
+                        velocity: v,
+                        ..rest(2.0, 0.0)
+                    },
+                ),
+                (
+                    "acceleration",
+                    Segment2 {
+                        acceleration: v,
+                        ..rest(2.0, 0.0)
+                    },
+                ),
+            ] {
+                let err = error(vec![rest(0.0, 0.0), rest(1.0, 0.0), segment]);
+                assert_eq!(err.argument(), argument);
+                assert_eq!(err.index(), Some(2));
+                if argument == "start" && bad == f64::NEG_INFINITY {
+                    continue; // a decrease (see starts_must_not_decrease)
+                }
+                let InputErrorKind::NotFinite(x) = err.kind() else {
+                    panic!("{err}");
+                };
+                assert_eq!(x.to_bits(), bad.to_bits());
+            }
+        }
+    }
+
+    #[test]
+    fn the_first_offending_segment_is_reported() {
+        let nan = Segment2 {
+            position: Vector2::new(f64::NAN, 0.0),
+            ..rest(1.0, 0.0)
+        };
+        let err = error(vec![rest(0.0, 0.0), nan, rest(0.5, 0.0)]);
+        assert_eq!((err.argument(), err.index()), ("position", Some(1)));
+    }
+
+    #[test]
+    fn starts_must_not_decrease() {
+        let err = error(vec![rest(0.0, 0.0), rest(2.0, 0.0), rest(1.0, 0.0)]);
+        assert_eq!((err.argument(), err.index()), ("start", Some(2)));
+        assert_eq!(
+            err.kind(),
+            InputErrorKind::DecreasingStart {
+                previous: 2.0,
+                start: 1.0
+            }
+        );
+        // −∞ after a finite start is a decrease; as a first start it is not finite.
+        let err = error(vec![rest(0.0, 0.0), rest(f64::NEG_INFINITY, 0.0)]);
+        assert!(matches!(err.kind(), InputErrorKind::DecreasingStart { .. }));
+        let err = error(vec![rest(f64::NEG_INFINITY, 0.0)]);
+        assert_eq!(err.kind(), InputErrorKind::NotFinite(f64::NEG_INFINITY));
+        assert_eq!(err.index(), Some(0));
+    }
+
+    #[test]
+    fn equal_starts_and_negative_starts_are_accepted() {
+        let path = Path2::new(vec![
+            rest(-3.0, 0.0),
+            rest(-3.0, 1.0),
+            rest(-0.0, 2.0),
+            rest(0.0, 3.0),
+        ]);
+        assert_eq!(path.map(|p| p.segments().len()), Ok(4));
+    }
+
+    #[test]
+    fn empty_segments_are_never_active() {
+        // Segments 1 and 2 begin at t = 1 with segment 3: only segment 3 is active from 1 on.
+        let path = Path2::new(vec![
+            rest(0.0, 0.0),
+            rest(1.0, 1.0),
+            rest(1.0, 2.0),
+            rest(1.0, 3.0),
+        ])
+        .expect("valid path");
+        assert_eq!(path.segment_at(1.0_f64.next_down()), &path.segments()[0]);
+        for t in [1.0, 1.5, 1e300, f64::INFINITY] {
+            assert_eq!(path.segment_at(t), &path.segments()[3]);
+            assert_eq!(path.position_at(t), Vector2::new(3.0, 0.0));
+        }
+    }
+
+    #[test]
+    fn times_before_the_first_start_are_taken_as_the_first_start() {
+        // The leading empty segment is never active, not even before the path begins.
+        let path = Path2::new(vec![
+            rest(1.0, 5.0),
+            Segment2::new(
+                1.0,
+                Vector2::zeros(),
+                Vector2::new(1.0, 0.0),
+                Vector2::new(-1.0, 0.0),
+            ),
+            rest(2.0, 0.5),
+        ])
+        .expect("valid path");
+        for t in [0.5, -1e300, f64::NEG_INFINITY, f64::NAN] {
+            assert_eq!(path.segment_at(t), &path.segments()[1]);
+            assert_eq!(path.position_at(t), Vector2::zeros());
+            assert_eq!(path.velocity_at(t), Vector2::new(1.0, 0.0));
+            assert_eq!(path.acceleration_at(t), Vector2::new(-1.0, 0.0));
+        }
+    }
+
+    #[test]
+    fn the_last_segment_lasts_for_ever() {
+        // A ball under gravity that never lands keeps falling, however late.
+        let g = Vector3::new(0.0, 0.0, -10.0);
+        let path = Path3::new(vec![
+            Segment3::at_rest(0.0, Vector3::zeros()),
+            Segment3::new(1.0, Vector3::zeros(), Vector3::zeros(), g),
+        ])
+        .expect("valid path");
+        assert_eq!(path.position_at(1001.0), Vector3::new(0.0, 0.0, -5e6));
+        assert_eq!(path.velocity_at(1001.0), Vector3::new(0.0, 0.0, -1e4));
+    }
+
+    #[test]
+    fn a_jump_at_a_start_takes_the_new_segment_exactly_there() {
+        let path = Path2::new(vec![
+            Segment2::new(
+                0.0,
+                Vector2::zeros(),
+                Vector2::new(1.0, 0.0),
+                Vector2::zeros(),
+            ),
+            rest(1.0, 7.0),
+        ])
+        .expect("valid path");
+        assert_eq!(
+            path.position_at(1.0_f64.next_down()),
+            Vector2::new(1.0_f64.next_down(), 0.0)
+        );
+        assert_eq!(path.position_at(1.0), Vector2::new(7.0, 0.0));
+    }
+
+    /// Up to 6 segments whose starts are drawn from a few values, so that many are empty.
+    fn starts() -> impl Strategy<Value = Vec<f64>> {
+        prop::collection::vec(
+            prop::sample::select(vec![-1.0, 0.0, 0.5, 1.0, 2.5, 1e4]),
+            1..=6,
+        )
+        .prop_map(|mut starts| {
+            starts.sort_by(f64::total_cmp);
+            starts
+        })
+    }
+
+    proptest! {
+        #[test]
+        fn the_active_segment_is_the_last_one_begun(
+            starts in starts(),
+            t in prop::sample::select(vec![-2.0f64, -1.0, 0.0, 0.25, 0.5, 1.0, 2.0, 2.5, 1e4, 2e4]),
+        ) {
+            let segments: Vec<Segment2> =
+                starts.iter().enumerate().map(|(k, &s)| rest(s, k as f64)).collect();
+            let path = Path2::new(segments.clone()).expect("valid path");
+            let clamped = t.max(starts[0]);
+            let expected = (0..segments.len()).rev().find(|&k| starts[k] <= clamped);
+            prop_assert_eq!(Some(path.segment_at(t)), expected.map(|k| &segments[k]));
+            // Empty segments are never active.
+            let k = expected.unwrap_or(0);
+            prop_assert!(k + 1 == segments.len() || starts[k + 1] > starts[k]);
+        }
+
+        #[test]
+        fn the_spans_are_where_each_segment_is_active(starts in starts()) {
+            let segments: Vec<Segment2> =
+                starts.iter().enumerate().map(|(k, &s)| rest(s, k as f64)).collect();
+            let path = Path2::new(segments).expect("valid path");
+            let spans: Vec<_> = path.spans().collect();
+            // They tile [first start, ∞) ...
+            prop_assert_eq!(spans[0].0.start, path.first_start());
+            prop_assert_eq!(spans[spans.len() - 1].1, f64::INFINITY);
+            for pair in spans.windows(2) {
+                prop_assert_eq!(pair[0].1, pair[1].0.start);
+            }
+            // ... and each segment is the active one on its own.
+            for (segment, end) in spans {
+                prop_assert!(segment.start < end);
+                prop_assert_eq!(path.segment_at(segment.start), segment);
+                prop_assert_eq!(path.segment_at(end.next_down()), segment);
+            }
+        }
     }
 }

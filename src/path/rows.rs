@@ -84,3 +84,152 @@ fn used_rows(start: &[f64]) -> Result<usize, InputError> {
         None => Err(InputError::new("start", InputErrorKind::NotFinite(f64::INFINITY)).at(0)),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::path::{Path2, Path3, Segment3};
+    use nalgebra::Vector3;
+    use proptest::prelude::*;
+
+    const INF: f64 = f64::INFINITY;
+
+    fn error(start: &[f64], pos: &[[f64; 2]], vel: &[[f64; 2]], acc: &[[f64; 2]]) -> InputError {
+        match Path2::from_rows(start, pos, vel, acc) {
+            Ok(path) => panic!("accepted {path:?}"),
+            Err(err) => err,
+        }
+    }
+
+    #[test]
+    fn padding_rows_are_dropped_whatever_their_values() {
+        let nan = [f64::NAN; 2];
+        let path = Path2::from_rows(
+            &[0.0, 1.0, INF, INF],
+            &[[0.0, 0.0], [1.0, 1.0], nan, [INF, 0.0]],
+            &[[1.0, 1.0], [0.0, 0.0], nan, nan],
+            &[[0.0, 0.0], [0.0, 0.0], nan, nan],
+        )
+        .expect("valid rows");
+        assert_eq!(path.segments().len(), 2);
+        assert_eq!(path.position_at(INF), nalgebra::Vector2::new(1.0, 1.0));
+    }
+
+    #[test]
+    fn a_path_of_padding_only_has_no_finite_first_start() {
+        let rows = [[0.0; 2]; 2];
+        let err = error(&[INF, INF], &rows, &rows, &rows);
+        assert_eq!((err.argument(), err.index()), ("start", Some(0)));
+        assert_eq!(err.kind(), InputErrorKind::NotFinite(INF));
+        assert_eq!(err.to_string(), "start[0]: must be finite, got inf");
+    }
+
+    #[test]
+    fn no_rows_is_no_segment() {
+        let err = error(&[], &[], &[], &[]);
+        assert_eq!(err.to_string(), "start: a path needs at least one segment");
+    }
+
+    #[test]
+    fn padding_followed_by_a_used_row_is_a_decrease() {
+        let rows = [[0.0; 2]; 4];
+        let err = error(&[0.0, INF, INF, 3.0], &rows, &rows, &rows);
+        assert_eq!((err.argument(), err.index()), ("start", Some(3)));
+        assert_eq!(
+            err.kind(),
+            InputErrorKind::DecreasingStart {
+                previous: INF,
+                start: 3.0
+            }
+        );
+        // An earlier decrease is reported first.
+        let err = error(&[2.0, 1.0, INF, 3.0], &rows, &rows, &rows);
+        assert_eq!(err.index(), Some(1));
+    }
+
+    #[test]
+    fn a_nan_start_is_an_error_even_among_padding() {
+        let rows = [[0.0; 2]; 3];
+        let err = error(&[0.0, INF, f64::NAN], &rows, &rows, &rows);
+        assert_eq!((err.argument(), err.index()), ("start", Some(2)));
+        assert!(matches!(err.kind(), InputErrorKind::NotFinite(x) if x.is_nan()));
+    }
+
+    #[test]
+    fn a_negative_infinite_first_start_is_not_finite() {
+        let rows = [[0.0; 2]; 2];
+        let err = error(&[f64::NEG_INFINITY, 0.0], &rows, &rows, &rows);
+        assert_eq!(err.to_string(), "start[0]: must be finite, got -inf");
+    }
+
+    #[test]
+    fn a_non_finite_value_in_a_used_row_names_its_array_and_row() {
+        let ok = [[0.0; 2]; 3];
+        let mut bad = ok;
+        bad[1][1] = f64::NAN;
+        let start = [0.0, 1.0, INF];
+        for (argument, err) in [
+            ("pos", error(&start, &bad, &ok, &ok)),
+            ("vel", error(&start, &ok, &bad, &ok)),
+            ("acc", error(&start, &ok, &ok, &bad)),
+        ] {
+            assert_eq!((err.argument(), err.index()), (argument, Some(1)));
+            assert_eq!(
+                err.to_string(),
+                format!("{argument}[1]: must be finite, got NaN")
+            );
+        }
+    }
+
+    #[test]
+    fn arrays_of_another_length_are_named() {
+        let (three, two) = ([[0.0; 2]; 3], [[0.0; 2]; 2]);
+        let start = [0.0, 1.0, 2.0];
+        for (argument, err) in [
+            ("pos", error(&start, &two, &three, &three)),
+            ("vel", error(&start, &three, &two, &three)),
+            ("acc", error(&start, &three, &three, &two)),
+        ] {
+            assert_eq!(
+                err.to_string(),
+                format!("{argument}: has 2 rows, expected 3")
+            );
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn rows_give_the_path_of_their_used_segments(
+            rows in prop::collection::vec(
+                (0.0..1.0f64, prop::array::uniform9(-5.0..5.0f64)), 1..=5),
+            padding in 0..3usize,
+        ) {
+            let mut start = 0.0;
+            let segments: Vec<Segment3> = rows
+                .iter()
+                .map(|(dt, x)| {
+                    start += dt;
+                    let v = |i: usize| Vector3::new(x[i], x[i + 1], x[i + 2]);
+                    Segment3::new(start, v(0), v(3), v(6))
+                })
+                .collect();
+            // Each array padded with rows that must be ignored.
+            let pad = std::iter::repeat_n([f64::NAN; 3], padding);
+            let array = |f: fn(&Segment3) -> Vector3<f64>| -> Vec<[f64; 3]> {
+                segments.iter().map(|s| f(s).into()).chain(pad.clone()).collect()
+            };
+            let starts: Vec<f64> = segments
+                .iter()
+                .map(|s| s.start)
+                .chain(std::iter::repeat_n(INF, padding))
+                .collect();
+            let path = Path3::from_rows(
+                &starts,
+                &array(|s| s.position),
+                &array(|s| s.velocity),
+                &array(|s| s.acceleration),
+            );
+            prop_assert_eq!(path, Path3::new(segments));
+        }
+    }
+}
