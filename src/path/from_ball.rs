@@ -31,20 +31,20 @@ impl Ball {
     /// # Ok::<(), ballcollide::InputError>(())
     /// ```
     pub fn path(&self) -> Result<Path2, InputError> {
+        // At rest means τ = 0, which includes a velocity so small that |v|/μ underflows.
+        if self.is_at_rest() {
+            return Path::new(vec![Segment::at_rest(0.0, self.position())]);
+        }
         let moving = Segment::new(
             0.0,
             self.position(),
             self.velocity(),
             self.friction_vector(),
         );
-        let segments = match self.rest_position() {
-            Some(rest) if !self.is_at_rest() => {
-                vec![moving, Segment::at_rest(self.stop_time(), rest)]
-            }
-            // At rest (v = a = 0), or never stopping (a = 0).
-            _ => vec![moving],
-        };
-        Path::new(segments)
+        Path::new(match self.rest_position() {
+            Some(rest) => vec![moving, Segment::at_rest(self.stop_time(), rest)],
+            None => vec![moving], // never stops: a = 0
+        })
     }
 }
 
@@ -128,6 +128,22 @@ mod tests {
             }
             assert_eq!(path.velocity_at(0.0), b.velocity_at(0.0));
         }
+    }
+
+    #[test]
+    fn a_ball_whose_stop_time_underflows_is_at_rest() {
+        let b = ball([0.5, -2.0], [1e-310, 0.0], 1e300);
+        assert!(b.is_at_rest());
+        assert_eq!(path(&b).segments(), &[Segment::at_rest(0.0, b.position())]);
+        assert_eq!(path(&b).position_at(1.0), b.position_at(1.0));
+    }
+
+    #[test]
+    fn a_deceleration_beyond_the_float_range_is_an_error() {
+        // τ = 1e-15/1.5e308 rounds down to the smallest subnormal, and −v/τ overflows.
+        let b = ball([0.0, 0.0], [1e-15, 0.0], 1.5e308);
+        let err = b.path().expect_err("the path has an infinite acceleration");
+        assert_eq!((err.argument(), err.index()), ("acceleration", Some(0)));
     }
 
     #[test]
