@@ -21,6 +21,15 @@ pub enum InputErrorKind {
         /// The length this one has.
         found: usize,
     },
+    /// A segment start earlier than the segment before it.
+    DecreasingStart {
+        /// The previous segment's start.
+        previous: f64,
+        /// This segment's start.
+        start: f64,
+    },
+    /// A path with no segment.
+    NoSegments,
 }
 
 /// An invalid input: which argument, at which index (for batch calls), and why.
@@ -130,6 +139,13 @@ impl fmt::Display for InputError {
             InputErrorKind::LengthMismatch { expected, found } => {
                 write!(f, ": has {found} rows, expected {expected}")
             }
+            InputErrorKind::DecreasingStart { previous, start } => {
+                write!(
+                    f,
+                    ": starts must not decrease, got {start} after {previous}"
+                )
+            }
+            InputErrorKind::NoSegments => f.write_str(": a path needs at least one segment"),
         }
     }
 }
