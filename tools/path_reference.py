@@ -1399,7 +1399,7 @@ def gen_airborne(rng: random.Random, n: int) -> list[Case]:
             pool_path(rng.choice((0.0, rng.uniform(0.0, 0.2))), table_point(rng), st), BALL_R
         )
         t_from = max(a[0][0], b[0][0])
-        t_c = t_from + rng.uniform(0.0, 1.0) * max(a[1][0] - t_from, 0.01)
+        t_c = t_from + rng.uniform(0.1, 1.0) * max(a[1][0] - t_from, 0.01)
         xa, xb = f_pos(a, t_c), f_pos(b, t_c)
         dz = xa[2] - xb[2]
         w = rel_vel(a, b, t_c)
