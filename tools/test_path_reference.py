@@ -391,6 +391,31 @@ def test_power_of_two_scaling_is_exact(sample):
         assert r2.ambiguous == res.ambiguous
 
 
+def test_2d_embedded_in_3d_gives_the_2d_answer(sample):
+    """A 2-D case on the plane z = 0.75 in 3-D: the same time, floor and flag."""
+    for case, res in sample:
+        if case.dim != 2:
+            continue
+        a, b = pr.embed3(case.a, 0.75), pr.embed3(case.b, 0.75)
+        r3 = pr.collision(3, a, b, case.radius, case.t_max)
+        assert r3.t == res.t or abs(r3.t - res.t) <= mpf(2) ** -240 * max(abs(res.t), 1)
+        assert r3.ambiguous == res.ambiguous
+        assert r3.floor == res.floor or abs(r3.floor - res.floor) <= 1e-6 * res.floor
+
+
+def test_main_writes_a_readable_file(tmp_path):
+    """The command line writes a file that read_cases parses back."""
+    out = tmp_path / "cases.txt"
+    assert (
+        pr.main(["--fraction", "0.0005", "--seed", "9", "--processes", "1", "--out", str(out)]) == 0
+    )
+    cases = pr.read_cases(str(out))
+    assert len(cases) == len(pr.CATEGORIES)
+    for c in cases:
+        res = pr.collision(c.dim, c.a, c.b, c.radius, c.t_max)
+        assert pr.mp_to_float(res.t) == c.t_ref and res.ambiguous == c.ambiguous
+
+
 def test_line_format_round_trips(sample):
     """format_line then parse_line gives back the exact inputs."""
     for case, res in sample:
