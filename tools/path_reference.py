@@ -125,6 +125,27 @@ When the collision time and t_max agree to the root accuracy (2^-244), the
 sign of g(t_max) decides (a tie is no collision); a jump or t_from hit is
 compared exactly.
 
+Categories
+----------
+Billiard balls use pooltool's model (R = 0.028575 m, contact distance 2R,
+u_s = 0.2, u_r = 0.01, g = 9.81): sliding with the slip v + w x (-R z) at any
+angle to v, then rolling, then at rest, each segment's position and velocity
+computed in float64 from the one before.  pool_random (pairs anywhere on the
+table), pool_aimed (aimed shots), chasing_equal_acc (equal acceleration
+vectors: rolling one way, side by side, one constant acceleration, equal
+sliding), arbitrary_acc (1-4 random segments, 2-D/3-D), near_segment_start
+(contacts 1e-9..1e-3 s from a segment start), late_start (first starts ~1e4 s,
+up to 5 s apart), bouncing (4-8 segments in a unit box, some under gravity),
+seed_friction (the seed model as paths; cross-checked against
+collision_reference by the tests), airborne_3d (a ball in the air landing on
+or passing over one on the cloth), gravity_3d (particles under one gravity,
+some falling together), grazing (closest approach R (1 +- 1e-12..1e-3)),
+touching_start and overlapping_start (at t_from; approaching, separating,
+tangential, with accelerations), unit_scale (lengths times 2^k or
+10^U(-6, 6)), horizon (finite t_max, often next to the contact) and
+jump_overlap (a position jump at a later segment start).  The generator
+docstrings give the details; the full run takes about 4 minutes on 2 cores.
+
 Output (tests/data/path_cases.txt)
 ----------------------------------
 One case per line, whitespace separated::

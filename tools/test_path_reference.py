@@ -456,6 +456,19 @@ def test_data_file_parses_and_header_matches():
 
 
 @pytest.mark.skipif(not os.path.exists(DATA), reason="data file not generated")
+def test_data_file_is_what_the_generator_writes():
+    """The committed inputs are those of generate_cases for the header's seed."""
+    with open(DATA, encoding="ascii") as fh:
+        seed = int(fh.readlines()[1].split()[4].rstrip(";"))
+    cases = pr.read_cases(DATA)
+    generated = pr.generate_cases(seed)
+    assert len(cases) == len(generated)
+    for c, g in zip(cases, generated):
+        assert (c.category, c.dim, c.a, c.b, c.radius) == (g.category, g.dim, g.a, g.b, g.radius)
+        assert g.t_max_rule is not None or c.t_max == g.t_max
+
+
+@pytest.mark.skipif(not os.path.exists(DATA), reason="data file not generated")
 def test_data_file_lines_recompute():
     """A few lines of the file, recomputed from their parsed inputs, match."""
     cases = pr.read_cases(DATA)
