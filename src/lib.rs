@@ -36,7 +36,7 @@ mod python;
 pub mod scene;
 
 pub use coefficients::Gap;
-pub use collision::{CollisionOptions, collision_time, collision_time_with};
+pub use collision::{CollisionOptions, collision_time, collision_time_with, path_collision_time};
 pub use error::{InputError, InputErrorKind};
 pub use motion::Ball;
 pub use path::{Path, Path2, Path3, Segment, Segment2, Segment3};

@@ -29,7 +29,7 @@ pub(crate) const LONG: f64 = (1u64 << 40) as f64;
 /// squared (no square root). Without a branch, so that a batch runs it lane-wise. An
 /// overflowing product counts as long (so does every window beyond about 1e154).
 #[inline(always)]
-pub(crate) fn long_window(gap: &Gap, length: f64) -> bool {
+pub(crate) fn long_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool {
     const LONG2: f64 = LONG * LONG;
     let size2 = gap.offset.norm_squared() + gap.radius * gap.radius;
     let length2 = length * length;
@@ -41,7 +41,7 @@ pub(crate) fn long_window(gap: &Gap, length: f64) -> bool {
 
 /// The gap's own time scale: `min(L/|v|, √(L/|a|))`, `L² = |d|² + r²` (`∞` for a motion at
 /// rest).
-pub(crate) fn natural_time(gap: &Gap) -> f64 {
+pub(crate) fn natural_time<const D: usize>(gap: &Gap<D>) -> f64 {
     let size = (gap.offset.norm_squared() + gap.radius * gap.radius).sqrt();
     let by_speed = size / gap.velocity.norm();
     let by_acceleration = (size / gap.acceleration.norm()).sqrt();
@@ -51,14 +51,14 @@ pub(crate) fn natural_time(gap: &Gap) -> f64 {
 /// The pieces of a long window of `length` that starts with `gap`: the first is
 /// `[0, LONG · T]`; the caller searches each and asks for the next from where it ended
 /// ([`next_piece`]).
-pub(crate) fn first_piece(gap: &Gap, length: f64) -> f64 {
+pub(crate) fn first_piece<const D: usize>(gap: &Gap<D>, length: f64) -> f64 {
     (LONG * natural_time(gap)).min(length)
 }
 
 /// The end of the piece that starts at `start` (where the gap is `gap`, re-expanded there),
 /// in a window of `length`: `LONG` of the gap's time scales on, at least twice as far from the
 /// window's start, and at most the window's end.
-pub(crate) fn next_piece(gap: &Gap, start: f64, length: f64) -> f64 {
+pub(crate) fn next_piece<const D: usize>(gap: &Gap<D>, start: f64, length: f64) -> f64 {
     (start + (LONG * natural_time(gap)).max(start)).min(length)
 }
 

@@ -43,6 +43,7 @@ mod exclusion;
 pub(crate) mod length_unit;
 pub(crate) mod long_window;
 pub(crate) mod moving_entry;
+mod path_contact;
 pub(crate) mod prefilter;
 pub(crate) mod straight;
 
@@ -56,6 +57,8 @@ use entry::{WindowSearch, first_entry, piecewise_entry};
 use length_unit::{LengthUnit, largest, normalised_balls};
 use long_window::{first_piece, long_window, next_piece};
 use moving_entry::{WhileMoving, while_moving_one};
+use nalgebra::SVector;
+pub use path_contact::path_collision_time;
 use prefilter::{PairInput, never_touch};
 
 /// Options of a collision query ([`collision_time_with`]).
@@ -243,13 +246,13 @@ fn first_contact_in_unit(
 /// Whether balls touching or overlapping at the start are moving into each other: the first
 /// non-zero derivative of the gap is negative.
 #[inline(always)]
-pub(crate) fn approaching(gap: &Gap) -> bool {
+pub(crate) fn approaching<const D: usize>(gap: &Gap<D>) -> bool {
     // The signs are those of products of lengths alone (the radius plays no part), so they
     // are taken in the unit of the motion's own largest length: balls whose centres are far
     // closer than their radii are long (overlapping deeply) do not lose the signs to underflow.
     let (d, v, f) = (gap.offset, gap.velocity, gap.acceleration);
-    let unit = LengthUnit::of(largest([d.x, d.y, v.x, v.y, f.x, f.y]));
-    let u = |x: nalgebra::Vector2<f64>| x.map(|c| unit.apply(c));
+    let unit = LengthUnit::of(largest([d.amax(), v.amax(), f.amax()]));
+    let u = |x: nalgebra::SVector<f64, D>| x.map(|c| unit.apply(c));
     let gap = Gap {
         offset: u(d),
         velocity: u(v),
@@ -294,7 +297,11 @@ pub(crate) fn normal_time_unit(length: f64) -> f64 {
 
 /// The first entry on a window of `length` (possibly infinite), as time since its start;
 /// a long window ([`long_window`]) piece by piece.
-fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearch {
+fn search_window<const D: usize>(
+    gap: &Gap<D>,
+    length: f64,
+    previous_positive: bool,
+) -> WindowSearch {
     let length = bounded_length(gap, length);
     if !long_window(gap, length) {
         return search_plain_window(gap, length, previous_positive);
@@ -323,13 +330,21 @@ fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearc
 
 /// The length of a window to search: `length` itself if finite (up to [`LONGEST_WINDOW`]);
 /// for an unbounded one, up to twice the closest approach.
-fn bounded_length(gap: &Gap, length: f64) -> f64 {
+fn bounded_length<const D: usize>(gap: &Gap<D>, length: f64) -> f64 {
     let length = if length.is_finite() {
         length
+    } else if gap.acceleration != SVector::<f64, D>::zeros() {
+        // Accelerating for ever (balls on general paths): |d(s)| ≥ ½|a|s² − |v|s − |d(0)|,
+        // above the radius beyond the larger root of that quadratic; a margin of 2⁻²⁰ covers
+        // the rounding of the bound (the window's end needs no precision).
+        let (a, v) = (gap.acceleration.norm(), gap.velocity.norm());
+        let reach = gap.offset.norm() + gap.radius;
+        let bound = (v + (v * v + 2.0 * a * reach).sqrt()) / a;
+        bound * (1.0 + 1.0 / f64::from(1u32 << 20))
     } else {
-        // Only a frictionless (or resting) relative motion has an unbounded window; its gap is
-        // then a quadratic symmetric about the closest approach s*, so any entry lies in
-        // [0, s*]: search [0, 2s*] to keep s* inside.
+        // A frictionless (or resting) relative motion: its gap is then a quadratic symmetric
+        // about the closest approach s*, so any entry lies in [0, s*]: search [0, 2s*] to
+        // keep s* inside.
         let approach = -gap.offset.dot(&gap.velocity);
         let speed2 = gap.velocity.norm_squared();
         if approach > 0.0 && speed2 > 0.0 {
@@ -343,7 +358,11 @@ fn bounded_length(gap: &Gap, length: f64) -> f64 {
 }
 
 /// The first entry on a window of `length` that is not long, as time since its start.
-fn search_plain_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearch {
+fn search_plain_window<const D: usize>(
+    gap: &Gap<D>,
+    length: f64,
+    previous_positive: bool,
+) -> WindowSearch {
     let h = match time_unit(length) {
         Some(h) => h,
         None => {
