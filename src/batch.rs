@@ -6,6 +6,10 @@
 //! [`collision_time`](crate::collision_time) search as a single query, so batch and scalar
 //! answers are identical, and so are the answers for any number of threads.
 
+mod paths;
+
+pub use paths::{PathPairs, PathRows, path_collision_times};
+
 use std::num::NonZeroUsize;
 use std::sync::{Arc, Mutex};
 

@@ -50,6 +50,7 @@ pub enum InputErrorKind {
 pub struct InputError {
     argument: &'static str,
     index: Option<usize>,
+    segment: Option<usize>,
     kind: InputErrorKind,
 }
 
@@ -66,6 +67,7 @@ impl InputError {
         Self {
             argument,
             index: None,
+            segment: None,
             kind,
         }
     }
@@ -81,6 +83,23 @@ impl InputError {
     pub const fn at(self, index: usize) -> Self {
         Self {
             index: Some(index),
+            ..self
+        }
+    }
+
+    /// The same error, about the segment it was located at ([`InputError::at`]) of the path of
+    /// pair `pair` of a batch: printed `start_b[7, 2]` for pair 7, segment 2.
+    ///
+    /// ```
+    /// use ballcollide::{InputError, InputErrorKind};
+    /// let err = InputError::new("vel_b", InputErrorKind::NotFinite(f64::NAN)).at(2).in_pair(7);
+    /// assert_eq!((err.index(), err.segment()), (Some(7), Some(2)));
+    /// assert_eq!(err.to_string(), "vel_b[7, 2]: must be finite, got NaN");
+    /// ```
+    pub const fn in_pair(self, pair: usize) -> Self {
+        Self {
+            index: Some(pair),
+            segment: self.index,
             ..self
         }
     }
@@ -106,6 +125,11 @@ impl InputError {
         self.index
     }
 
+    /// The segment of a path, for errors in a batch of paths (see [`InputError::in_pair`]).
+    pub const fn segment(&self) -> Option<usize> {
+        self.segment
+    }
+
     /// What is wrong.
     ///
     /// ```
@@ -122,8 +146,10 @@ impl InputError {
 impl fmt::Display for InputError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.argument)?;
-        if let Some(i) = self.index {
-            write!(f, "[{i}]")?;
+        match (self.index, self.segment) {
+            (Some(i), Some(k)) => write!(f, "[{i}, {k}]")?,
+            (Some(i), None) => write!(f, "[{i}]")?,
+            _ => {}
         }
         match self.kind {
             InputErrorKind::NotFinite(x) => write!(f, ": must be finite, got {x}"),

@@ -184,3 +184,22 @@ fn radii_whose_sum_overflows_are_valid() {
         .expect("finite, positive radii");
     assert_eq!(times[1], 0.0);
 }
+
+#[test]
+fn a_window_whose_time_scale_underflows_still_ends() {
+    // Centres and radius 1e-170 of the speeds: the gap's own time scale (|d|² + r² underflows
+    // to 0) once stalled the pieces of a long window. Run in a thread, so that a stall fails
+    // the test instead of hanging it.
+    let (send, receive) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let a = ball([0.0, 0.0], [1.0, 0.0], 1e-3);
+        let b = ball([3e-170, 1e-171], [2.0, 1e-3], 1e-3);
+        let _ = send.send(collision_time(&a, &b, 1e-170));
+    });
+    let got = receive
+        .recv_timeout(std::time::Duration::from_secs(20))
+        .expect("the search ends");
+    // Squares of 1e-170 underflow: beyond the range where the answer is exact (B recedes; that
+    // is decided by numbers that underflow), so only that it ends, with a time or none.
+    assert!(got.expect("valid input").is_none_or(|t| t >= 0.0));
+}

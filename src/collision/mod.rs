@@ -43,9 +43,10 @@ mod exclusion;
 pub(crate) mod length_unit;
 pub(crate) mod long_window;
 pub(crate) mod moving_entry;
-mod path_contact;
+pub(crate) mod path_contact;
 pub(crate) mod prefilter;
 pub(crate) mod straight;
+mod window_box;
 
 use crate::coefficients::Gap;
 use crate::error::{InputError, check_horizon, check_radius};

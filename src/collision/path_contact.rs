@@ -10,10 +10,9 @@
 //! full accuracy; and every length is first divided by the pair's unit of length
 //! ([`length_unit`](super::length_unit)), so that the answer does not depend on it.
 
-use nalgebra::SVector;
-
 use super::length_unit::{LengthUnit, largest};
-use super::{CollisionOptions, WindowSearch, approaching, search_window};
+use super::window_box::apart_on_window;
+use super::{CollisionOptions, WindowSearch, approaching, bounded_length, search_window};
 use crate::coefficients::Gap;
 use crate::error::{InputError, check_horizon, check_radius};
 use crate::path::{Path, Segment};
@@ -54,30 +53,36 @@ pub fn path_collision_time<const D: usize>(
 ) -> Result<Option<f64>, InputError> {
     let radius = check_radius("radius", radius)?;
     let t_max = check_horizon("t_max", options.t_max)?;
-    Ok(first_path_contact(a, b, [radius, 0.0], t_max))
+    Ok(first_path_contact(
+        a.segments(),
+        b.segments(),
+        [radius, 0.0],
+        t_max,
+    ))
 }
 
 /// The search on validated inputs; the contact distance is the sum of `radii`, formed in the
 /// pair's unit of length.
+/// `a` and `b` are the segments of valid paths ([`Path::segments`]).
 pub(crate) fn first_path_contact<const D: usize>(
-    a: &Path<D>,
-    b: &Path<D>,
+    a: &[Segment<D>],
+    b: &[Segment<D>],
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
     let unit = pair_unit(a, b, radii);
     let radius = unit.apply(radii[0]) + unit.apply(radii[1]);
-    let t_from = a.first_start().max(b.first_start());
-    let mut spans_a = a.spans().skip_while(|&(_, end)| end <= t_from).peekable();
-    let mut spans_b = b.spans().skip_while(|&(_, end)| end <= t_from).peekable();
-    let mut start = t_from;
+    let mut start = a.first()?.start.max(b.first()?.start);
+    let (mut i, mut j) = (active(a, 0, start), active(b, 0, start));
+    let (mut seg_a, mut seg_b) = (scaled(&a[i], unit), scaled(&b[j], unit));
     let mut previous_positive = None;
-    while let (Some(&(seg_a, end_a)), Some(&(seg_b, end_b))) = (spans_a.peek(), spans_b.peek()) {
+    loop {
         if start >= t_max {
             return None;
         }
+        let (end_a, end_b) = (end_of(a, i), end_of(b, j));
         let end = end_a.min(end_b);
-        let gap = window_gap(seg_a, seg_b, start, radius, unit);
+        let gap = window_gap(&seg_a, &seg_b, start, radius);
         let before = match previous_positive {
             Some(positive) => positive,
             None => {
@@ -90,52 +95,74 @@ pub(crate) fn first_path_contact<const D: usize>(
                 g0 > 0.0
             }
         };
-        match search_window(&gap, end - start, before) {
-            WindowSearch::Entry(s) => {
-                let t = start + s;
-                return (t < t_max).then_some(t);
+        // Most windows of balls on paths are proven apart by the box the separation sweeps.
+        if apart_on_window(&gap, bounded_length(&gap, end - start)) {
+            previous_positive = Some(true);
+        } else {
+            match search_window(&gap, end - start, before) {
+                WindowSearch::Entry(s) => {
+                    let t = start + s;
+                    return (t < t_max).then_some(t);
+                }
+                WindowSearch::NoEntry { ends_positive } => {
+                    previous_positive = Some(ends_positive);
+                }
             }
-            WindowSearch::NoEntry { ends_positive } => previous_positive = Some(ends_positive),
         }
-        if end_a == end {
-            spans_a.next();
-        }
-        if end_b == end {
-            spans_b.next();
+        if end == f64::INFINITY {
+            return None;
         }
         start = end;
+        if end_a == end {
+            i = active(a, i, end);
+            seg_a = scaled(&a[i], unit);
+        }
+        if end_b == end {
+            j = active(b, j, end);
+            seg_b = scaled(&b[j], unit);
+        }
     }
-    None
+}
+
+/// The index of the segment active at `t` (the last one, from `from` on, whose start is
+/// ≤ `t`: empty segments are never active), for `t` at or after segment `from`'s start.
+fn active<const D: usize>(segments: &[Segment<D>], from: usize, t: f64) -> usize {
+    let mut k = from;
+    while segments.get(k + 1).is_some_and(|next| next.start <= t) {
+        k += 1;
+    }
+    k
+}
+
+/// When segment `k` ends: the next one's start, `+∞` for the last.
+fn end_of<const D: usize>(segments: &[Segment<D>], k: usize) -> f64 {
+    segments.get(k + 1).map_or(f64::INFINITY, |next| next.start)
 }
 
 /// The unit of length of a pair of paths: from the largest position, velocity or acceleration
 /// component of any segment, and the radii.
-fn pair_unit<const D: usize>(a: &Path<D>, b: &Path<D>, radii: [f64; 2]) -> LengthUnit {
+fn pair_unit<const D: usize>(a: &[Segment<D>], b: &[Segment<D>], radii: [f64; 2]) -> LengthUnit {
     let segment_largest =
         |s: &Segment<D>| largest([s.position.amax(), s.velocity.amax(), s.acceleration.amax()]);
-    let paths = a.segments().iter().chain(b.segments());
+    let paths = a.iter().chain(b);
     LengthUnit::of(paths.fold(largest(radii), |m, s| m.max(segment_largest(s))))
 }
 
-/// The relative motion on the window starting at `start`, from the two active segments, each
-/// evaluated in time since its own start, in the pair's unit of length.
-fn window_gap<const D: usize>(
-    a: &Segment<D>,
-    b: &Segment<D>,
-    start: f64,
-    radius: f64,
-    unit: LengthUnit,
-) -> Gap<D> {
-    let scaled = |s: &Segment<D>| Segment {
+/// A segment in the pair's unit of length.
+fn scaled<const D: usize>(s: &Segment<D>, unit: LengthUnit) -> Segment<D> {
+    Segment {
         start: s.start,
         position: s.position.map(|x| unit.apply(x)),
         velocity: s.velocity.map(|x| unit.apply(x)),
         acceleration: s.acceleration.map(|x| unit.apply(x)),
-    };
-    let (a, b) = (scaled(a), scaled(b));
-    let offset: SVector<f64, D> = a.position_at(start) - b.position_at(start);
+    }
+}
+
+/// The relative motion on the window starting at `start`, from the two active segments (in
+/// the pair's unit of length), each evaluated in time since its own start.
+fn window_gap<const D: usize>(a: &Segment<D>, b: &Segment<D>, start: f64, radius: f64) -> Gap<D> {
     Gap {
-        offset,
+        offset: a.position_at(start) - b.position_at(start),
         velocity: a.velocity_at(start) - b.velocity_at(start),
         acceleration: a.acceleration - b.acceleration,
         radius,

@@ -33,7 +33,7 @@ use crate::error::{InputError, InputErrorKind, finite};
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Path<const D: usize> {
-    segments: Vec<Segment<D>>,
+    pub(super) segments: Vec<Segment<D>>,
 }
 
 /// A path in the plane.
@@ -44,12 +44,12 @@ pub type Path3 = Path<3>;
 
 /// The argument names that a path's errors report: one for a path without segments, one per
 /// segment field.
-pub(super) struct Names {
-    pub(super) segments: &'static str,
-    pub(super) start: &'static str,
-    pub(super) position: &'static str,
-    pub(super) velocity: &'static str,
-    pub(super) acceleration: &'static str,
+pub(crate) struct Names {
+    pub(crate) segments: &'static str,
+    pub(crate) start: &'static str,
+    pub(crate) position: &'static str,
+    pub(crate) velocity: &'static str,
+    pub(crate) acceleration: &'static str,
 }
 
 impl<const D: usize> Path<D> {
@@ -90,24 +90,7 @@ impl<const D: usize> Path<D> {
 
     /// The path made of `segments` if they are valid, else an error using `names`.
     pub(super) fn checked(segments: Vec<Segment<D>>, names: &Names) -> Result<Self, InputError> {
-        if segments.is_empty() {
-            return Err(InputError::new(names.segments, InputErrorKind::NoSegments));
-        }
-        let mut previous = f64::NEG_INFINITY;
-        for (k, segment) in segments.iter().enumerate() {
-            check_order(names.start, previous, segment.start).map_err(|e| e.at(k))?;
-            finite(names.start, segment.start).map_err(|e| e.at(k))?;
-            for (name, vector) in [
-                (names.position, &segment.position),
-                (names.velocity, &segment.velocity),
-                (names.acceleration, &segment.acceleration),
-            ] {
-                for &x in vector.iter() {
-                    finite(name, x).map_err(|e| e.at(k))?;
-                }
-            }
-            previous = segment.start;
-        }
+        check_segments(&segments, names)?;
         Ok(Self { segments })
     }
 
@@ -145,14 +128,7 @@ impl<const D: usize> Path<D> {
     /// # Ok::<(), ballcollide::InputError>(())
     /// ```
     pub fn spans(&self) -> impl Iterator<Item = (&Segment<D>, f64)> {
-        let ends = self.segments[1..]
-            .iter()
-            .map(|segment| segment.start)
-            .chain(std::iter::once(f64::INFINITY));
-        self.segments
-            .iter()
-            .zip(ends)
-            .filter(|(segment, end)| segment.start < *end)
+        spans(&self.segments)
     }
 
     /// The segment active at `t`: the last one whose start is ≤ `t`. An empty segment (one
@@ -221,6 +197,49 @@ impl<const D: usize> Path<D> {
         let begun = self.segments.partition_point(|segment| segment.start <= t);
         (&self.segments[begun - 1], t)
     }
+}
+
+/// Checks that `segments` make a path: at least one, starts finite and never decreasing,
+/// every value finite; the error uses `names` and the offending segment's index.
+pub(crate) fn check_segments<const D: usize>(
+    segments: &[Segment<D>],
+    names: &Names,
+) -> Result<(), InputError> {
+    if segments.is_empty() {
+        return Err(InputError::new(names.segments, InputErrorKind::NoSegments));
+    }
+    let mut previous = f64::NEG_INFINITY;
+    for (k, segment) in segments.iter().enumerate() {
+        check_order(names.start, previous, segment.start).map_err(|e| e.at(k))?;
+        finite(names.start, segment.start).map_err(|e| e.at(k))?;
+        for (name, vector) in [
+            (names.position, &segment.position),
+            (names.velocity, &segment.velocity),
+            (names.acceleration, &segment.acceleration),
+        ] {
+            for &x in vector.iter() {
+                finite(name, x).map_err(|e| e.at(k))?;
+            }
+        }
+        previous = segment.start;
+    }
+    Ok(())
+}
+
+/// The segments of a valid path that are ever active, each with the time it ends (the next
+/// start; `+∞` for the last): empty segments are skipped.
+pub(crate) fn spans<const D: usize>(
+    segments: &[Segment<D>],
+) -> impl Iterator<Item = (&Segment<D>, f64)> {
+    let ends = segments
+        .iter()
+        .skip(1)
+        .map(|segment| segment.start)
+        .chain(std::iter::once(f64::INFINITY));
+    segments
+        .iter()
+        .zip(ends)
+        .filter(|(segment, end)| segment.start < *end)
 }
 
 /// Checks that `start` is not NaN and not earlier than the `previous` start (infinities are

@@ -1,6 +1,7 @@
 //! [`Path::from_rows`]: a path from the rows of the batch arrays, with their padding convention.
 
-use super::{Path, Segment, piecewise::Names, piecewise::check_order};
+use super::piecewise::{Names, check_order, check_segments};
+use super::{Path, Segment};
 use crate::error::{InputError, InputErrorKind};
 
 impl<const D: usize> Path<D> {
@@ -60,12 +61,26 @@ impl<const D: usize> Path<D> {
                 return Err(InputError::new(argument, kind));
             }
         }
-        let used = used_rows(start)?;
-        let segments = (0..used)
-            .map(|k| Segment::new(start[k], pos[k].into(), vel[k].into(), acc[k].into()))
-            .collect();
-        Self::checked(segments, &NAMES)
+        let mut segments = Vec::new();
+        segments_from_rows([start], [pos, vel, acc], &NAMES, &mut segments)?;
+        Ok(Self { segments })
     }
+}
+
+/// The used segments of one path's rows (of equal lengths), checked, into `segments` (cleared
+/// first; a batch reuses one buffer for all its paths); errors use `names` and the row.
+pub(crate) fn segments_from_rows<const D: usize>(
+    [start]: [&[f64]; 1],
+    [pos, vel, acc]: [&[[f64; D]]; 3],
+    names: &Names,
+    segments: &mut Vec<Segment<D>>,
+) -> Result<(), InputError> {
+    let used = used_rows(start).map_err(|e| e.renamed(names.start))?;
+    segments.clear();
+    segments.extend(
+        (0..used).map(|k| Segment::new(start[k], pos[k].into(), vel[k].into(), acc[k].into())),
+    );
+    check_segments(segments, names)
 }
 
 /// The number of used rows: all but the trailing ones whose start is `+∞`.

@@ -1,0 +1,203 @@
+//! Many pairs of paths at once: [`path_collision_times`] over rows, in parallel, into a
+//! caller's buffer.
+//!
+//! Each side of a batch is `N` paths of `K` segments in rows ([`PathRows`]: the layout of the
+//! `(N, K)` and `(N, K, D)` arrays numpy hands over), or a single path broadcast against every
+//! pair (`N = 1`: "ball `i` against all the others", what an event loop asks after each
+//! event). Paths with fewer than `K` segments are padded with rows whose start is `+∞`.
+//! Every pair goes through the same validation and the same search as
+//! [`path_collision_time`](crate::path_collision_time), so batch and single answers are
+//! identical, and so are the answers for any number of threads.
+
+use super::{PerPair, Threads, check_len, run_chunks};
+use crate::collision::path_contact::first_path_contact;
+use crate::error::{InputError, InputErrorKind, check_horizon, check_radius};
+use crate::path::{Names, Segment, segments_from_rows};
+
+/// One side of a batch of path pairs: `N` paths of `segments` rows each, row `k` of path `i`
+/// at `i·segments + k` of every slice.
+///
+/// ```
+/// use ballcollide::batch::PathRows;
+/// let start = [0.0, 1.0, 0.0, f64::INFINITY]; // two paths: 2 segments, then 1 (padded)
+/// let rows = [[0.0, 0.0]; 4];
+/// let paths = PathRows { start: &start, pos: &rows, vel: &rows, acc: &rows, segments: 2 };
+/// assert_eq!(paths.len(), 2);
+/// ```
+#[derive(Clone, Copy, Debug)]
+pub struct PathRows<'a, const D: usize> {
+    /// Segment starts, `N·K`.
+    pub start: &'a [f64],
+    /// Segment positions at their start, `N·K` rows.
+    pub pos: &'a [[f64; D]],
+    /// Segment velocities at their start, `N·K` rows.
+    pub vel: &'a [[f64; D]],
+    /// Segment accelerations, `N·K` rows.
+    pub acc: &'a [[f64; D]],
+    /// `K`: rows per path (≥ 1).
+    pub segments: usize,
+}
+
+impl<const D: usize> PathRows<'_, D> {
+    /// The number of paths `N` (0 when `segments` is 0).
+    pub fn len(&self) -> usize {
+        self.start.len().checked_div(self.segments).unwrap_or(0)
+    }
+
+    /// Whether there is no path.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Path `i`'s rows: start, position, velocity, acceleration.
+    fn rows(&self, i: usize) -> ([&[f64]; 1], [&[[f64; D]]; 3]) {
+        let k = self.segments;
+        let range = i * k..(i + 1) * k;
+        (
+            [&self.start[range.clone()]],
+            [
+                &self.pos[range.clone()],
+                &self.vel[range.clone()],
+                &self.acc[range],
+            ],
+        )
+    }
+}
+
+/// The inputs of a batch of collision queries on paths: pair `i` is path `i` of `a` (or its
+/// only path) against path `i` of `b` (or its only path), at contact distance `radius`, with
+/// horizon `t_max` (`∞` for none).
+#[derive(Clone, Copy, Debug)]
+pub struct PathPairs<'a, const D: usize> {
+    /// The A paths (1 or `N`).
+    pub a: PathRows<'a, D>,
+    /// The B paths (1 or `N`).
+    pub b: PathRows<'a, D>,
+    /// Contact distance (sum of the two radii, > 0).
+    pub radius: PerPair<'a>,
+    /// Horizon: a collision at `t ≥ t_max` is reported as none.
+    pub t_max: PerPair<'a>,
+}
+
+/// The argument names of side A's and side B's rows in errors.
+const NAMES: [Names; 2] = [
+    Names {
+        segments: "start_a",
+        start: "start_a",
+        position: "pos_a",
+        velocity: "vel_a",
+        acceleration: "acc_a",
+    },
+    Names {
+        segments: "start_b",
+        start: "start_b",
+        position: "pos_b",
+        velocity: "vel_b",
+        acceleration: "acc_b",
+    },
+];
+
+/// The first contact time of every pair of paths in `pairs` (absolute, as the starts are),
+/// written to `out` (`∞` where there is none).
+///
+/// # Errors
+/// The first invalid pair's error (lowest index), naming the argument and, for a path's
+/// values, the pair and the segment (``start_b[7, 2]: starts must not decrease, got 1 after
+/// 2``); a side's paths must number 1 or `out.len()`, and its rows `N·K` in every slice.
+/// On error, `out` holds unspecified values.
+///
+/// ```
+/// use ballcollide::batch::{PathPairs, PathRows, PerPair, Threads, path_collision_times};
+///
+/// // One ball rolling along x at 1 m/s against two at rest (broadcast A).
+/// let a = PathRows { start: &[0.0], pos: &[[0.0, 0.0]], vel: &[[1.0, 0.0]], acc: &[[0.0, 0.0]], segments: 1 };
+/// let rest = [[0.0, 0.0]; 2];
+/// let b = PathRows { start: &[0.0, 0.0], pos: &[[2.0, 0.0], [2.0, 5.0]], vel: &rest, acc: &rest, segments: 1 };
+/// let pairs = PathPairs { a, b, radius: PerPair::All(1.0), t_max: PerPair::All(f64::INFINITY) };
+/// let mut out = [0.0; 2];
+/// path_collision_times(&pairs, &mut out, Threads::All)?;
+/// assert_eq!(out, [1.0, f64::INFINITY]);
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+pub fn path_collision_times<const D: usize>(
+    pairs: &PathPairs<'_, D>,
+    out: &mut [f64],
+    threads: Threads,
+) -> Result<(), InputError> {
+    let n = out.len();
+    check_side(&pairs.a, &NAMES[0], n)?;
+    check_side(&pairs.b, &NAMES[1], n)?;
+    pairs.radius.check_len("radius", n)?;
+    pairs.t_max.check_len("t_max", n)?;
+    pairs.radius.check_shared("radius", check_radius)?;
+    pairs.t_max.check_shared("t_max", check_horizon)?;
+    run_chunks(out, threads, |offset, chunk| {
+        // One buffer per side and task, reused for every pair (a broadcast side is read once).
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        let broadcast_a = pairs.a.len() == 1;
+        if broadcast_a {
+            read_path(&pairs.a, 0, &NAMES[0], &mut a).map_err(|e| e.in_pair(0))?;
+        }
+        for (k, slot) in chunk.iter_mut().enumerate() {
+            let i = offset + k;
+            *slot = pair_time(pairs, i, broadcast_a, [&mut a, &mut b])?;
+        }
+        Ok(())
+    })
+}
+
+/// Pair `i`'s answer, its paths read into the buffers (A's already there if broadcast).
+fn pair_time<const D: usize>(
+    pairs: &PathPairs<'_, D>,
+    i: usize,
+    broadcast_a: bool,
+    [a, b]: [&mut Vec<Segment<D>>; 2],
+) -> Result<f64, InputError> {
+    if !broadcast_a {
+        read_path(&pairs.a, i, &NAMES[0], a).map_err(|e| e.in_pair(i))?;
+    }
+    let j = if pairs.b.len() == 1 { 0 } else { i };
+    read_path(&pairs.b, j, &NAMES[1], b).map_err(|e| e.in_pair(i))?;
+    let radius = check_radius("radius", pairs.radius.get(i)).map_err(|e| e.at(i))?;
+    let t_max = check_horizon("t_max", pairs.t_max.get(i)).map_err(|e| e.at(i))?;
+    Ok(first_path_contact(a, b, [radius, 0.0], t_max).unwrap_or(f64::INFINITY))
+}
+
+/// Path `i` of `side`, checked, into `segments` (its errors at the segment's index).
+fn read_path<const D: usize>(
+    side: &PathRows<'_, D>,
+    i: usize,
+    names: &Names,
+    segments: &mut Vec<Segment<D>>,
+) -> Result<(), InputError> {
+    let (start, values) = side.rows(i);
+    segments_from_rows(start, values, names, segments)
+}
+
+/// Checks a side's shape: `segments ≥ 1`, every slice of `N·K` rows, `N` either 1 or `n`.
+fn check_side<const D: usize>(
+    side: &PathRows<'_, D>,
+    names: &Names,
+    n: usize,
+) -> Result<(), InputError> {
+    if side.segments == 0 {
+        return Err(InputError::new(names.segments, InputErrorKind::NoSegments));
+    }
+    let rows = side.start.len();
+    check_len(names.position, side.pos.len(), rows)?;
+    check_len(names.velocity, side.vel.len(), rows)?;
+    check_len(names.acceleration, side.acc.len(), rows)?;
+    if !rows.is_multiple_of(side.segments) {
+        return Err(InputError::new(
+            names.start,
+            InputErrorKind::LengthMismatch {
+                expected: rows.div_ceil(side.segments) * side.segments,
+                found: rows,
+            },
+        ));
+    }
+    match side.len() {
+        1 => Ok(()),
+        paths => check_len(names.start, paths, n),
+    }
+}

@@ -1,0 +1,176 @@
+//! The batch of path pairs: the single query's answers, bit for bit, whatever the threads,
+//! with A broadcast or not; errors naming the argument, the pair and the segment.
+
+use std::num::NonZeroUsize;
+
+use ballcollide::batch::{PathPairs, PathRows, PerPair, Threads, path_collision_times};
+use ballcollide::path::Path;
+use ballcollide::{CollisionOptions, path_collision_time};
+
+#[path = "support/rng.rs"]
+mod rng;
+use rng::Rng;
+
+/// `n` random paths of up to `k` segments in rows (padded with `+∞` starts), on a 2 m table.
+struct Rows<const D: usize> {
+    start: Vec<f64>,
+    pos: Vec<[f64; D]>,
+    vel: Vec<[f64; D]>,
+    acc: Vec<[f64; D]>,
+    k: usize,
+}
+
+impl<const D: usize> Rows<D> {
+    fn random(rng: &mut Rng, n: usize, k: usize) -> Self {
+        let mut rows = Self {
+            start: vec![],
+            pos: vec![],
+            vel: vec![],
+            acc: vec![],
+            k,
+        };
+        for _ in 0..n {
+            let used = 1 + (rng.uniform(0.0, 1.0) * k as f64) as usize % k;
+            let mut t = rng.uniform(0.0, 1.0);
+            for s in 0..k {
+                let v = |rng: &mut Rng, scale: f64| -> [f64; D] {
+                    std::array::from_fn(|_| (rng.uniform(0.0, 1.0) - 0.5) * scale)
+                };
+                rows.start.push(if s < used { t } else { f64::INFINITY });
+                rows.pos.push(v(rng, 2.0));
+                rows.vel.push(v(rng, 4.0));
+                rows.acc.push(v(rng, 1.0));
+                t += rng.uniform(0.0, 1.0) * 2.0;
+            }
+        }
+        rows
+    }
+
+    fn side(&self) -> PathRows<'_, D> {
+        PathRows {
+            start: &self.start,
+            pos: &self.pos,
+            vel: &self.vel,
+            acc: &self.acc,
+            segments: self.k,
+        }
+    }
+
+    fn path(&self, i: usize) -> Path<D> {
+        let r = i * self.k..(i + 1) * self.k;
+        Path::from_rows(
+            &self.start[r.clone()],
+            &self.pos[r.clone()],
+            &self.vel[r.clone()],
+            &self.acc[r],
+        )
+        .expect("valid rows")
+    }
+}
+
+fn check_batch<const D: usize>(seed: u64) {
+    let mut rng = Rng(seed);
+    let n = 3000;
+    let (a, b) = (
+        Rows::<D>::random(&mut rng, n, 4),
+        Rows::<D>::random(&mut rng, n, 3),
+    );
+    let radii: Vec<f64> = (0..n).map(|_| 0.05 + 0.3 * rng.uniform(0.0, 1.0)).collect();
+    let pairs = PathPairs {
+        a: a.side(),
+        b: b.side(),
+        radius: PerPair::Each(&radii),
+        t_max: PerPair::All(f64::INFINITY),
+    };
+    let mut one = vec![0.0; n];
+    let mut two = vec![0.0; n];
+    path_collision_times(&pairs, &mut one, Threads::AtMost(NonZeroUsize::MIN)).unwrap();
+    path_collision_times(&pairs, &mut two, Threads::All).unwrap();
+    let mut hits = 0;
+    for i in 0..n {
+        let single = path_collision_time(&a.path(i), &b.path(i), radii[i], &Default::default())
+            .unwrap()
+            .unwrap_or(f64::INFINITY);
+        assert_eq!(one[i].to_bits(), single.to_bits(), "pair {i}");
+        assert_eq!(two[i].to_bits(), single.to_bits(), "pair {i}");
+        hits += single.is_finite() as usize;
+    }
+    assert!(hits > n / 50, "{hits} hits: the test needs contacts");
+    // A broadcast against every B.
+    let first = PathRows {
+        start: &a.start[..a.k],
+        pos: &a.pos[..a.k],
+        vel: &a.vel[..a.k],
+        acc: &a.acc[..a.k],
+        segments: a.k,
+    };
+    let broadcast = PathPairs { a: first, ..pairs };
+    path_collision_times(&broadcast, &mut one, Threads::All).unwrap();
+    let a0 = a.path(0);
+    for (i, &t) in one.iter().enumerate().step_by(7) {
+        let options = CollisionOptions::default();
+        let single = path_collision_time(&a0, &b.path(i), radii[i], &options).unwrap();
+        assert_eq!(
+            t.to_bits(),
+            single.unwrap_or(f64::INFINITY).to_bits(),
+            "pair {i}"
+        );
+    }
+}
+
+#[test]
+fn the_batch_is_the_single_query_bit_for_bit_in_2d() {
+    check_batch::<2>(17);
+}
+
+#[test]
+fn the_batch_is_the_single_query_bit_for_bit_in_3d() {
+    check_batch::<3>(18);
+}
+
+#[test]
+fn errors_name_the_argument_the_pair_and_the_segment() {
+    let mut rng = Rng(5);
+    let (a, mut b) = (
+        Rows::<2>::random(&mut rng, 10, 3),
+        Rows::<2>::random(&mut rng, 10, 3),
+    );
+    let mut out = [0.0; 10];
+    let run = |b: &Rows<2>, out: &mut [f64]| {
+        let pairs = PathPairs {
+            a: a.side(),
+            b: b.side(),
+            radius: PerPair::All(0.1),
+            t_max: PerPair::All(f64::INFINITY),
+        };
+        path_collision_times(&pairs, out, Threads::All)
+            .unwrap_err()
+            .to_string()
+    };
+    b.start[7 * 3] = 5.0;
+    b.start[7 * 3 + 1] = 4.0;
+    b.start[7 * 3 + 2] = 6.0;
+    assert_eq!(
+        run(&b, &mut out),
+        "start_b[7, 1]: starts must not decrease, got 4 after 5"
+    );
+    b.start[7 * 3 + 1] = 5.5;
+    b.vel[4 * 3][1] = f64::NAN;
+    b.start[4 * 3] = 0.0;
+    assert_eq!(run(&b, &mut out), "vel_b[4, 0]: must be finite, got NaN");
+    // A padding row's values are not read; a first start of +inf is no path.
+    b.vel[4 * 3] = [0.0; 2];
+    b.start[2 * 3..2 * 3 + 3].fill(f64::INFINITY);
+    assert_eq!(run(&b, &mut out), "start_b[2, 0]: must be finite, got inf");
+    let short = PathPairs {
+        a: a.side(),
+        b: PathRows {
+            start: &b.start[..27],
+            ..b.side()
+        },
+        radius: PerPair::All(0.1),
+        t_max: PerPair::All(f64::INFINITY),
+    };
+    let err = path_collision_times(&short, &mut out, Threads::All).unwrap_err();
+    assert_eq!(err.argument(), "pos_b");
+}
