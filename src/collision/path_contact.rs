@@ -142,10 +142,13 @@ fn end_of<const D: usize>(segments: &[Segment<D>], k: usize) -> f64 {
 /// The unit of length of a pair of paths: from the largest position, velocity or acceleration
 /// component of any segment, and the radii.
 fn pair_unit<const D: usize>(a: &[Segment<D>], b: &[Segment<D>], radii: [f64; 2]) -> LengthUnit {
-    let segment_largest =
-        |s: &Segment<D>| largest([s.position.amax(), s.velocity.amax(), s.acceleration.amax()]);
-    let paths = a.iter().chain(b);
-    LengthUnit::of(paths.fold(largest(radii), |m, s| m.max(segment_largest(s))))
+    let mut m = largest(radii);
+    for s in a.iter().chain(b) {
+        for i in 0..D {
+            m = largest([m, s.position[i], s.velocity[i], s.acceleration[i]]);
+        }
+    }
+    LengthUnit::of(m)
 }
 
 /// A segment in the pair's unit of length.

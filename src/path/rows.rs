@@ -75,6 +75,29 @@ pub(crate) fn segments_from_rows<const D: usize>(
     names: &Names,
     segments: &mut Vec<Segment<D>>,
 ) -> Result<(), InputError> {
+    segments.clear();
+    // The common case in one pass: starts in order, then padding (+∞) only, every used value
+    // finite (`0·x` is ±0 for finite `x`, NaN otherwise). Anything else is checked
+    // again below, slowly, to name the first offending value.
+    let mut previous = f64::NEG_INFINITY;
+    let mut plain = true;
+    for k in 0..start.len() {
+        let s = start[k];
+        if s == f64::INFINITY {
+            plain &= start[k..].iter().all(|&x| x == f64::INFINITY);
+            break;
+        }
+        let mut zero = 0.0 * s;
+        for i in 0..D {
+            zero += 0.0 * pos[k][i] + 0.0 * vel[k][i] + 0.0 * acc[k][i];
+        }
+        plain &= (s >= previous) & (zero == 0.0);
+        previous = s;
+        segments.push(Segment::new(s, pos[k].into(), vel[k].into(), acc[k].into()));
+    }
+    if plain && !segments.is_empty() {
+        return Ok(());
+    }
     let used = used_rows(start).map_err(|e| e.renamed(names.start))?;
     segments.clear();
     segments.extend(
