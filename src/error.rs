@@ -116,20 +116,64 @@ impl fmt::Display for InputError {
         if let Some(i) = self.index {
             write!(f, "[{i}]")?;
         }
-        match self.kind {
-            InputErrorKind::NotFinite(x) => write!(f, ": must be finite, got {x}"),
-            InputErrorKind::NegativeFriction(x) => {
-                write!(f, ": friction must be ≥ 0, got {x}")
+        write!(f, ": {}", self.kind)
+    }
+}
+
+/// The reason alone, without the argument: `friction must be ≥ 0, got -0.5`.
+///
+/// ```
+/// use ballcollide::InputErrorKind;
+/// assert_eq!(InputErrorKind::NotFinite(f64::NAN).to_string(), "must be finite, got NaN");
+/// // Magnitudes far from 1 in exponent form, as Python prints them.
+/// assert_eq!(
+///     InputErrorKind::NegativeFriction(-1e300).to_string(),
+///     "friction must be ≥ 0, got -1e+300"
+/// );
+/// ```
+impl fmt::Display for InputErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Self::NotFinite(x) => write!(f, "must be finite, got {}", Brief(x)),
+            Self::NegativeFriction(x) => write!(f, "friction must be ≥ 0, got {}", Brief(x)),
+            Self::NonPositiveRadius(x) => {
+                write!(
+                    f,
+                    "radius (sum of the two radii) must be > 0, got {}",
+                    Brief(x)
+                )
             }
-            InputErrorKind::NonPositiveRadius(x) => {
-                write!(f, ": radius (sum of the two radii) must be > 0, got {x}")
+            Self::InvalidHorizon(x) => {
+                write!(f, "t_max must be ≥ 0 (∞ for no horizon), got {}", Brief(x))
             }
-            InputErrorKind::InvalidHorizon(x) => {
-                write!(f, ": t_max must be ≥ 0 (∞ for no horizon), got {x}")
+            Self::LengthMismatch { expected, found } => {
+                write!(f, "has {found} rows, expected {expected}")
             }
-            InputErrorKind::LengthMismatch { expected, found } => {
-                write!(f, ": has {found} rows, expected {expected}")
+        }
+    }
+}
+
+/// A float as messages print it: the shortest digits that read back to it (`-0.5`, `0`,
+/// `NaN`, `inf`), and magnitudes below 1e-4 or from 1e16 on in exponent form like Python's
+/// `repr` (`-1e+300`, `1.5e-07`), so that a message never spells out hundreds of digits.
+struct Brief(f64);
+
+impl fmt::Display for Brief {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let x = self.0;
+        if !x.is_finite() || x == 0.0 || (1e-4..1e16).contains(&x.abs()) {
+            return write!(f, "{x}");
+        }
+        let scientific = format!("{x:e}"); // `-1e300`, `1.5e-7`
+        match scientific.split_once('e') {
+            Some((mantissa, exponent)) => {
+                let (sign, digits) = match exponent.strip_prefix('-') {
+                    Some(digits) => ('-', digits),
+                    None => ('+', exponent),
+                };
+                write!(f, "{mantissa}e{sign}{digits:0>2}")
             }
+            None => f.write_str(&scientific),
         }
     }
 }
