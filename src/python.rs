@@ -22,8 +22,8 @@ use std::cell::Cell;
 use std::num::NonZeroUsize;
 use std::time::Instant;
 
-use numpy::ndarray::{Dim, Ix1, Ix2};
-use numpy::{PyArray1, PyArray2, PyArrayMethods};
+use numpy::ndarray::{Dim, Dimension, IntoDimension, Ix1, Ix2};
+use numpy::{PyArray, PyArray1, PyArray2, PyArrayMethods};
 use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
 use rayon::prelude::*;
@@ -33,7 +33,7 @@ use crate::error::InputErrorKind;
 use crate::poly;
 use crate::scene::{self, SceneOptions};
 use input_error::{InputError, from_core, input_error};
-use read::{Given, number, param, point, rows, threads};
+use read::{Floats, Given, Param, number, param, point, rows, threads};
 
 /// Batches up to this many items run on the calling thread holding the GIL: releasing and
 /// retaking it, or waking a thread pool, would cost more than the work (a few µs at most).
@@ -161,13 +161,47 @@ fn collision_times<'py>(
     let n = pairs.pos_a.len();
     // The inputs' own errors first, then `out`'s.
     batch::check_lengths(&pairs, n).map_err(|e| from_core(py, e))?;
-    let mut written = match out {
-        Some(out) => read::out::<Ix1>(out, &[n], "a 1-D float64 array of shape (N,)")?,
-        None => PyArray1::zeros(py, n, false).readwrite(),
+    let params = [&friction_a, &friction_b, &radius, &t_max];
+    let inputs: Vec<&Floats<'_>> = [&pos_a, &vel_a, &pos_b, &vel_b]
+        .into_iter()
+        .chain(params.into_iter().filter_map(Param::each))
+        .collect();
+    let expected = "a 1-D float64 array of shape (N,)";
+    output::<Ix1>(py, n, out, [n], expected, &inputs, |times| {
+        timed(py, n, || batch::collision_times(&pairs, times, threads))
+    })
+}
+
+/// The result array: `out` (checked: see [`read::out`]) or a new one of `shape`, written by
+/// `fill`. The inputs read in place are borrowed through rust-numpy's registry first if the
+/// batch of `items` is large enough for the GIL to be released ([`read::track`]).
+fn output<'py, D: Dimension>(
+    py: Python<'py>,
+    items: usize,
+    out: Option<&Bound<'py, PyAny>>,
+    shape: impl IntoDimension<Dim = D>,
+    expected: &str,
+    inputs: &[&Floats<'_>],
+    fill: impl FnOnce(&mut [f64]) -> PyResult<()>,
+) -> PyResult<Bound<'py, PyArray<f64, D>>> {
+    let shape = shape.into_dimension();
+    let _borrowed = match items > INLINE_UP_TO {
+        true => read::track(inputs)?,
+        false => Vec::new(),
     };
-    let times = written.as_slice_mut().map_err(|_| layout(py))?;
-    timed(py, n, || batch::collision_times(&pairs, times, threads))?;
-    Ok((**written).clone())
+    let Some(out) = out else {
+        let fresh = PyArray::<f64, D>::zeros(py, shape, false);
+        // SAFETY: a new array, which nothing else holds yet.
+        fill(unsafe { fresh.as_slice_mut() }.map_err(|_| layout(py))?)?;
+        return Ok(fresh);
+    };
+    let mut written = read::out::<D>(out, shape.slice(), expected, inputs)?;
+    let _borrowed = match items > INLINE_UP_TO {
+        true => Some(written.tracked()?),
+        false => None,
+    };
+    fill(written.values())?;
+    Ok(written.into_array())
 }
 
 /// An output array that is not C-contiguous after all (checked before: never seen).
@@ -342,20 +376,22 @@ fn positions_at<'py>(
     let friction = param("friction", friction)?;
     let t = param("t", t)?;
     let threads = threads(num_threads)?;
-    let (pos, vel) = (pos.rows(), vel.rows());
-    let (friction, t) = (friction.per_pair(), t.per_pair());
-    let n = pos.len();
-    batch::check_ball_arrays(pos, vel, friction, t, n).map_err(|e| from_core(py, e))?;
-    let mut written = match out {
-        Some(out) => read::out::<Ix2>(out, &[n, 2], "a 2-D float64 array of shape (N, 2)")?,
-        None => PyArray2::zeros(py, [n, 2], false).readwrite(),
-    };
-    let flat = written.as_slice_mut().map_err(|_| layout(py))?;
-    let centres = flat.as_chunks_mut::<2>().0;
-    run(py, n, || {
-        batch::positions_at(pos, vel, friction, t, centres, threads)
-    })?;
-    Ok((**written).clone())
+    let (pos_rows, vel_rows) = (pos.rows(), vel.rows());
+    let (per_ball, times) = (friction.per_pair(), t.per_pair());
+    let n = pos_rows.len();
+    batch::check_ball_arrays(pos_rows, vel_rows, per_ball, times, n)
+        .map_err(|e| from_core(py, e))?;
+    let inputs: Vec<&Floats<'_>> = [&pos, &vel]
+        .into_iter()
+        .chain([&friction, &t].into_iter().filter_map(Param::each))
+        .collect();
+    let expected = "a 2-D float64 array of shape (N, 2)";
+    output::<Ix2>(py, n, out, [n, 2], expected, &inputs, |flat| {
+        let centres = flat.as_chunks_mut::<2>().0;
+        run(py, n, || {
+            batch::positions_at(pos_rows, vel_rows, per_ball, times, centres, threads)
+        })
+    })
 }
 
 /// The real roots of N polynomials of degree ``k`` (1 to 4), sorted, NaN-padded.
@@ -412,6 +448,10 @@ fn real_roots<'py>(py: Python<'py>, coeffs: &Bound<'py, PyAny>) -> PyResult<Boun
         return Err(from_core(py, err));
     }
     let k = cols - 1;
+    let _borrowed = match n > INLINE_UP_TO {
+        true => read::track(&[&data])?,
+        false => Vec::new(),
+    };
     let mut out = vec![f64::NAN; n * k];
     let solve = |roots_out: &mut [f64], c: &[f64]| {
         let roots = poly::real_roots(c);

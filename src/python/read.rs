@@ -15,7 +15,7 @@ use std::sync::OnceLock;
 use numpy::PyArrayDescrMethods;
 use numpy::ndarray::{Dimension, IxDyn};
 use numpy::npyffi::{self, NpyTypes, PY_ARRAY_API};
-use numpy::{AllowTypeChange, BorrowError, PyArray, PyArrayLike, PyArrayMethods};
+use numpy::{AllowTypeChange, PyArray, PyArrayLike, PyArrayMethods};
 use numpy::{PyReadonlyArray, PyReadwriteArray, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOverflowError, PyTypeError};
 use pyo3::prelude::*;
@@ -25,21 +25,38 @@ use super::input_error::input_error;
 use crate::batch::{PerPair, Threads};
 
 /// float64 values in C order, read in place or converted.
+///
+/// An array read in place is not entered in rust-numpy's borrow registry (which costs two
+/// locked hash-map updates and allocations per array, more than a call on a few pairs costs
+/// in all): while the GIL is held no other code can write into it. A call that releases the
+/// GIL first borrows every array read in place through the registry ([`track`]), so that a
+/// rust-numpy writer elsewhere (another call's `out=`) is refused meanwhile; and every call
+/// checks that its `out` overlaps no input ([`out`]).
 pub(super) enum Floats<'py> {
-    /// A C-contiguous, aligned, native float64 array, borrowed (rust-numpy's borrow tracking:
-    /// a call writing into it as `out=` meanwhile is refused).
-    InPlace(PyReadonlyArray<'py, f64, IxDyn>),
+    /// A C-contiguous, aligned, native float64 array.
+    InPlace(Bound<'py, PyArray<f64, IxDyn>>),
     /// The values gathered or converted into memory of our own.
     Copied(Vec<f64>),
 }
 
-impl Floats<'_> {
+impl<'py> Floats<'py> {
     /// The values, in C order.
     pub(super) fn values(&self) -> &[f64] {
         match self {
-            // Chosen only for a C-contiguous, aligned array, which `as_slice` reads in place.
-            Self::InPlace(a) => a.as_slice().unwrap_or(&[]),
+            // SAFETY: nothing writes into the array while the values are read: the GIL is
+            // held, or the array is borrowed through the registry ([`track`]) and no other
+            // thread modifies a call's inputs (the documented contract). `as_slice` succeeds:
+            // `InPlace` holds only C-contiguous, aligned arrays.
+            Self::InPlace(a) => unsafe { a.as_slice() }.unwrap_or(&[]),
             Self::Copied(v) => v,
+        }
+    }
+
+    /// The array read in place, borrowed through rust-numpy's registry (see [`track`]).
+    fn tracked(&self) -> PyResult<Option<PyReadonlyArray<'py, f64, IxDyn>>> {
+        match self {
+            Self::InPlace(a) => a.try_readonly().map(Some).map_err(|_| being_written()),
+            Self::Copied(_) => Ok(None),
         }
     }
 
@@ -55,13 +72,33 @@ pub(super) enum Param<'py> {
     Each(Floats<'py>),
 }
 
-impl Param<'_> {
+impl<'py> Param<'py> {
     pub(super) fn per_pair(&self) -> PerPair<'_> {
         match self {
             Self::All(x) => PerPair::All(*x),
             Self::Each(values) => PerPair::Each(values.values()),
         }
     }
+
+    /// The values, if one per pair.
+    pub(super) fn each(&self) -> Option<&Floats<'py>> {
+        match self {
+            Self::All(_) => None,
+            Self::Each(values) => Some(values),
+        }
+    }
+}
+
+/// Borrows every array of `inputs` read in place through rust-numpy's registry, for a call
+/// that releases the GIL: the borrows last as long as the returned guards.
+pub(super) fn track<'py>(
+    inputs: &[&Floats<'py>],
+) -> PyResult<Vec<PyReadonlyArray<'py, f64, IxDyn>>> {
+    let mut guards = Vec::new();
+    for input in inputs {
+        guards.extend(input.tracked()?);
+    }
+    Ok(guards)
 }
 
 /// An argument with a default, as distinct from one given as `None` (a `TypeError` where a
@@ -152,13 +189,12 @@ fn floats<'py>(array: &Bound<'py, PyUntypedArray>) -> PyResult<Floats<'py>> {
         && a.is_c_contiguous()
         && a.is_aligned()
     {
-        return Ok(Floats::InPlace(
-            a.try_readonly().map_err(|_| being_written())?,
-        ));
+        return Ok(Floats::InPlace(a.clone()));
     }
     let converted: PyArrayLike<'py, f64, IxDyn, AllowTypeChange> = array.extract()?;
     if converted.is_c_contiguous() && converted.is_aligned() {
-        return Ok(Floats::InPlace((*converted).clone()));
+        // A new array (or a view of a native float64 one): this call is its only reader.
+        return Ok(Floats::InPlace((**converted).clone()));
     }
     Ok(Floats::Copied(
         converted.as_array().iter().copied().collect(),
@@ -343,9 +379,10 @@ fn cores() -> usize {
     *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, NonZeroUsize::get))
 }
 
-/// A caller's output array (`out=`), borrowed for writing: a float64 numpy array of `shape`
-/// (else a `TypeError` if not a native float64 array of that many dimensions, a
-/// `ValueError` otherwise), C-contiguous, writeable and sharing no memory with the inputs.
+/// A caller's output array (`out=`): a float64 numpy array of `shape` (else a `TypeError` if
+/// not a native float64 array of that many dimensions, a `ValueError` otherwise),
+/// C-contiguous, writeable and sharing no memory with the inputs. A call that releases the
+/// GIL borrows it through rust-numpy's registry too ([`Out::tracked`]).
 ///
 /// Its shape is checked here, after the inputs' own checks: the core measures every input
 /// against the output's length, and would blame the first input for an output of the wrong
@@ -354,7 +391,8 @@ pub(super) fn out<'py, D: Dimension>(
     obj: &Bound<'py, PyAny>,
     shape: &[usize],
     expected: &str,
-) -> PyResult<PyReadwriteArray<'py, f64, D>> {
+    inputs: &[&Floats<'_>],
+) -> PyResult<Out<'py, D>> {
     let py = obj.py();
     let fail = |reason: &str| input_error(py, "out", None, reason);
     let array = obj.cast::<PyArray<f64, D>>().map_err(|_| {
@@ -371,11 +409,53 @@ pub(super) fn out<'py, D: Dimension>(
     if !array.is_c_contiguous() || !array.is_aligned() {
         return Err(fail("expected a C-contiguous, aligned float64 array"));
     }
-    // rust-numpy's borrow tracking: the inputs read in place are borrowed (see [`Floats`]).
-    array.try_readwrite().map_err(|e| match e {
-        BorrowError::NotWriteable => fail("the array is read-only"),
-        _ => fail("the array shares memory with an input"),
-    })
+    // SAFETY: a live array's header.
+    let flags = unsafe { (*npyffi::_PyArray_GET_ITEM_DATA(array.as_array_ptr())).flags };
+    if flags & npyffi::NPY_ARRAY_WRITEABLE == 0 {
+        return Err(fail("the array is read-only"));
+    }
+    // SAFETY: only the addresses are looked at.
+    let range = unsafe { array.as_slice() }.map_or(0..0, address_range);
+    let overlaps = |input: &&Floats<'_>| {
+        let r = address_range(input.values());
+        r.start < range.end && range.start < r.end
+    };
+    if inputs.iter().any(overlaps) {
+        return Err(fail("the array shares memory with an input"));
+    }
+    Ok(Out(array.clone()))
+}
+
+/// A caller's `out=` array, checked by [`out`].
+pub(super) struct Out<'py, D>(Bound<'py, PyArray<f64, D>>);
+
+impl<'py, D: Dimension> Out<'py, D> {
+    /// Its elements, to be written.
+    pub(super) fn values(&mut self) -> &mut [f64] {
+        // SAFETY: writeable, C-contiguous and aligned (checked by `out`), overlapping no
+        // input; nothing else writes into it or reads it during the call: the GIL is held,
+        // or the array is borrowed through the registry ([`Out::tracked`]).
+        unsafe { self.0.as_slice_mut() }.unwrap_or(&mut [])
+    }
+
+    /// The array borrowed for writing through rust-numpy's registry, for a call that releases
+    /// the GIL (see [`track`]): refused if some rust-numpy code borrows it meanwhile.
+    pub(super) fn tracked(&self) -> PyResult<PyReadwriteArray<'py, f64, D>> {
+        let py = self.0.py();
+        self.0
+            .try_readwrite()
+            .map_err(|_| input_error(py, "out", None, "the array shares memory with an input"))
+    }
+
+    pub(super) fn into_array(self) -> Bound<'py, PyArray<f64, D>> {
+        self.0
+    }
+}
+
+/// The addresses a slice's elements occupy.
+fn address_range(values: &[f64]) -> std::ops::Range<usize> {
+    let r = values.as_ptr_range();
+    r.start as usize..r.end as usize
 }
 
 /// Polynomial coefficients: a 1-D or 2-D array of real numbers, and its shape.
