@@ -9,12 +9,14 @@
 //! [`InputError`](super::input_error::InputError) (a `ValueError`) for a wrong shape,
 //! layout or value.
 
+use std::ffi::c_int;
 use std::num::NonZeroUsize;
 use std::sync::OnceLock;
 
 use numpy::PyArrayDescrMethods;
 use numpy::ndarray::{Dimension, IxDyn};
-use numpy::npyffi::{self, NpyTypes, PY_ARRAY_API};
+
+use numpy::npyffi::{self, NPY_TYPES, NpyTypes, PY_ARRAY_API};
 use numpy::{AllowTypeChange, PyArray, PyArrayLike, PyArrayMethods};
 use numpy::{PyReadonlyArray, PyReadwriteArray, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOverflowError, PyTypeError};
@@ -185,10 +187,13 @@ fn is_numpy_type(obj: &Bound<'_, PyAny>, ty: NpyTypes) -> bool {
 
 /// The float64 values of a real array, in C order.
 fn floats<'py>(array: &Bound<'py, PyUntypedArray>) -> PyResult<Floats<'py>> {
-    if let Ok(a) = array.cast::<PyArray<f64, IxDyn>>()
-        && a.is_c_contiguous()
-        && a.is_aligned()
-    {
+    let dtype = array.dtype();
+    let float64 =
+        dtype.num() == NPY_TYPES::NPY_DOUBLE as c_int && dtype.is_native_byteorder() != Some(false);
+    if float64 && array.is_c_contiguous() && array.is_aligned() {
+        // SAFETY: an ndarray of native float64 (checked here as `PyArray`'s own type check
+        // does, without asking numpy for a float64 descriptor to compare with).
+        let a = unsafe { array.cast_unchecked::<PyArray<f64, IxDyn>>() };
         return Ok(Floats::InPlace(a.clone()));
     }
     let converted: PyArrayLike<'py, f64, IxDyn, AllowTypeChange> = array.extract()?;
