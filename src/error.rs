@@ -226,3 +226,30 @@ pub(crate) fn check_horizon(argument: &'static str, t_max: f64) -> Result<f64, I
         ))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Brief;
+
+    #[test]
+    fn floats_print_as_python_prints_them_but_whole_numbers_without_a_point() {
+        let cases = [
+            (-0.5, "-0.5"),
+            (0.0, "0"),
+            (-1.0, "-1"),
+            (1e15, "1000000000000000"),
+            (1e16, "1e+16"),
+            (-1e300, "-1e+300"),
+            (1.5e-7, "1.5e-07"),
+            (1e-4, "0.0001"),
+            (9.99e-5, "9.99e-05"),
+            (f64::MAX, "1.7976931348623157e+308"),
+            (f64::MIN_POSITIVE / 4.0, "5.562684646268003e-309"),
+            (f64::NAN, "NaN"),
+            (f64::NEG_INFINITY, "-inf"),
+        ];
+        for (x, text) in cases {
+            assert_eq!(Brief(x).to_string(), text, "{x:e}");
+        }
+    }
+}
