@@ -35,6 +35,9 @@ use crate::scene::{self, SceneOptions};
 use input_error::{InputError, from_core, input_error};
 use read::{Floats, Given, Param, number, param, point, rows, threads};
 
+// The `text_signature`s spell the default horizon `1e999`, a literal that reads as `inf`
+// (`inspect.signature` shows `t_max=inf`), where pyo3 would show `...`.
+
 /// Batches up to this many items run on the calling thread holding the GIL: releasing and
 /// retaking it, or waking a thread pool, would cost more than the work (a few µs at most).
 /// The answers do not depend on it.
@@ -121,10 +124,14 @@ fn run<T: Send>(
 /// >>> bc.collision_times(pos_a, vel_a, 0.0, pos_b, np.zeros((3, 2)), 0.0, 0.5, out=times)
 /// array([0.5 ,  inf, 0.25])
 #[pyfunction]
-#[pyo3(signature = (
-    pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius,
-    *, t_max=Given(None), num_threads=None, out=None
-))]
+#[pyo3(
+    signature = (
+        pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius,
+        *, t_max=Given(None), num_threads=None, out=None
+    ),
+    text_signature = "(pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, \
+                      t_max=1e999, num_threads=None, out=None)"
+)]
 #[allow(clippy::too_many_arguments)]
 fn collision_times<'py>(
     py: Python<'py>,
@@ -294,9 +301,13 @@ fn _last_kernel_seconds() -> f64 {
 /// >>> bc.collision_time([0, 0], [2, 0], 0.2, [1, 0.1], [0, 0], 0.2, 0.05715)  # misses
 /// inf
 #[pyfunction]
-#[pyo3(signature = (
-    pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, t_max=Given(None)
-))]
+#[pyo3(
+    signature = (
+        pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, t_max=Given(None)
+    ),
+    text_signature = "(pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, \
+                      t_max=1e999)"
+)]
 #[allow(clippy::too_many_arguments)]
 fn collision_time(
     py: Python<'_>,
@@ -565,7 +576,10 @@ fn scene_input(
 /// array([[inf, 0.5],
 ///        [0.5, inf]])
 #[pyfunction]
-#[pyo3(signature = (pos, vel, friction, radius, *, t_max=Given(None), num_threads=None))]
+#[pyo3(
+    signature = (pos, vel, friction, radius, *, t_max=Given(None), num_threads=None),
+    text_signature = "(pos, vel, friction, radius, *, t_max=1e999, num_threads=None)"
+)]
 fn pairwise_collision_times<'py>(
     py: Python<'py>,
     pos: &Bound<'py, PyAny>,
@@ -621,7 +635,10 @@ fn pairwise_collision_times<'py>(
 /// >>> bc.earliest_collision(pos, vel, 0.5, 0.05, t_max=0.1)
 /// (inf, -1, -1)
 #[pyfunction]
-#[pyo3(signature = (pos, vel, friction, radius, *, t_max=Given(None), num_threads=None))]
+#[pyo3(
+    signature = (pos, vel, friction, radius, *, t_max=Given(None), num_threads=None),
+    text_signature = "(pos, vel, friction, radius, *, t_max=1e999, num_threads=None)"
+)]
 fn earliest_collision(
     py: Python<'_>,
     pos: &Bound<'_, PyAny>,
@@ -670,7 +687,10 @@ fn earliest_collision(
 /// >>> times, partner
 /// (array([ 1.,  1., inf]), array([ 1,  0, -1]))
 #[pyfunction]
-#[pyo3(signature = (pos, vel, friction, radius, *, t_max=Given(None), num_threads=None))]
+#[pyo3(
+    signature = (pos, vel, friction, radius, *, t_max=Given(None), num_threads=None),
+    text_signature = "(pos, vel, friction, radius, *, t_max=1e999, num_threads=None)"
+)]
 #[allow(clippy::type_complexity)]
 fn first_contacts<'py>(
     py: Python<'py>,
