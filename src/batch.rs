@@ -17,6 +17,7 @@ use crate::coefficients::gap_value;
 use crate::collision::after_stop::after_first_stop_of;
 use crate::collision::crossing::{FirstWindow, apart_by_window};
 use crate::collision::first_contact_given;
+use crate::collision::length_unit::{normalise_lanes, normalised};
 use crate::collision::moving_entry::{WhileMoving, while_moving};
 use crate::collision::prefilter::{PairInput, screen_pair, valid};
 use crate::collision::straight;
@@ -340,6 +341,9 @@ fn lanes(pairs: &Pairs<'_>, index: &[usize; LANES], len: usize) -> [PairInput; L
         lane.radius = pairs.radius.get(i);
         lane.t_max = pairs.t_max.get(i);
     }
+    for lane in &mut lanes {
+        *lane = normalised(lane, 0.0);
+    }
     lanes
 }
 
@@ -500,15 +504,22 @@ struct Screened {
 /// that wide loads would then stall on), so that the arithmetic runs on whole vectors.
 #[inline(always)]
 fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> Screened {
-    let (pos_a, vel_a) = (rows(pairs.pos_a, start, len), rows(pairs.vel_a, start, len));
-    let (pos_b, vel_b) = (rows(pairs.pos_b, start, len), rows(pairs.vel_b, start, len));
-    let (friction_a, friction_b) = (
+    let (mut pos_a, mut vel_a) = (rows(pairs.pos_a, start, len), rows(pairs.vel_a, start, len));
+    let (mut pos_b, mut vel_b) = (rows(pairs.pos_b, start, len), rows(pairs.vel_b, start, len));
+    let (mut friction_a, mut friction_b) = (
         scalars(pairs.friction_a, start, len),
         scalars(pairs.friction_b, start, len),
     );
-    let (radius, t_max) = (
+    let (mut radius, t_max) = (
         scalars(pairs.radius, start, len),
         scalars(pairs.t_max, start, len),
+    );
+    // Each pair in its own unit of length, as the scalar search takes it.
+    normalise_lanes(
+        [&mut pos_a, &mut pos_b],
+        [&mut vel_a, &mut vel_b],
+        [&mut friction_a, &mut friction_b],
+        &mut radius,
     );
     let lane = |k: usize| PairInput {
         pos_a: pos_a[k],

@@ -1,6 +1,6 @@
 //! [`Gap`]: the relative motion of two balls on one time window, and its gap quartic.
 
-use nalgebra::Vector2;
+use nalgebra::{SVector, Vector2};
 
 use crate::motion::Ball;
 
@@ -25,19 +25,22 @@ use crate::motion::Ball;
 /// assert_eq!(gap.value(0.5), 0.0); // touching after 0.5 s
 /// # Ok::<(), ballcollide::InputError>(())
 /// ```
+///
+/// Generic over the dimension `D` (2 by default, 3 for balls in space): the search is the
+/// same in both.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Gap {
+pub struct Gap<const D: usize = 2> {
     /// `d(0)`: centre of A minus centre of B at the window's start.
-    pub offset: Vector2<f64>,
+    pub offset: SVector<f64, D>,
     /// `d′(0)`: relative velocity at the window's start.
-    pub velocity: Vector2<f64>,
-    /// `d″`: relative friction acceleration, constant on the window.
-    pub acceleration: Vector2<f64>,
+    pub velocity: SVector<f64, D>,
+    /// `d″`: relative acceleration, constant on the window.
+    pub acceleration: SVector<f64, D>,
     /// The distance between centres at contact (the sum of the radii).
     pub radius: f64,
 }
 
-impl Gap {
+impl Gap<2> {
     /// The relative motion of `a` and `b` from time `t0` on, valid until the first of them
     /// stops after `t0` (a ball already stopped at `t0` contributes its resting point and no
     /// motion).
@@ -62,7 +65,9 @@ impl Gap {
             radius,
         }
     }
+}
 
+impl<const D: usize> Gap<D> {
     /// The same motion with time measured in units of `h` (`s = h·u`): velocity × h and
     /// acceleration × h². Exact when `h` is a power of two.
     ///
@@ -83,6 +88,32 @@ impl Gap {
             offset: self.offset,
             velocity: self.velocity * h,
             acceleration: self.acceleration * (h * h),
+            radius: self.radius,
+        }
+    }
+
+    /// The same motion from `s` on (time since `s`): the separation and relative velocity at
+    /// `s` as [`Gap::separation`] and [`Gap::relative_velocity`] give them.
+    ///
+    /// ```
+    /// use ballcollide::Gap;
+    /// use nalgebra::Vector2;
+    /// let gap = Gap {
+    ///     offset: Vector2::new(3.0, 1.0),
+    ///     velocity: Vector2::new(-2.0, 0.0),
+    ///     acceleration: Vector2::new(1.0, 0.0),
+    ///     radius: 1.0,
+    /// };
+    /// let later = gap.shifted(2.0);
+    /// assert_eq!(later.offset, Vector2::new(1.0, 1.0));
+    /// assert_eq!(later.value(1.0), gap.value(3.0));
+    /// ```
+    #[inline(always)]
+    pub fn shifted(&self, s: f64) -> Self {
+        Self {
+            offset: self.separation(s),
+            velocity: self.relative_velocity(s),
+            acceleration: self.acceleration,
             radius: self.radius,
         }
     }
@@ -139,13 +170,13 @@ impl Gap {
     /// assert_eq!(gap.half_curvature(2.0), 1.0); // 0 + (1, 1)·(1, 0)
     /// ```
     #[inline(always)]
-    pub fn separation(&self, s: f64) -> Vector2<f64> {
+    pub fn separation(&self, s: f64) -> SVector<f64, D> {
         self.offset + (self.velocity + self.acceleration * (0.5 * s)) * s
     }
 
     /// `d′(s)`: the relative velocity at time `s` of the window (example: [`Gap::separation`]).
     #[inline(always)]
-    pub fn relative_velocity(&self, s: f64) -> Vector2<f64> {
+    pub fn relative_velocity(&self, s: f64) -> SVector<f64, D> {
         self.velocity + self.acceleration * s
     }
 
@@ -157,8 +188,7 @@ impl Gap {
     /// [`Gap::separation`].
     #[inline(always)]
     pub fn value(&self, s: f64) -> f64 {
-        let d = self.separation(s);
-        gap_value(d.x, d.y, self.radius)
+        gap_value_of(&self.separation(s), self.radius)
     }
 
     /// `½·g′(s) = d(s)·d′(s)`: negative while the balls approach (example:
@@ -209,6 +239,28 @@ pub(crate) fn gap_value(x: f64, y: f64, radius: f64) -> f64 {
     let r2 = radius * radius;
     let r2_err = radius.mul_add(radius, -r2);
     big.mul_add(big, small.mul_add(small, -r2)) - r2_err
+}
+
+/// `|d|² − radius²` as [`Gap::value`] computes it in any dimension: in 2-D [`gap_value`]; in
+/// 3-D the same, the components taken from the smallest to the largest in magnitude (so that
+/// a 2-D motion embedded in 3-D with a zero third component gives the 2-D bits).
+#[inline(always)]
+pub(crate) fn gap_value_of<const D: usize>(d: &SVector<f64, D>, radius: f64) -> f64 {
+    if D == 2 {
+        return gap_value(d[0], d[1], radius);
+    }
+    let mut c: SVector<f64, D> = *d;
+    // A few components: insertion by magnitude, ascending.
+    for i in 1..D {
+        let mut j = i;
+        while j > 0 && c[j - 1].abs() > c[j].abs() {
+            c.swap_rows(j - 1, j);
+            j -= 1;
+        }
+    }
+    let r2 = radius * radius;
+    let r2_err = radius.mul_add(radius, -r2);
+    c.iter().fold(-r2, |acc, &x| x.mul_add(x, acc)) - r2_err
 }
 
 /// A ball's friction acceleration on a window starting at `t0`: zero once it has stopped.

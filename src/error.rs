@@ -21,6 +21,15 @@ pub enum InputErrorKind {
         /// The length this one has.
         found: usize,
     },
+    /// A segment start earlier than the segment before it.
+    DecreasingStart {
+        /// The previous segment's start.
+        previous: f64,
+        /// This segment's start.
+        start: f64,
+    },
+    /// A path with no segment.
+    NoSegments,
 }
 
 /// An invalid input: which argument, at which index (for batch calls), and why.
@@ -149,6 +158,13 @@ impl fmt::Display for InputErrorKind {
             Self::LengthMismatch { expected, found } => {
                 write!(f, "has {found} rows, expected {expected}")
             }
+            Self::DecreasingStart { previous, start } => write!(
+                f,
+                "starts must not decrease, got {} after {}",
+                Brief(start),
+                Brief(previous)
+            ),
+            Self::NoSegments => f.write_str("a path needs at least one segment"),
         }
     }
 }
@@ -189,11 +205,12 @@ pub(crate) fn finite(argument: &'static str, x: f64) -> Result<f64, InputError> 
     }
 }
 
-/// Checks a friction deceleration: finite and ≥ 0.
+/// Checks a friction deceleration: finite and ≥ 0. Returns it with `−0.0` made `+0.0`: a
+/// friction of `−0` is no friction, and the stop time `|v|/μ` formed from it must be `+∞`.
 pub(crate) fn check_friction(argument: &'static str, friction: f64) -> Result<f64, InputError> {
     finite(argument, friction)?;
     if friction >= 0.0 {
-        Ok(friction)
+        Ok(friction + 0.0)
     } else {
         Err(InputError::new(
             argument,

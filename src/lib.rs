@@ -9,6 +9,7 @@
 //! - [`Ball`] ([`motion`]): one ball's state and trajectory;
 //! - [`Gap`] ([`coefficients`]): the relative motion of two balls and its gap quartic;
 //! - [`collision_time`] ([`collision`]): the first contact of two balls;
+//! - [`Path`] ([`path`]): general motion, paths of constant-acceleration segments in 2-D and 3-D;
 //! - [`poly`]: real-root solvers for polynomials of degree ≤ 4;
 //! - [`scene`]: many balls at once: earliest collisions, with a broad phase.
 //!
@@ -28,15 +29,17 @@ pub mod coefficients;
 pub mod collision;
 pub mod error;
 pub mod motion;
+pub mod path;
 pub mod poly;
 #[cfg(feature = "python")]
 mod python;
 pub mod scene;
 
 pub use coefficients::Gap;
-pub use collision::{CollisionOptions, collision_time, collision_time_with};
+pub use collision::{CollisionOptions, collision_time, collision_time_with, path_collision_time};
 pub use error::{InputError, InputErrorKind};
 pub use motion::Ball;
+pub use path::{Path, Path2, Path3, Segment, Segment2, Segment3};
 
 /// The tests' and benchmarks' shared deterministic generator.
 #[cfg(test)]

@@ -56,17 +56,29 @@ impl Ball {
         finite("position", position.y)?;
         finite("velocity", velocity.x)?;
         finite("velocity", velocity.y)?;
-        check_friction("friction", friction)?;
+        let friction = check_friction("friction", friction)?;
+        Ok(Self::from_checked(
+            position.into(),
+            velocity.into(),
+            friction,
+        ))
+    }
+
+    /// A ball from numbers known valid (finite, friction ≥ 0 and not `−0.0`), its stop time
+    /// formed here: the one place where a stop time is made from a velocity and a friction.
+    #[inline(always)]
+    pub(crate) fn from_checked(position: [f64; 2], velocity: [f64; 2], friction: f64) -> Self {
+        let velocity = Vector2::from(velocity);
         let speed = norm(velocity);
         // τ = |v|/μ: 0 for a ball at rest (even when μ = 0), ∞ for a frictionless mover, and
         // ∞ too when |v|/μ overflows (the ball then never stops within float time).
         let stop_time = if speed == 0.0 { 0.0 } else { speed / friction };
-        Ok(Self {
-            position,
+        Self {
+            position: Vector2::from(position),
             velocity,
             friction,
             stop_time,
-        })
+        }
     }
 
     /// A ball at rest at `position`.

@@ -161,9 +161,9 @@ pub fn balls(
 /// `MemoryError`.)
 ///
 /// # Errors
-/// `radii` must have one radius per ball, each finite, `> 0` and at most `f64::MAX / 2` (so
-/// that every sum of two radii is finite); `t_max ≥ 0`. The error names `radius` and the
-/// first bad index, or `t_max`.
+/// `radii` must have one radius per ball, each finite and `> 0` (a sum of two radii may
+/// exceed `f64::MAX`: the pair search forms it in the pair's own unit of length); `t_max ≥ 0`.
+/// The error names `radius` and the first bad index, or `t_max`.
 ///
 /// ```
 /// use ballcollide::Ball;
@@ -343,7 +343,7 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
     let n = balls.len();
     let kernel =
         |i: usize, j: usize| {
-            first_contact_screened(&balls[i], &balls[j], radii[i] + radii[j], t_max)
+            first_contact_screened(&balls[i], &balls[j], [radii[i], radii[j]], t_max)
                 .map(|time| Hit { time, i, j })
         };
     // The broad phase numbers balls in 32 bits; beyond that (never in memory today), all pairs.
@@ -393,15 +393,11 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
     })
 }
 
-/// Validates the radii (one per ball, finite, `> 0`, `≤ f64::MAX / 2`) and the horizon.
+/// Validates the radii (one per ball, finite, `> 0`) and the horizon.
 fn check(balls: &[Ball], radii: &[f64], t_max: f64) -> Result<(), InputError> {
     check_len("radius", radii.len(), balls.len())?;
     for (i, &r) in radii.iter().enumerate() {
         check_radius("radius", r).map_err(|e| e.at(i))?;
-        if r > f64::MAX / 2.0 {
-            // The sum of two such radii would overflow.
-            return Err(InputError::new("radius", InputErrorKind::NotFinite(r + r)).at(i));
-        }
     }
     check_horizon("t_max", t_max)?;
     Ok(())

@@ -11,7 +11,11 @@ use crate::poly::{bracketed_newton, solve_quadratic};
 /// point, found by bracketed Newton on the accurate `d·d′` form. Never divides by the leading
 /// coefficient, so equal friction vectors (a cubic that is really a linear function) need no
 /// special case.
-pub(crate) fn critical_points(gap: &Gap, end: f64, noise: f64) -> ([f64; 3], usize) {
+pub(crate) fn critical_points<const D: usize>(
+    gap: &Gap<D>,
+    end: f64,
+    noise: f64,
+) -> ([f64; 3], usize) {
     let (v, f) = (gap.velocity, gap.acceleration);
     let turning = solve_quadratic(
         1.5 * f.norm_squared(),
@@ -49,8 +53,8 @@ pub(crate) fn critical_points(gap: &Gap, end: f64, noise: f64) -> ([f64; 3], usi
 
 /// A critical point of `g` (a root of `½g′ = d·d′`) in `(left, right)`, where the slope changes
 /// sign, by bracketed Newton from `start`; below `noise` the slope's sign is rounding.
-fn slope_root(
-    gap: &Gap,
+fn slope_root<const D: usize>(
+    gap: &Gap<D>,
     (left, right): (f64, f64),
     (slope_left, slope_right): (f64, f64),
     start: f64,
@@ -85,7 +89,11 @@ pub(crate) enum WindowSearch {
 ///
 /// `g` is monotone between consecutive critical points, so the first piece that goes from
 /// ≥ 0 (after having been positive) to < 0 holds the entry, found by bracketed Newton.
-pub(crate) fn first_entry(gap: &Gap, end: f64, previous_positive: bool) -> WindowSearch {
+pub(crate) fn first_entry<const D: usize>(
+    gap: &Gap<D>,
+    end: f64,
+    previous_positive: bool,
+) -> WindowSearch {
     let g_start = gap.value(0.0);
     if previous_positive && g_start < 0.0 {
         return WindowSearch::Entry(0.0);
@@ -123,7 +131,7 @@ pub(crate) fn first_entry(gap: &Gap, end: f64, previous_positive: bool) -> Windo
 ///
 /// On random pairs this settles nearly all contacts and near misses at about half the cost of
 /// [`first_entry`].
-pub(crate) fn piecewise_entry(gap: &Gap, end: f64) -> Option<WindowSearch> {
+pub(crate) fn piecewise_entry<const D: usize>(gap: &Gap<D>, end: f64) -> Option<WindowSearch> {
     let noise = gap.value_noise();
     for piece in OpenPieces::new(gap, end) {
         let (left, right) = (end * piece.start, end * piece.stop);
@@ -176,8 +184,8 @@ pub(crate) fn piecewise_entry(gap: &Gap, end: f64) -> Option<WindowSearch> {
 /// there too), the root may be near-double (a grazing contact, or a contact just before a
 /// stop): the model is then already close, where Newton from afar would crawl in, and where
 /// `g` is within rounding of zero over a band far wider than the root's accuracy.
-fn entry_root(
-    gap: &Gap,
+fn entry_root<const D: usize>(
+    gap: &Gap<D>,
     (left, right): (f64, f64),
     (g_left, g_right): (f64, f64),
     noise: f64,

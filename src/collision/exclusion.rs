@@ -34,7 +34,7 @@ const ISOLATING_SPLITS: u32 = 6;
 /// coefficients and margin and subdivides further: every window proven here, it proves too,
 /// so a pair that the batch settles with this test is one the search answers the same way.
 #[inline(always)]
-pub(crate) fn proves_positive(gap: &Gap, end: f64) -> bool {
+pub(crate) fn proves_positive<const D: usize>(gap: &Gap<D>, end: f64) -> bool {
     let (b, margin) = bernstein(gap, end);
     positive_within_3_halvings(b, margin)
 }
@@ -48,7 +48,7 @@ pub(crate) fn proves_positive(gap: &Gap, end: f64) -> bool {
 /// Branch-free (every eighth is evaluated), so that a batch runs it lane-wise. The margin is
 /// that of [`proves_positive`], and each eighth comes from three exact halvings.
 #[inline(always)]
-pub(crate) fn first_open_eighth(gap: &Gap, end: f64) -> OpenEighth {
+pub(crate) fn first_open_eighth<const D: usize>(gap: &Gap<D>, end: f64) -> OpenEighth {
     let (b, margin) = bernstein(gap, end);
     let (l, r) = halves(b);
     let ((ll, lr), (rl, rr)) = (halves(l), halves(r));
@@ -73,7 +73,7 @@ pub(crate) fn first_open_eighth(gap: &Gap, end: f64) -> OpenEighth {
 /// Whether the Bernstein coefficients of the whole window `[0, end]` prove `g > 0`: the first
 /// test of [`proves_positive`] and [`OpenPieces`], alone.
 #[inline(always)]
-pub(crate) fn proves_positive_at_once(gap: &Gap, end: f64) -> bool {
+pub(crate) fn proves_positive_at_once<const D: usize>(gap: &Gap<D>, end: f64) -> bool {
     let (b, margin) = bernstein(gap, end);
     above(&b, margin)
 }
@@ -145,7 +145,7 @@ pub(crate) enum Shape {
 
 impl OpenPieces {
     /// The open pieces of `g` on `[0, end]` (time scaled so that `end ≤ 1`).
-    pub(crate) fn new(gap: &Gap, end: f64) -> Self {
+    pub(crate) fn new<const D: usize>(gap: &Gap<D>, end: f64) -> Self {
         let (b, margin) = bernstein(gap, end);
         let mut stack = [([0.0; 5], 0.0, 0); ISOLATING_SPLITS as usize + 1];
         stack[0] = (b, 0.0, 0);
@@ -230,7 +230,7 @@ fn piece_width(depth: u32) -> f64 {
 /// and each level of halving by `≤ 4ε·M²` (four rounds of averages): the margin
 /// `(16 + 4·ISOLATING_SPLITS)·ε·M²` is above it all.
 #[inline(always)]
-fn bernstein(gap: &Gap, end: f64) -> ([f64; 5], f64) {
+fn bernstein<const D: usize>(gap: &Gap<D>, end: f64) -> ([f64; 5], f64) {
     let [a4, a3, a2, a1, a0] = gap.quartic();
     let end2 = end * end;
     let (a1, a2, a3, a4) = (a1 * end, a2 * end2, a3 * (end2 * end), a4 * (end2 * end2));
@@ -241,11 +241,8 @@ fn bernstein(gap: &Gap, end: f64) -> ([f64; 5], f64) {
         a0 + 0.75 * a1 + 0.5 * a2 + 0.25 * a3,
         a0 + a1 + a2 + a3 + a4,
     ];
-    let m = gap.offset.x.abs()
-        + gap.offset.y.abs()
-        + (gap.velocity.x.abs() + gap.velocity.y.abs())
-        + (gap.acceleration.x.abs() + gap.acceleration.y.abs())
-        + gap.radius;
+    let l1 = |v: &nalgebra::SVector<f64, D>| v.iter().fold(0.0, |sum, x| sum + x.abs());
+    let m = l1(&gap.offset) + l1(&gap.velocity) + l1(&gap.acceleration) + gap.radius;
     let margin = (16.0 + 4.0 * ISOLATING_SPLITS as f64) * f64::EPSILON * (m * m);
     (b, margin)
 }

@@ -40,7 +40,10 @@ pub(crate) mod after_stop;
 pub(crate) mod crossing;
 mod entry;
 mod exclusion;
+pub(crate) mod length_unit;
+pub(crate) mod long_window;
 pub(crate) mod moving_entry;
+mod path_contact;
 pub(crate) mod prefilter;
 pub(crate) mod straight;
 
@@ -51,7 +54,11 @@ use crate::poly::scaling::{exponent, pow2};
 use after_stop::after_first_stop;
 use crossing::apart_by_window;
 use entry::{WindowSearch, first_entry, piecewise_entry};
+use length_unit::{LengthUnit, largest, normalised_balls};
+use long_window::{first_piece, long_window, next_piece};
 use moving_entry::{WhileMoving, while_moving_one};
+use nalgebra::SVector;
+pub use path_contact::path_collision_time;
 use prefilter::{PairInput, never_touch};
 
 /// Options of a collision query ([`collision_time_with`]).
@@ -127,15 +134,23 @@ pub fn collision_time_with(
 ) -> Result<Option<f64>, InputError> {
     let radius = check_radius("radius", radius)?;
     let t_max = check_horizon("t_max", options.t_max)?;
-    Ok(first_contact_screened(a, b, radius, t_max))
+    Ok(first_contact_screened(a, b, [radius, 0.0], t_max))
 }
 
 /// [`first_contact`] after the batch's proofs that the balls never touch ([`never_touch`],
 /// [`apart_by_window`]): a pair they settle is one the search answers "none" for too (their
 /// margins see to it), found for a fraction of the cost; and the same answer as a batch's,
-/// bit for bit, either way.
-pub(crate) fn first_contact_screened(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> Option<f64> {
-    let pair = pair_input(a, b, radius, t_max);
+/// bit for bit, either way. The contact distance is the sum of `radii` (formed in the pair's
+/// unit of length, where it cannot overflow).
+pub(crate) fn first_contact_screened(
+    a: &Ball,
+    b: &Ball,
+    radii: [f64; 2],
+    t_max: f64,
+) -> Option<f64> {
+    let (a, b, radius) = normalised_balls(a, b, radii);
+    let (a, b) = (&a, &b);
+    let pair = PairInput::of(a, b, radius, t_max);
     // One ball at rest: the closed form is cheaper than the proofs.
     let one_at_rest = a.is_at_rest() != b.is_at_rest();
     let both_moving = !a.is_at_rest() && !b.is_at_rest();
@@ -145,24 +160,11 @@ pub(crate) fn first_contact_screened(a: &Ball, b: &Ball, radius: f64, t_max: f64
     if both_moving && apart_by_window(&pair) == (true, true) {
         return None;
     }
-    first_contact(a, b, radius, t_max)
-}
-
-/// The pair's inputs as a batch row holds them.
-fn pair_input(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> PairInput {
-    PairInput {
-        pos_a: a.position().into(),
-        vel_a: a.velocity().into(),
-        friction_a: a.friction(),
-        pos_b: b.position().into(),
-        vel_b: b.velocity().into(),
-        friction_b: b.friction(),
-        radius,
-        t_max,
-    }
+    first_contact_in_unit(a, b, radius, t_max, None)
 }
 
 /// The search itself, on inputs already validated (`radius > 0` finite, `t_max ≥ 0`).
+#[cfg(test)]
 pub(crate) fn first_contact(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> Option<f64> {
     first_contact_given(a, b, radius, t_max, None)
 }
@@ -171,6 +173,18 @@ pub(crate) fn first_contact(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> Opti
 /// pair if the caller (a batch, lane-wise) has run it already: the search takes the same
 /// steps either way.
 pub(crate) fn first_contact_given(
+    a: &Ball,
+    b: &Ball,
+    radius: f64,
+    t_max: f64,
+    moving: Option<WhileMoving>,
+) -> Option<f64> {
+    let (a, b, radius) = normalised_balls(a, b, [radius, 0.0]);
+    first_contact_in_unit(&a, &b, radius, t_max, moving)
+}
+
+/// The search on a pair already in its own unit of length ([`length_unit`]).
+fn first_contact_in_unit(
     a: &Ball,
     b: &Ball,
     radius: f64,
@@ -186,7 +200,7 @@ pub(crate) fn first_contact_given(
         return answer;
     }
     // The first window settled where it is plain (as a batch does it lane-wise).
-    let moving = moving.unwrap_or_else(|| while_moving_one(&pair_input(a, b, radius, t_max)));
+    let moving = moving.unwrap_or_else(|| while_moving_one(&PairInput::of(a, b, radius, t_max)));
     if !moving.entry.is_nan() {
         return moving.entry.is_finite().then_some(moving.entry);
     }
@@ -198,10 +212,11 @@ pub(crate) fn first_contact_given(
     let mut previous_positive = g0 > 0.0 || moving.no_entry;
     let windows = [(0.0, t1), (t1, t2), (t2, f64::INFINITY)];
     for (start, end) in windows.into_iter().skip(usize::from(moving.no_entry)) {
+        // Windows are searched whole, whatever the horizon, which only cuts the answer: a
+        // contact before it comes back bit for bit as without it.
         if start >= t_max {
             break;
         }
-        let end = end.min(t_max);
         if end <= start {
             continue;
         }
@@ -231,7 +246,19 @@ pub(crate) fn first_contact_given(
 /// Whether balls touching or overlapping at the start are moving into each other: the first
 /// non-zero derivative of the gap is negative.
 #[inline(always)]
-pub(crate) fn approaching(gap: &Gap) -> bool {
+pub(crate) fn approaching<const D: usize>(gap: &Gap<D>) -> bool {
+    // The signs are those of products of lengths alone (the radius plays no part), so they
+    // are taken in the unit of the motion's own largest length: balls whose centres are far
+    // closer than their radii are long (overlapping deeply) do not lose the signs to underflow.
+    let (d, v, f) = (gap.offset, gap.velocity, gap.acceleration);
+    let unit = LengthUnit::of(largest([d.amax(), v.amax(), f.amax()]));
+    let u = |x: nalgebra::SVector<f64, D>| x.map(|c| unit.apply(c));
+    let gap = Gap {
+        offset: u(d),
+        velocity: u(v),
+        acceleration: u(f),
+        radius: gap.radius,
+    };
     let slope = gap.half_slope(0.0);
     // `|` and `&` rather than `||` and `&&`: no branch, so that lanes can run it.
     (slope < 0.0) | ((slope == 0.0) & (gap.half_curvature(0.0) < 0.0))
@@ -268,14 +295,56 @@ pub(crate) fn normal_time_unit(length: f64) -> f64 {
     }
 }
 
-/// The first entry on a window of `length` (possibly infinite), as time since its start.
-fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearch {
+/// The first entry on a window of `length` (possibly infinite), as time since its start;
+/// a long window ([`long_window`]) piece by piece.
+fn search_window<const D: usize>(
+    gap: &Gap<D>,
+    length: f64,
+    previous_positive: bool,
+) -> WindowSearch {
+    let length = bounded_length(gap, length);
+    if !long_window(gap, length) {
+        return search_plain_window(gap, length, previous_positive);
+    }
+    let (mut start, mut end) = (0.0, first_piece(gap, length));
+    let mut previous_positive = previous_positive;
+    loop {
+        let piece = if start == 0.0 {
+            *gap
+        } else {
+            gap.shifted(start)
+        };
+        match search_plain_window(&piece, end - start, previous_positive) {
+            WindowSearch::Entry(s) => return WindowSearch::Entry(start + s),
+            WindowSearch::NoEntry { ends_positive } => previous_positive = ends_positive,
+        }
+        if end >= length {
+            return WindowSearch::NoEntry {
+                ends_positive: previous_positive,
+            };
+        }
+        start = end;
+        end = next_piece(&gap.shifted(start), start, length);
+    }
+}
+
+/// The length of a window to search: `length` itself if finite (up to [`LONGEST_WINDOW`]);
+/// for an unbounded one, up to twice the closest approach.
+fn bounded_length<const D: usize>(gap: &Gap<D>, length: f64) -> f64 {
     let length = if length.is_finite() {
         length
+    } else if gap.acceleration != SVector::<f64, D>::zeros() {
+        // Accelerating for ever (balls on general paths): |d(s)| ≥ ½|a|s² − |v|s − |d(0)|,
+        // above the radius beyond the larger root of that quadratic; a margin of 2⁻²⁰ covers
+        // the rounding of the bound (the window's end needs no precision).
+        let (a, v) = (gap.acceleration.norm(), gap.velocity.norm());
+        let reach = gap.offset.norm() + gap.radius;
+        let bound = (v + (v * v + 2.0 * a * reach).sqrt()) / a;
+        bound * (1.0 + 1.0 / f64::from(1u32 << 20))
     } else {
-        // Only a frictionless (or resting) relative motion has an unbounded window; its gap is
-        // then a quadratic symmetric about the closest approach s*, so any entry lies in
-        // [0, s*]: search [0, 2s*] to keep s* inside.
+        // A frictionless (or resting) relative motion: its gap is then a quadratic symmetric
+        // about the closest approach s*, so any entry lies in [0, s*]: search [0, 2s*] to
+        // keep s* inside.
         let approach = -gap.offset.dot(&gap.velocity);
         let speed2 = gap.velocity.norm_squared();
         if approach > 0.0 && speed2 > 0.0 {
@@ -285,7 +354,15 @@ fn search_window(gap: &Gap, length: f64, previous_positive: bool) -> WindowSearc
             0.0
         }
     };
-    let length = length.min(LONGEST_WINDOW);
+    length.min(LONGEST_WINDOW)
+}
+
+/// The first entry on a window of `length` that is not long, as time since its start.
+fn search_plain_window<const D: usize>(
+    gap: &Gap<D>,
+    length: f64,
+    previous_positive: bool,
+) -> WindowSearch {
     let h = match time_unit(length) {
         Some(h) => h,
         None => {

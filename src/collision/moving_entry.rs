@@ -77,7 +77,7 @@ fn while_moving_one_portable(pair: &PairInput) -> WhileMoving {
         no_entry: false,
     };
     let window = FirstWindow::of(pair);
-    let start = at_start(&window);
+    let start = at_start(&window, pair.t_max);
     if !start.is_nan() {
         return WhileMoving {
             entry: start,
@@ -174,7 +174,7 @@ fn settle(
         (false, _) => f64::NAN,
     };
     let missed = plain & dip & lowest_found & (g_lowest >= 0.0) & (g_hi > 0.0);
-    let start = at_start(window);
+    let start = at_start(window, pair.t_max);
     WhileMoving {
         entry: if start.is_nan() { entry } else { start },
         no_entry: missed & eighth.rest_positive,
@@ -182,13 +182,14 @@ fn settle(
 }
 
 /// The answer for balls touching or overlapping at the start and moving into each other: a
-/// contact at 0 (SPEC; a qualifying window has a horizon above 0); NaN for every other pair.
-/// Decided on the search's own values at time 0 (`window.initial`), so both decide alike.
+/// contact at 0 (SPEC), `∞` if the horizon is 0; NaN for every other pair. Decided on the
+/// search's own values at time 0 (`window.initial`), so both decide alike.
 #[inline(always)]
-fn at_start(window: &FirstWindow) -> f64 {
+fn at_start(window: &FirstWindow, t_max: f64) -> f64 {
     let touching =
         window.qualifies & (window.initial.value(0.0) <= 0.0) & approaching(&window.initial);
-    if touching { 0.0 } else { f64::NAN }
+    let now = if t_max > 0.0 { 0.0 } else { f64::INFINITY };
+    if touching { now } else { f64::NAN }
 }
 
 /// The root of the chord through `(lo, f_lo)` and `(hi, f_hi)`.
@@ -299,8 +300,9 @@ mod tests {
             t_max: 0.0,
             ..closing
         };
-        // No time at all: not a window the lanes take (the search answers none).
-        assert!(while_moving(&no_time).entry.is_nan());
+        // No time at all: the contact at 0 is cut by the horizon, as the search cuts it.
+        assert_eq!(while_moving(&no_time).entry, f64::INFINITY);
+        assert_eq!(while_moving_one(&no_time).entry, f64::INFINITY);
         assert_eq!(search(&no_time), None);
         let parting = pair([0.0, 0.0], [-1.0, 0.0], [0.05, 0.0], [1.0, 0.0]);
         assert!(while_moving(&parting).entry.is_nan());

@@ -16,6 +16,8 @@
 //! horizon) or unbounded (a frictionless mover) fails the test and goes to the scalar path,
 //! which reports it.
 
+use crate::motion::Ball;
+
 /// One pair's inputs, as a batch row holds them.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct PairInput {
@@ -35,6 +37,22 @@ pub(crate) struct PairInput {
     pub radius: f64,
     /// Horizon.
     pub t_max: f64,
+}
+
+impl PairInput {
+    /// The inputs of two balls, as a batch row holds them.
+    pub(crate) fn of(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> Self {
+        Self {
+            pos_a: a.position().into(),
+            vel_a: a.velocity().into(),
+            friction_a: a.friction(),
+            pos_b: b.position().into(),
+            vel_b: b.velocity().into(),
+            friction_b: b.friction(),
+            radius,
+            t_max,
+        }
+    }
 }
 
 /// Relative size of the margin: `2⁻⁴⁰ ≈ 9e-13` of the magnitudes involved, far above the

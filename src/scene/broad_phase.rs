@@ -107,7 +107,10 @@ fn margin(segments: &[(Vector2<f64>, Vector2<f64>)], radii: &[f64]) -> f64 {
     if !(r_min.is_finite() && r_min > 0.0) {
         return 0.0; // fewer than one ball: nothing to prune
     }
-    MARGIN_ULPS * f64::EPSILON * (largest + diameter * diameter / r_min)
+    // D·(D/r), not D²/r: the same number where neither overflows nor underflows, and no
+    // square that underflows to 0 at the small end of the float range (where it would drop
+    // the margin below the kernel's rounding error).
+    MARGIN_ULPS * f64::EPSILON * (largest + diameter * (diameter / r_min))
 }
 
 /// The axis along which the balls' start positions spread the most (ties: x).

@@ -1,0 +1,143 @@
+//! When two balls on general paths first touch: [`path_collision_time`].
+//!
+//! Both paths are piecewise constant-acceleration ([`Path`]): between consecutive segment
+//! starts of either path (a *window*), the relative motion `d(s)` is a quadratic in the time
+//! `s` since the window's start and the gap `|d|² − r²` a quartic, which the same window
+//! search as the friction balls' answers ([`search_window`](super::search_window): time
+//! scaled to the window, Bernstein exclusion, critical points, bracketed Newton, long windows
+//! in pieces). Each window's motion is formed from the two active segments' own inputs, in
+//! time relative to each segment's start, so that late absolute times and long rolls keep
+//! full accuracy; and every length is first divided by the pair's unit of length
+//! ([`length_unit`](super::length_unit)), so that the answer does not depend on it.
+
+use nalgebra::SVector;
+
+use super::length_unit::{LengthUnit, largest};
+use super::{CollisionOptions, WindowSearch, approaching, search_window};
+use crate::coefficients::Gap;
+use crate::error::{InputError, check_horizon, check_radius};
+use crate::path::{Path, Segment};
+
+/// The first time (absolute, as the paths' starts are) at which balls on paths `a` and `b`
+/// are `radius` apart and starting to interpenetrate, searched from the later of the two
+/// first starts; `None` if they never are before `options.t_max`.
+///
+/// Touching or overlapping at that first time is a contact only if the balls approach (the
+/// first non-zero derivative of the gap is negative); a path that jumps into overlap at a
+/// later segment start collides at that start; exact tangency is no contact.
+///
+/// # Errors
+/// `radius` must be finite and positive, `t_max ≥ 0` (`∞` allowed).
+///
+/// ```
+/// use ballcollide::path::{Path2, Segment2};
+/// use ballcollide::{CollisionOptions, path_collision_time};
+/// use nalgebra::Vector2;
+///
+/// // A rolls at 1 m/s from the origin; from t = 1 s it is slowed at 0.5 m/s². B rests at x = 2.
+/// let a = Path2::new(vec![
+///     Segment2::new(0.0, Vector2::zeros(), Vector2::new(1.0, 0.0), Vector2::zeros()),
+///     Segment2::new(1.0, Vector2::new(1.0, 0.0), Vector2::new(1.0, 0.0), Vector2::new(-0.5, 0.0)),
+///     Segment2::at_rest(3.0, Vector2::new(2.0, 0.0)),
+/// ])?;
+/// let b = Path2::new(vec![Segment2::at_rest(0.0, Vector2::new(2.5, 0.0))])?;
+/// let t = path_collision_time(&a, &b, 0.75, &CollisionOptions::default())?.expect("a contact");
+/// // 1.75 m covered: 1 m by t = 1, then 0.75 = s − s²/4, s = 1.
+/// assert!((t - 2.0).abs() < 1e-15);
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+pub fn path_collision_time<const D: usize>(
+    a: &Path<D>,
+    b: &Path<D>,
+    radius: f64,
+    options: &CollisionOptions,
+) -> Result<Option<f64>, InputError> {
+    let radius = check_radius("radius", radius)?;
+    let t_max = check_horizon("t_max", options.t_max)?;
+    Ok(first_path_contact(a, b, [radius, 0.0], t_max))
+}
+
+/// The search on validated inputs; the contact distance is the sum of `radii`, formed in the
+/// pair's unit of length.
+pub(crate) fn first_path_contact<const D: usize>(
+    a: &Path<D>,
+    b: &Path<D>,
+    radii: [f64; 2],
+    t_max: f64,
+) -> Option<f64> {
+    let unit = pair_unit(a, b, radii);
+    let radius = unit.apply(radii[0]) + unit.apply(radii[1]);
+    let t_from = a.first_start().max(b.first_start());
+    let mut spans_a = a.spans().skip_while(|&(_, end)| end <= t_from).peekable();
+    let mut spans_b = b.spans().skip_while(|&(_, end)| end <= t_from).peekable();
+    let mut start = t_from;
+    let mut previous_positive = None;
+    while let (Some(&(seg_a, end_a)), Some(&(seg_b, end_b))) = (spans_a.peek(), spans_b.peek()) {
+        if start >= t_max {
+            return None;
+        }
+        let end = end_a.min(end_b);
+        let gap = window_gap(seg_a, seg_b, start, radius, unit);
+        let before = match previous_positive {
+            Some(positive) => positive,
+            None => {
+                // At the first time: touching or overlapping balls collide only if they
+                // approach; otherwise only a later re-entry counts.
+                let g0 = gap.value(0.0);
+                if g0 <= 0.0 && approaching(&gap) {
+                    return Some(start);
+                }
+                g0 > 0.0
+            }
+        };
+        match search_window(&gap, end - start, before) {
+            WindowSearch::Entry(s) => {
+                let t = start + s;
+                return (t < t_max).then_some(t);
+            }
+            WindowSearch::NoEntry { ends_positive } => previous_positive = Some(ends_positive),
+        }
+        if end_a == end {
+            spans_a.next();
+        }
+        if end_b == end {
+            spans_b.next();
+        }
+        start = end;
+    }
+    None
+}
+
+/// The unit of length of a pair of paths: from the largest position, velocity or acceleration
+/// component of any segment, and the radii.
+fn pair_unit<const D: usize>(a: &Path<D>, b: &Path<D>, radii: [f64; 2]) -> LengthUnit {
+    let segment_largest =
+        |s: &Segment<D>| largest([s.position.amax(), s.velocity.amax(), s.acceleration.amax()]);
+    let paths = a.segments().iter().chain(b.segments());
+    LengthUnit::of(paths.fold(largest(radii), |m, s| m.max(segment_largest(s))))
+}
+
+/// The relative motion on the window starting at `start`, from the two active segments, each
+/// evaluated in time since its own start, in the pair's unit of length.
+fn window_gap<const D: usize>(
+    a: &Segment<D>,
+    b: &Segment<D>,
+    start: f64,
+    radius: f64,
+    unit: LengthUnit,
+) -> Gap<D> {
+    let scaled = |s: &Segment<D>| Segment {
+        start: s.start,
+        position: s.position.map(|x| unit.apply(x)),
+        velocity: s.velocity.map(|x| unit.apply(x)),
+        acceleration: s.acceleration.map(|x| unit.apply(x)),
+    };
+    let (a, b) = (scaled(a), scaled(b));
+    let offset: SVector<f64, D> = a.position_at(start) - b.position_at(start);
+    Gap {
+        offset,
+        velocity: a.velocity_at(start) - b.velocity_at(start),
+        acceleration: a.acceleration - b.acceleration,
+        radius,
+    }
+}
