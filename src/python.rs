@@ -33,7 +33,7 @@ use crate::error::InputErrorKind;
 use crate::poly;
 use crate::scene::{self, SceneOptions};
 use input_error::{InputError, from_core, input_error};
-use read::{Floats, Given, Param, number, param, point, rows, threads};
+use read::{Floats, Given, number, param, point, rows, threads};
 
 // The `text_signature`s spell the default horizon `1e999`, a literal that reads as `inf`
 // (`inspect.signature` shows `t_max=inf`), where pyo3 would show `...`.
@@ -168,11 +168,16 @@ fn collision_times<'py>(
     let n = pairs.pos_a.len();
     // The inputs' own errors first, then `out`'s.
     batch::check_lengths(&pairs, n).map_err(|e| from_core(py, e))?;
-    let params = [&friction_a, &friction_b, &radius, &t_max];
-    let inputs: Vec<&Floats<'_>> = [&pos_a, &vel_a, &pos_b, &vel_b]
-        .into_iter()
-        .chain(params.into_iter().filter_map(Param::each))
-        .collect();
+    let inputs = [
+        Some(&pos_a),
+        Some(&vel_a),
+        Some(&pos_b),
+        Some(&vel_b),
+        friction_a.each(),
+        friction_b.each(),
+        radius.each(),
+        t_max.each(),
+    ];
     let expected = "a 1-D float64 array of shape (N,)";
     output::<Ix1>(py, n, out, [n], expected, &inputs, |times| {
         timed(py, n, || batch::collision_times(&pairs, times, threads))
@@ -188,7 +193,7 @@ fn output<'py, D: Dimension>(
     out: Option<&Bound<'py, PyAny>>,
     shape: impl IntoDimension<Dim = D>,
     expected: &str,
-    inputs: &[&Floats<'_>],
+    inputs: &[Option<&Floats<'_>>],
     fill: impl FnOnce(&mut [f64]) -> PyResult<()>,
 ) -> PyResult<Bound<'py, PyArray<f64, D>>> {
     let shape = shape.into_dimension();
@@ -392,10 +397,7 @@ fn positions_at<'py>(
     let n = pos_rows.len();
     batch::check_ball_arrays(pos_rows, vel_rows, per_ball, times, n)
         .map_err(|e| from_core(py, e))?;
-    let inputs: Vec<&Floats<'_>> = [&pos, &vel]
-        .into_iter()
-        .chain([&friction, &t].into_iter().filter_map(Param::each))
-        .collect();
+    let inputs = [Some(&pos), Some(&vel), friction.each(), t.each()];
     let expected = "a 2-D float64 array of shape (N, 2)";
     output::<Ix2>(py, n, out, [n, 2], expected, &inputs, |flat| {
         let centres = flat.as_chunks_mut::<2>().0;
@@ -460,7 +462,7 @@ fn real_roots<'py>(py: Python<'py>, coeffs: &Bound<'py, PyAny>) -> PyResult<Boun
     }
     let k = cols - 1;
     let _borrowed = match n > INLINE_UP_TO {
-        true => read::track(&[&data])?,
+        true => read::track(&[Some(&data)])?,
         false => Vec::new(),
     };
     let mut out = vec![f64::NAN; n * k];

@@ -13,8 +13,8 @@ use std::ffi::c_int;
 use std::num::NonZeroUsize;
 use std::sync::OnceLock;
 
-use numpy::PyArrayDescrMethods;
 use numpy::ndarray::{Dimension, IxDyn};
+use numpy::{PyArrayDescr, PyArrayDescrMethods};
 
 use numpy::npyffi::{self, NPY_TYPES, NpyTypes, PY_ARRAY_API};
 use numpy::{AllowTypeChange, PyArray, PyArrayLike, PyArrayMethods};
@@ -94,10 +94,10 @@ impl<'py> Param<'py> {
 /// Borrows every array of `inputs` read in place through rust-numpy's registry, for a call
 /// that releases the GIL: the borrows last as long as the returned guards.
 pub(super) fn track<'py>(
-    inputs: &[&Floats<'py>],
+    inputs: &[Option<&Floats<'py>>],
 ) -> PyResult<Vec<PyReadonlyArray<'py, f64, IxDyn>>> {
     let mut guards = Vec::new();
-    for input in inputs {
+    for input in inputs.iter().flatten() {
         guards.extend(input.tracked()?);
     }
     Ok(guards)
@@ -129,34 +129,51 @@ impl<'py> Given<'py> {
     }
 }
 
+/// A numpy array of real numbers and its dtype.
+struct Real<'py> {
+    array: Bound<'py, PyUntypedArray>,
+    dtype: Bound<'py, PyArrayDescr>,
+}
+
 /// `obj` as a numpy array of real numbers (itself if it is one, else `numpy.asarray(obj)`).
-fn real_array<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyUntypedArray>> {
+fn real_array<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Real<'py>> {
+    match obj.cast::<PyUntypedArray>() {
+        Ok(array) => real(name, obj, array.clone()),
+        Err(_) => real(name, obj, asarray(name, obj)?),
+    }
+}
+
+/// `numpy.asarray(obj)`, or an error naming the argument.
+fn asarray<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyUntypedArray>> {
     let py = obj.py();
-    let array = match obj.cast::<PyUntypedArray>() {
-        Ok(array) => array.clone(),
-        Err(_) => {
-            // SAFETY: `obj` is a live object; `PyArray_FromAny` returns a new reference or
-            // NULL with an exception set, and with no dtype asked for it returns an ndarray.
-            let made = unsafe {
-                let ptr = PY_ARRAY_API.PyArray_FromAny(
-                    py,
-                    obj.as_ptr(),
-                    std::ptr::null_mut(),
-                    0,
-                    0,
-                    0,
-                    std::ptr::null_mut(),
-                );
-                Bound::from_owned_ptr_or_err(py, ptr)
-            };
-            // Ragged nested lists, objects numpy cannot read.
-            let made = made.map_err(|e| {
-                let reason = format!("cannot be read as an array of numbers ({})", e.value(py));
-                input_error(py, name, None, &reason)
-            })?;
-            made.cast_into::<PyUntypedArray>()?
-        }
+    // SAFETY: `obj` is a live object; `PyArray_FromAny` returns a new reference or NULL with
+    // an exception set, and with no dtype asked for it returns an ndarray.
+    let made = unsafe {
+        let ptr = PY_ARRAY_API.PyArray_FromAny(
+            py,
+            obj.as_ptr(),
+            std::ptr::null_mut(),
+            0,
+            0,
+            0,
+            std::ptr::null_mut(),
+        );
+        Bound::from_owned_ptr_or_err(py, ptr)
     };
+    // Ragged nested lists, objects numpy cannot read.
+    let made = made.map_err(|e| {
+        let reason = format!("cannot be read as an array of numbers ({})", e.value(py));
+        input_error(py, name, None, &reason)
+    })?;
+    Ok(made.cast_into::<PyUntypedArray>()?)
+}
+
+/// `array` (read from `obj`) if its dtype is a real one: a float or integer kind.
+fn real<'py>(
+    name: &str,
+    obj: &Bound<'py, PyAny>,
+    array: Bound<'py, PyUntypedArray>,
+) -> PyResult<Real<'py>> {
     let dtype = array.dtype();
     if !matches!(dtype.kind(), b'f' | b'i' | b'u') {
         let what = if is_numpy_scalar(obj) {
@@ -168,7 +185,7 @@ fn real_array<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, P
             "{name}: expected real numbers, got {what} of dtype {dtype}"
         )));
     }
-    Ok(array)
+    Ok(Real { array, dtype })
 }
 
 /// Whether `obj` is a numpy scalar (`np.float32(1)`, `np.bool_(True)` …).
@@ -185,14 +202,17 @@ fn is_numpy_type(obj: &Bound<'_, PyAny>, ty: NpyTypes) -> bool {
     }
 }
 
+/// Whether `dtype` is float64 in this machine's byte order: what `PyArray<f64, _>`'s own
+/// type check asks, without asking numpy for a float64 descriptor to compare with.
+fn native_float64(dtype: &Bound<'_, PyArrayDescr>) -> bool {
+    dtype.num() == NPY_TYPES::NPY_DOUBLE as c_int && dtype.is_native_byteorder() != Some(false)
+}
+
 /// The float64 values of a real array, in C order.
-fn floats<'py>(array: &Bound<'py, PyUntypedArray>) -> PyResult<Floats<'py>> {
-    let dtype = array.dtype();
-    let float64 =
-        dtype.num() == NPY_TYPES::NPY_DOUBLE as c_int && dtype.is_native_byteorder() != Some(false);
-    if float64 && array.is_c_contiguous() && array.is_aligned() {
-        // SAFETY: an ndarray of native float64 (checked here as `PyArray`'s own type check
-        // does, without asking numpy for a float64 descriptor to compare with).
+fn floats<'py>(real: &Real<'py>) -> PyResult<Floats<'py>> {
+    let Real { array, dtype } = real;
+    if native_float64(dtype) && array.is_c_contiguous() && array.is_aligned() {
+        // SAFETY: an ndarray of native float64 (`native_float64`).
         let a = unsafe { array.cast_unchecked::<PyArray<f64, IxDyn>>() };
         return Ok(Floats::InPlace(a.clone()));
     }
@@ -239,17 +259,13 @@ pub(super) fn number(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<f64> {
         || obj.is_instance_of::<PyTuple>()
         || is_numpy_scalar(obj)
     {
-        let array = real_array(name, obj)?;
-        if array.ndim() != 0 {
-            let shape = shape_text(array.shape());
+        let real = real_array(name, obj)?;
+        if real.array.ndim() != 0 {
+            let shape = shape_text(real.array.shape());
             let reason = format!("expected a scalar, got shape {shape}");
             return Err(input_error(obj.py(), name, None, &reason));
         }
-        return Ok(floats(&array)?
-            .values()
-            .first()
-            .copied()
-            .unwrap_or(f64::NAN));
+        return Ok(floats(&real)?.values().first().copied().unwrap_or(f64::NAN));
     }
     obj.extract::<f64>().map_err(|e| {
         let py = obj.py();
@@ -293,13 +309,13 @@ pub(super) fn point(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 2]> {
     {
         return Ok([number(name, &x)?, number(name, &y)?]);
     }
-    let array = real_array(name, obj)?;
-    if array.shape() != [2] {
-        let shape = shape_text(array.shape());
+    let real = real_array(name, obj)?;
+    if real.array.shape() != [2] {
+        let shape = shape_text(real.array.shape());
         let reason = format!("expected a 2-vector (x, y), got shape {shape}");
         return Err(input_error(obj.py(), name, None, &reason));
     }
-    match floats(&array)?.values() {
+    match floats(&real)?.values() {
         &[x, y] => Ok([x, y]),
         _ => Err(input_error(
             obj.py(),
@@ -312,13 +328,13 @@ pub(super) fn point(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 2]> {
 
 /// An `(N, 2)` array of rows.
 pub(super) fn rows<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Floats<'py>> {
-    let array = real_array(name, obj)?;
-    if array.ndim() != 2 || array.shape()[1] != 2 {
-        let shape = shape_text(array.shape());
-        let reason = format!("expected shape (N, 2), got {shape}");
+    let real = real_array(name, obj)?;
+    let shape = real.array.shape();
+    if shape.len() != 2 || shape[1] != 2 {
+        let reason = format!("expected shape (N, 2), got {}", shape_text(shape));
         return Err(input_error(obj.py(), name, None, &reason));
     }
-    floats(&array)
+    floats(&real)
 }
 
 /// A per-pair parameter: a number, or an array-like of shape `(N,)`.
@@ -326,18 +342,18 @@ pub(super) fn param<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Param<
     if let Ok(x) = obj.cast::<PyFloat>() {
         return Ok(Param::All(x.value()));
     }
-    let array_like = obj.is_instance_of::<PyUntypedArray>()
-        || obj.is_instance_of::<PyList>()
-        || obj.is_instance_of::<PyTuple>();
-    if !array_like {
-        return number(name, obj).map(Param::All);
-    }
-    let array = real_array(name, obj)?;
-    match array.ndim() {
-        0 => number(name, &array).map(Param::All),
-        1 => floats(&array).map(Param::Each),
+    let real = match obj.cast::<PyUntypedArray>() {
+        Ok(array) => real(name, obj, array.clone())?,
+        Err(_) if obj.is_instance_of::<PyList>() || obj.is_instance_of::<PyTuple>() => {
+            real(name, obj, asarray(name, obj)?)?
+        }
+        Err(_) => return number(name, obj).map(Param::All),
+    };
+    match real.array.ndim() {
+        0 => number(name, &real.array).map(Param::All),
+        1 => floats(&real).map(Param::Each),
         _ => {
-            let shape = shape_text(array.shape());
+            let shape = shape_text(real.array.shape());
             let reason = format!("expected a scalar or shape (N,), got shape {shape}");
             Err(input_error(obj.py(), name, None, &reason))
         }
@@ -396,17 +412,24 @@ pub(super) fn out<'py, D: Dimension>(
     obj: &Bound<'py, PyAny>,
     shape: &[usize],
     expected: &str,
-    inputs: &[&Floats<'_>],
+    inputs: &[Option<&Floats<'_>>],
 ) -> PyResult<Out<'py, D>> {
     let py = obj.py();
     let fail = |reason: &str| input_error(py, "out", None, reason);
-    let array = obj.cast::<PyArray<f64, D>>().map_err(|_| {
-        let found = match obj.cast::<PyUntypedArray>() {
-            Ok(a) => format!("a {}-D array of dtype {}", a.ndim(), a.dtype()),
-            Err(_) => type_name(obj),
-        };
-        PyTypeError::new_err(format!("out: expected {expected}, got {found}"))
-    })?;
+    let array = match obj.cast::<PyUntypedArray>() {
+        Ok(a) if a.ndim() == shape.len() && native_float64(&a.dtype()) => {
+            // SAFETY: an ndarray of native float64 (`native_float64`) with `D`'s dimensions.
+            unsafe { a.cast_unchecked::<PyArray<f64, D>>() }
+        }
+        found => {
+            let found = match found {
+                Ok(a) => format!("a {}-D array of dtype {}", a.ndim(), a.dtype()),
+                Err(_) => type_name(obj),
+            };
+            let message = format!("out: expected {expected}, got {found}");
+            return Err(PyTypeError::new_err(message));
+        }
+    };
     if array.shape() != shape {
         let (want, got) = (shape_text(shape), shape_text(array.shape()));
         return Err(fail(&format!("expected shape {want}, got {got}")));
@@ -421,11 +444,11 @@ pub(super) fn out<'py, D: Dimension>(
     }
     // SAFETY: only the addresses are looked at.
     let range = unsafe { array.as_slice() }.map_or(0..0, address_range);
-    let overlaps = |input: &&Floats<'_>| {
+    let overlaps = |input: &Floats<'_>| {
         let r = address_range(input.values());
         r.start < range.end && range.start < r.end
     };
-    if inputs.iter().any(overlaps) {
+    if inputs.iter().flatten().any(|input| overlaps(input)) {
         return Err(fail("the array shares memory with an input"));
     }
     Ok(Out(array.clone()))
@@ -468,8 +491,8 @@ pub(super) fn coefficients<'py>(
     name: &str,
     obj: &Bound<'py, PyAny>,
 ) -> PyResult<(Floats<'py>, Vec<usize>)> {
-    let array = real_array(name, obj)?;
-    let shape = array.shape().to_vec();
+    let real = real_array(name, obj)?;
+    let shape = real.array.shape().to_vec();
     if !matches!(shape.len(), 1 | 2) {
         let reason = format!(
             "expected shape (N, k+1) with degree k = 1..4, got {}",
@@ -477,5 +500,5 @@ pub(super) fn coefficients<'py>(
         );
         return Err(input_error(obj.py(), name, None, &reason));
     }
-    Ok((floats(&array)?, shape))
+    Ok((floats(&real)?, shape))
 }
