@@ -151,3 +151,14 @@ def test_reading_any_layout_of_any_real_dtype() -> None:
     c = np.array([[1, -3, 2]] * 4, dtype=">i2")
     for variant in (c, np.asfortranarray(c), c.astype(np.float32)[::-1], tuple(map(tuple, c))):
         np.testing.assert_array_equal(bc.real_roots(variant), ref)
+
+
+@pytest.mark.parametrize("n", [3, 5000])  # on the calling thread; with the GIL released
+def test_out_sharing_memory_with_an_input_is_refused_at_any_size(n: int) -> None:
+    args = {**batch(n), "friction_a": np.zeros(n), "radius": np.full(n, 0.5)}
+    for shared in (args["friction_a"], args["radius"], args["pos_b"].reshape(-1)[:n]):
+        with pytest.raises(bc.InputError, match=r"^out: the array shares memory with an input"):
+            bc.collision_times(**args, out=shared)
+    out = np.empty(n)
+    assert bc.collision_times(**args, out=out) is out
+    np.testing.assert_array_equal(out, 0.5)
