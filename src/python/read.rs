@@ -14,10 +14,9 @@ use std::num::NonZeroUsize;
 use std::sync::OnceLock;
 
 use numpy::ndarray::{Dimension, IxDyn};
-use numpy::{PyArrayDescr, PyArrayDescrMethods};
-
 use numpy::npyffi::{self, NPY_TYPES, NpyTypes, PY_ARRAY_API};
 use numpy::{AllowTypeChange, PyArray, PyArrayLike, PyArrayMethods};
+use numpy::{PyArrayDescr, PyArrayDescrMethods};
 use numpy::{PyReadonlyArray, PyReadwriteArray, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOverflowError, PyTypeError};
 use pyo3::prelude::*;
@@ -30,10 +29,12 @@ use crate::batch::{PerPair, Threads};
 ///
 /// An array read in place is not entered in rust-numpy's borrow registry (which costs two
 /// locked hash-map updates and allocations per array, more than a call on a few pairs costs
-/// in all): while the GIL is held no other code can write into it. A call that releases the
-/// GIL first borrows every array read in place through the registry ([`track`]), so that a
-/// rust-numpy writer elsewhere (another call's `out=`) is refused meanwhile; and every call
-/// checks that its `out` overlaps no input ([`out`]).
+/// in all) by a call that holds the GIL throughout: no Python code can write into it
+/// meanwhile, and native code writing into a call's inputs from another thread without the
+/// GIL breaks the documented contract (as it would for numpy's own functions). A call that
+/// releases the GIL first borrows every array read in place through the registry ([`track`]),
+/// so that a rust-numpy writer elsewhere (another call's `out=`) is refused meanwhile; and
+/// every call checks that its `out` overlaps no input ([`out`]).
 pub(super) enum Floats<'py> {
     /// A C-contiguous, aligned, native float64 array.
     InPlace(Bound<'py, PyArray<f64, IxDyn>>),
@@ -45,10 +46,10 @@ impl<'py> Floats<'py> {
     /// The values, in C order.
     pub(super) fn values(&self) -> &[f64] {
         match self {
-            // SAFETY: nothing writes into the array while the values are read: the GIL is
-            // held, or the array is borrowed through the registry ([`track`]) and no other
-            // thread modifies a call's inputs (the documented contract). `as_slice` succeeds:
-            // `InPlace` holds only C-contiguous, aligned arrays.
+            // SAFETY: nothing writes into the array while the values are read (see the type's
+            // documentation: the GIL is held, or the array is borrowed through the registry,
+            // and no other thread modifies a call's inputs). `as_slice` succeeds: `InPlace`
+            // holds only C-contiguous, aligned arrays.
             Self::InPlace(a) => unsafe { a.as_slice() }.unwrap_or(&[]),
             Self::Copied(v) => v,
         }
