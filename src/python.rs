@@ -43,18 +43,17 @@ use read::{Floats, Given, number, param, point, rows, threads};
 /// The answers do not depend on it.
 const INLINE_UP_TO: usize = 1024;
 
-/// Runs `kernel` on the core's data, without the GIL if the batch has more than
-/// [`INLINE_UP_TO`] items, and maps its error.
+/// Scenes of up to this many balls run on the calling thread holding the GIL: their work
+/// grows with the pairs that can meet, and from a few dozen balls on it is worth releasing.
+const SCENE_INLINE_UP_TO: usize = 16;
+
+/// Runs `kernel` on the core's data, without the GIL if `release`, and maps its error.
 fn run<T: Send>(
     py: Python<'_>,
-    items: usize,
+    release: bool,
     kernel: impl Send + FnOnce() -> Result<T, crate::InputError>,
 ) -> PyResult<T> {
-    let result = if items > INLINE_UP_TO {
-        py.detach(kernel)
-    } else {
-        kernel()
-    };
+    let result = if release { py.detach(kernel) } else { kernel() };
     result.map_err(|e| from_core(py, e))
 }
 
@@ -241,7 +240,7 @@ fn timed(
     kernel: impl Send + FnOnce() -> Result<(), crate::InputError>,
 ) -> PyResult<()> {
     if n <= INLINE_UP_TO {
-        return run(py, n, kernel);
+        return run(py, false, kernel);
     }
     let (result, seconds) = py.detach(|| {
         let start = Instant::now();
@@ -401,7 +400,7 @@ fn positions_at<'py>(
     let expected = "a 2-D float64 array of shape (N, 2)";
     output::<Ix2>(py, n, out, [n, 2], expected, &inputs, |flat| {
         let centres = flat.as_chunks_mut::<2>().0;
-        run(py, n, || {
+        run(py, n > INLINE_UP_TO, || {
             batch::positions_at(pos_rows, vel_rows, per_ball, times, centres, threads)
         })
     })
@@ -551,7 +550,8 @@ fn scene_input(
 ///     Horizon: a collision at ``t ≥ t_max`` is reported as ``inf``.
 /// num_threads
 ///     ``None``: all cores; an int ``≥ 1``: at most that many. The result does not depend
-///     on it. Scenes of fewer than 64 balls run on the calling thread.
+///     on it. Scenes of fewer than 64 balls run on the calling thread; the GIL is released
+///     for more than 16.
 ///
 /// Returns
 /// -------
@@ -603,7 +603,7 @@ fn pairwise_collision_times<'py>(
              earliest_collision and first_contacts need only O(N)"
         )));
     }
-    let times = run(py, n, || {
+    let times = run(py, n > SCENE_INLINE_UP_TO, || {
         scene::pairwise_collision_times(&s.balls, &s.radii, &s.options)
     })?;
     PyArray1::from_vec(py, times).reshape(Dim([n, n]))
@@ -651,7 +651,7 @@ fn earliest_collision(
     num_threads: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<(f64, i64, i64)> {
     let s = scene_input(py, pos, vel, friction, radius, t_max, num_threads)?;
-    let found = run(py, s.balls.len(), || {
+    let found = run(py, s.balls.len() > SCENE_INLINE_UP_TO, || {
         scene::earliest_collision(&s.balls, &s.radii, &s.options)
     })?;
     Ok(found.map_or((f64::INFINITY, -1, -1), |(t, i, j)| {
@@ -704,7 +704,7 @@ fn first_contacts<'py>(
     num_threads: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<i64>>)> {
     let s = scene_input(py, pos, vel, friction, radius, t_max, num_threads)?;
-    let (times, partners) = run(py, s.balls.len(), || {
+    let (times, partners) = run(py, s.balls.len() > SCENE_INLINE_UP_TO, || {
         scene::first_contacts(&s.balls, &s.radii, &s.options)
     })?;
     let partners: Vec<i64> = partners
