@@ -4,8 +4,8 @@ Methods (each skipped, with a message, when its package is missing):
 
 - ``ballcollide``: ``collision_times`` on 1 thread and on all threads (full semantics: every
   time window, stop times, entry direction).
-- ``numpy.roots loop``: per pair, the gap quartic of SPEC.md on each time window (both balls
-  moving, then only the slower-stopping one), ``numpy.roots``, real roots (``|Im z| ≤ 1e-8
+- ``numpy.roots loop``: per pair, the gap quartic (docs/contract.md) on each time window (both
+  balls moving, then only the slower-stopping one), ``numpy.roots``, real roots (``|Im z| ≤ 1e-8
   max(1, |z|)``) inside the window, first root where ``g′ < 0`` (entry), and the ``t = 0``
   rule (touching and approaching). It covers every window, so it answers the same question as
   ballcollide; a double root (grazing contact) is decided by the sign of ``g′`` in rounding.
@@ -174,7 +174,7 @@ def bc_times(p: Pairs, threads: int | None, out: np.ndarray | None = None) -> np
 
 
 # ---------------------------------------------------------------------------------------------
-# The gap quartic, per SPEC.md
+# The gap quartic, per docs/contract.md
 
 
 def accelerations(vel: np.ndarray, mu: np.ndarray) -> np.ndarray:

@@ -151,27 +151,71 @@ impl fmt::Display for InputError {
             (Some(i), None) => write!(f, "[{i}]")?,
             _ => {}
         }
-        match self.kind {
-            InputErrorKind::NotFinite(x) => write!(f, ": must be finite, got {x}"),
-            InputErrorKind::NegativeFriction(x) => {
-                write!(f, ": friction must be ≥ 0, got {x}")
-            }
-            InputErrorKind::NonPositiveRadius(x) => {
-                write!(f, ": radius (sum of the two radii) must be > 0, got {x}")
-            }
-            InputErrorKind::InvalidHorizon(x) => {
-                write!(f, ": t_max must be ≥ 0 (∞ for no horizon), got {x}")
-            }
-            InputErrorKind::LengthMismatch { expected, found } => {
-                write!(f, ": has {found} rows, expected {expected}")
-            }
-            InputErrorKind::DecreasingStart { previous, start } => {
+        write!(f, ": {}", self.kind)
+    }
+}
+
+/// The reason alone, without the argument: `friction must be ≥ 0, got -0.5`.
+///
+/// ```
+/// use ballcollide::InputErrorKind;
+/// assert_eq!(InputErrorKind::NotFinite(f64::NAN).to_string(), "must be finite, got NaN");
+/// // Magnitudes far from 1 in exponent form, as Python prints them.
+/// assert_eq!(
+///     InputErrorKind::NegativeFriction(-1e300).to_string(),
+///     "friction must be ≥ 0, got -1e+300"
+/// );
+/// ```
+impl fmt::Display for InputErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Self::NotFinite(x) => write!(f, "must be finite, got {}", Brief(x)),
+            Self::NegativeFriction(x) => write!(f, "friction must be ≥ 0, got {}", Brief(x)),
+            Self::NonPositiveRadius(x) => {
                 write!(
                     f,
-                    ": starts must not decrease, got {start} after {previous}"
+                    "radius (sum of the two radii) must be > 0, got {}",
+                    Brief(x)
                 )
             }
-            InputErrorKind::NoSegments => f.write_str(": a path needs at least one segment"),
+            Self::InvalidHorizon(x) => {
+                write!(f, "t_max must be ≥ 0 (∞ for no horizon), got {}", Brief(x))
+            }
+            Self::LengthMismatch { expected, found } => {
+                write!(f, "has {found} rows, expected {expected}")
+            }
+            Self::DecreasingStart { previous, start } => write!(
+                f,
+                "starts must not decrease, got {} after {}",
+                Brief(start),
+                Brief(previous)
+            ),
+            Self::NoSegments => f.write_str("a path needs at least one segment"),
+        }
+    }
+}
+
+/// A float as messages print it: the shortest digits that read back to it (`-0.5`, `0`,
+/// `NaN`, `inf`), and magnitudes below 1e-4 or from 1e16 on in exponent form like Python's
+/// `repr` (`-1e+300`, `1.5e-07`), so that a message never spells out hundreds of digits.
+struct Brief(f64);
+
+impl fmt::Display for Brief {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let x = self.0;
+        if !x.is_finite() || x == 0.0 || (1e-4..1e16).contains(&x.abs()) {
+            return write!(f, "{x}");
+        }
+        let scientific = format!("{x:e}"); // `-1e300`, `1.5e-7`
+        match scientific.split_once('e') {
+            Some((mantissa, exponent)) => {
+                let (sign, digits) = match exponent.strip_prefix('-') {
+                    Some(digits) => ('-', digits),
+                    None => ('+', exponent),
+                };
+                write!(f, "{mantissa}e{sign}{digits:0>2}")
+            }
+            None => f.write_str(&scientific),
         }
     }
 }
@@ -223,5 +267,32 @@ pub(crate) fn check_horizon(argument: &'static str, t_max: f64) -> Result<f64, I
             argument,
             InputErrorKind::InvalidHorizon(t_max),
         ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Brief;
+
+    #[test]
+    fn floats_print_as_python_prints_them_but_whole_numbers_without_a_point() {
+        let cases = [
+            (-0.5, "-0.5"),
+            (0.0, "0"),
+            (-1.0, "-1"),
+            (1e15, "1000000000000000"),
+            (1e16, "1e+16"),
+            (-1e300, "-1e+300"),
+            (1.5e-7, "1.5e-07"),
+            (1e-4, "0.0001"),
+            (9.99e-5, "9.99e-05"),
+            (f64::MAX, "1.7976931348623157e+308"),
+            (f64::MIN_POSITIVE / 4.0, "5.562684646268003e-309"),
+            (f64::NAN, "NaN"),
+            (f64::NEG_INFINITY, "-inf"),
+        ];
+        for (x, text) in cases {
+            assert_eq!(Brief(x).to_string(), text, "{x:e}");
+        }
     }
 }

@@ -1,191 +1,136 @@
-//! The Python extension module `ballcollide._core` (feature `python`).
+//! The Python extension module `ballcollide._core` (feature `python`): the whole Python API.
 //!
-//! A thin layer: it checks that arrays have the layout the Rust core reads without copying
-//! (C-contiguous float64, the right shapes), releases the GIL, and calls [`crate::batch`],
-//! [`crate::scene`] and [`crate::poly`]. Everything else — validation of values, the search itself — is the core's,
-//! so Python and Rust give identical answers and identical error messages.
+//! `python/ballcollide/__init__.py` re-exports these functions as they are. Each reads its
+//! arguments once ([`read`]: lists, any real dtype, C or Fortran order, strided views,
+//! read-only or big-endian arrays, any real number where a scalar goes), releases the GIL for
+//! batches large enough to be worth it, and calls [`crate::batch`], [`crate::scene`] and
+//! [`crate::poly`]. Validation of values is the core's, so Python and Rust give identical
+//! answers and messages.
 //!
-//! The friendly entry points, which accept lists, any real dtype, Fortran order and strided
-//! views, are in `python/ballcollide/__init__.py`; they normalise with
-//! `np.ascontiguousarray(x, dtype=np.float64)` and call these functions.
+//! The `///` comments of the `#[pyfunction]`s below are the Python docstrings (numpydoc, with
+//! doctests run by `tests/python/test_api.py`): the one place the Python API is documented.
+//! `_core.pyi` holds only the types.
 //!
-//! Errors: an [`InputError`] becomes `ValueError` with its message (argument name and index);
-//! a wrong layout or shape is a `ValueError` naming the argument; a wrong type or dtype is a
-//! `TypeError` naming it too. Nothing here panics on any input.
+//! Errors: bad values, shapes, lengths and layouts raise [`InputError`] (a `ValueError` with
+//! `.argument`, `.index` and `.reason`); what is not made of real numbers raises `TypeError`.
+//! Nothing here panics on any input.
+
+mod input_error;
+mod read;
 
 use std::cell::Cell;
 use std::num::NonZeroUsize;
-use std::sync::OnceLock;
 use std::time::Instant;
 
-use numpy::ndarray::{Dim, Dimension, Ix1, Ix2};
-use numpy::{BorrowError, PyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray};
-use numpy::{PyReadonlyArray1, PyReadonlyArray2, PyReadwriteArray};
-use numpy::{PyUntypedArray, PyUntypedArrayMethods};
-use pyo3::exceptions::{PyMemoryError, PyTypeError, PyValueError};
+use numpy::ndarray::{Dim, Dimension, IntoDimension, Ix1, Ix2};
+use numpy::{PyArray, PyArray1, PyArray2, PyArrayMethods};
+use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
 use rayon::prelude::*;
 
 use crate::batch::{self, Pairs, PerPair, Threads};
-use crate::error::{InputError, InputErrorKind};
+use crate::error::InputErrorKind;
 use crate::poly;
 use crate::scene::{self, SceneOptions};
+use input_error::{InputError, from_core, input_error};
+use read::{Floats, Given, number, param, point, rows, threads};
 
-/// A scalar parameter from Python: one float for all pairs, or a float64 array of one per pair.
-enum Param<'py> {
-    Each(PyReadonlyArray1<'py, f64>),
-    All(f64),
+// The `text_signature`s spell the default horizon `1e999`, a literal that reads as `inf`
+// (`inspect.signature` shows `t_max=inf`), where pyo3 would show `...`.
+
+/// Batches up to this many items run on the calling thread holding the GIL: releasing and
+/// retaking it, or waking a thread pool, would cost more than the work (a few µs at most).
+/// The answers do not depend on it.
+const INLINE_UP_TO: usize = 1024;
+
+/// Scenes of up to this many balls run on the calling thread holding the GIL: their work
+/// grows with the pairs that can meet, and from a few dozen balls on it is worth releasing.
+const SCENE_INLINE_UP_TO: usize = 16;
+
+/// Runs `kernel` on the core's data, without the GIL if `release`, and maps its error.
+fn run<T: Send>(
+    py: Python<'_>,
+    release: bool,
+    kernel: impl Send + FnOnce() -> Result<T, crate::InputError>,
+) -> PyResult<T> {
+    let result = if release { py.detach(kernel) } else { kernel() };
+    result.map_err(|e| from_core(py, e))
 }
 
-impl<'py> Param<'py> {
-    /// A float (or anything with `__float__`, such as a 0-d array), or a 1-D float64 array.
-    fn extract(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Self> {
-        match obj.cast::<PyUntypedArray>() {
-            Ok(a) if a.ndim() > 0 => array(name, obj, PER_PAIR).map(Self::Each),
-            _ => obj
-                .extract::<f64>()
-                .map(Self::All)
-                .map_err(|_| type_error(name, PER_PAIR, obj)),
-        }
-    }
-
-    fn per_pair(&self, name: &str) -> PyResult<PerPair<'_>> {
-        match self {
-            Self::All(x) => Ok(PerPair::All(*x)),
-            Self::Each(a) => a
-                .as_slice()
-                .map(PerPair::Each)
-                .map_err(|_| layout_error(name)),
-        }
-    }
-}
-
-const PER_PAIR: &str = "a float or a 1-D float64 array";
-const ROWS: &str = "a 2-D float64 array of shape (N, 2)";
-
-/// `obj` as a float64 numpy array of dimension `D`, borrowed read-only; a `TypeError` naming
-/// the argument otherwise.
-fn array<'py, D: Dimension>(
-    name: &str,
-    obj: &Bound<'py, PyAny>,
-    expected: &str,
-) -> PyResult<PyReadonlyArray<'py, f64, D>> {
-    obj.extract::<PyReadonlyArray<'py, f64, D>>()
-        .map_err(|_| type_error(name, expected, obj))
-}
-
-fn type_error(name: &str, expected: &str, obj: &Bound<'_, PyAny>) -> PyErr {
-    let found = match obj.cast::<PyUntypedArray>() {
-        Ok(a) => format!("a {}-D array of dtype {}", a.ndim(), a.dtype()),
-        Err(_) => obj
-            .get_type()
-            .name()
-            .map_or_else(|_| "another type".to_owned(), |n| n.to_string()),
-    };
-    PyTypeError::new_err(format!("{name}: expected {expected}, got {found}"))
-}
-
-fn layout_error(name: &str) -> PyErr {
-    PyValueError::new_err(format!(
-        "{name}: expected a C-contiguous, aligned float64 array \
-         (the ballcollide functions convert any array-like)"
-    ))
-}
-
-fn value_error(e: InputError) -> PyErr {
-    PyValueError::new_err(e.to_string())
-}
-
-/// The rows of an `(N, 2)` C-contiguous float64 array, without copying.
-fn rows<'a>(name: &str, a: &'a PyReadonlyArray2<'_, f64>) -> PyResult<&'a [[f64; 2]]> {
-    let shape = a.shape();
-    if shape[1] != 2 {
-        return Err(PyValueError::new_err(format!(
-            "{name}: expected shape (N, 2), got ({}, {})",
-            shape[0], shape[1]
-        )));
-    }
-    // A Fortran-ordered array is contiguous too, and `as_slice` would read it column by
-    // column: only C order gives rows.
-    if !a.is_c_contiguous() {
-        return Err(layout_error(name));
-    }
-    let flat = a.as_slice().map_err(|_| layout_error(name))?;
-    Ok(flat.as_chunks::<2>().0)
-}
-
-/// A caller's output array (`out=`), borrowed for writing: a float64 array of dimension `D`
-/// (else a `TypeError`), of shape `shape`, C-contiguous, writeable and sharing no memory with
-/// the inputs, which are borrowed read-only while it is written (else a `ValueError`; numpy's
-/// borrow tracking in rust-numpy detects the overlap).
+/// The collision time of each of N pairs of balls (``inf`` where they never touch).
 ///
-/// Its shape is checked here, before the core sees it (and after the inputs' lengths): the
-/// core measures every input against the output's length, and would blame the first input
-/// for an output of the wrong length.
-fn out_array<'py, D: Dimension>(
-    obj: &Bound<'py, PyAny>,
-    shape: &[usize],
-    expected: &str,
-) -> PyResult<PyReadwriteArray<'py, f64, D>> {
-    let array = obj
-        .cast::<PyArray<f64, D>>()
-        .map_err(|_| type_error("out", expected, obj))?;
-    if array.shape() != shape {
-        return Err(PyValueError::new_err(format!(
-            "out: expected shape {}, got {}",
-            shape_text(shape),
-            shape_text(array.shape())
-        )));
-    }
-    if !array.is_c_contiguous() {
-        return Err(layout_error("out"));
-    }
-    array.try_readwrite().map_err(|e| {
-        PyValueError::new_err(match e {
-            BorrowError::NotWriteable => "out: the array is read-only",
-            _ => "out: the array shares memory with an input",
-        })
-    })
-}
-
-/// A shape as numpy prints it: `(3,)`, `(3, 2)`.
-fn shape_text(shape: &[usize]) -> String {
-    match shape {
-        [n] => format!("({n},)"),
-        _ => {
-            let dims: Vec<String> = shape.iter().map(usize::to_string).collect();
-            format!("({})", dims.join(", "))
-        }
-    }
-}
-
-/// `num_threads`: `None` → every core; `n ≥ 1` → at most `n` (and at most the cores there are,
-/// so that a huge `n` cannot start thousands of threads).
-fn threads(num_threads: Option<i64>) -> PyResult<Threads> {
-    match num_threads {
-        None => Ok(Threads::All),
-        Some(n) if n >= 1 => {
-            let n = usize::try_from(n).unwrap_or(usize::MAX).min(cores());
-            Ok(NonZeroUsize::new(n).map_or(Threads::All, Threads::AtMost))
-        }
-        Some(n) => Err(PyValueError::new_err(format!(
-            "num_threads: must be None (all cores) or ≥ 1, got {n}"
-        ))),
-    }
-}
-
-/// The cores this process may use, read once: `available_parallelism` reads the cgroup quota
-/// and the affinity mask on every call (~25 µs on Linux), more than a call on a few hundred
-/// pairs costs in all.
-fn cores() -> usize {
-    static CORES: OnceLock<usize> = OnceLock::new();
-    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, NonZeroUsize::get))
-}
-
-/// Collision times of N pairs (see `ballcollide.collision_times`); arrays must be
-/// C-contiguous float64.
+/// Pair ``i`` is ball A (``pos_a[i]``, ``vel_a[i]``, ``friction_a``) against ball B
+/// (``pos_b[i]``, ``vel_b[i]``, ``friction_b``) at contact distance ``radius``; each answer
+/// is exactly what :func:`collision_time` gives for that pair.
+///
+/// Parameters
+/// ----------
+/// pos_a, vel_a, pos_b, vel_b
+///     Shape ``(N, 2)``: centres and velocities at time 0. Any real dtype, C or Fortran
+///     order, strided views and nested lists are accepted (converted once to C-ordered
+///     float64; arrays that already are so are read in place).
+/// friction_a, friction_b, radius, t_max
+///     Numbers (the same for every pair) or shape ``(N,)``: friction decelerations
+///     (``≥ 0``), contact distances (sums of the radii, ``> 0``), horizons (``≥ 0``,
+///     ``inf`` for none). A number is anything ``float()`` accepts but a bool.
+/// num_threads
+///     ``None`` (default): all cores. An int ``n ≥ 1``: at most ``n`` threads. The result
+///     does not depend on it, bit for bit. Batches of up to 1024 pairs run on the calling
+///     thread.
+/// out
+///     ``None`` (default): the times go into a new array. Else a writeable, C-contiguous
+///     float64 array of shape ``(N,)`` that shares no memory with the inputs: the times are
+///     written into it and it is returned, as numpy's ``out=``. A simulator that asks again
+///     after every event saves the allocation, and the page faults of a fresh array, on
+///     each call. If the call raises, its contents are unspecified.
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     Shape ``(N,)``, float64 (``out`` itself if given).
+///
+/// Raises
+/// ------
+/// InputError
+///     A ``ValueError``: a NaN or infinite number, a negative friction, ``radius ≤ 0``, a
+///     negative ``t_max``, a wrong shape or a length that differs from ``pos_a``'s; the
+///     message names the argument and the first offending index, e.g. ``friction_b[7]:
+///     friction must be ≥ 0, got -0.1`` (``.argument``, ``.index``, ``.reason``). An
+///     ``out`` of the wrong shape, not C-contiguous, read-only or sharing memory with an
+///     input; a ``num_threads`` below 1.
+/// TypeError
+///     An argument that is not made of real numbers, a non-integer ``num_threads``, or an
+///     ``out`` that is not a float64 array of one dimension.
+///
+/// Notes
+/// -----
+/// The GIL is released while more than 1024 pairs are computed, so other Python threads
+/// keep running. C-ordered float64 inputs are read in place, without a copy: do not modify
+/// them from another thread during the call.
+///
+/// Examples
+/// --------
+/// >>> import numpy as np
+/// >>> import ballcollide as bc
+/// >>> pos_a = np.zeros((3, 2))
+/// >>> vel_a = np.array([[1.0, 0.0], [1.0, 0.0], [2.0, 0.0]])
+/// >>> pos_b = np.array([[1.0, 0.0], [1.0, 5.0], [1.0, 0.0]])
+/// >>> bc.collision_times(pos_a, vel_a, 0.0, pos_b, np.zeros((3, 2)), 0.0, 0.5)
+/// array([0.5 ,  inf, 0.25])
+/// >>> bc.collision_times(pos_a, vel_a, [0.0, 0.0, 8.0], pos_b, np.zeros((3, 2)), 0.0, 0.5)
+/// array([0.5, inf, inf])
+/// >>> times = np.empty(3)
+/// >>> bc.collision_times(pos_a, vel_a, 0.0, pos_b, np.zeros((3, 2)), 0.0, 0.5, out=times)
+/// array([0.5 ,  inf, 0.25])
 #[pyfunction]
-#[pyo3(signature = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max=None, num_threads=None, out=None))]
+#[pyo3(
+    signature = (
+        pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius,
+        *, t_max=Given(None), num_threads=None, out=None
+    ),
+    text_signature = "(pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, \
+                      t_max=1e999, num_threads=None, out=None)"
+)]
 #[allow(clippy::too_many_arguments)]
 fn collision_times<'py>(
     py: Python<'py>,
@@ -196,179 +141,351 @@ fn collision_times<'py>(
     vel_b: &Bound<'py, PyAny>,
     friction_b: &Bound<'py, PyAny>,
     radius: &Bound<'py, PyAny>,
-    t_max: Option<&Bound<'py, PyAny>>,
-    num_threads: Option<i64>,
+    t_max: Given<'py>,
+    num_threads: Option<&Bound<'py, PyAny>>,
     out: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-    let pos_a = array::<Ix2>("pos_a", pos_a, ROWS)?;
-    let vel_a = array::<Ix2>("vel_a", vel_a, ROWS)?;
-    let friction_a = Param::extract("friction_a", friction_a)?;
-    let pos_b = array::<Ix2>("pos_b", pos_b, ROWS)?;
-    let vel_b = array::<Ix2>("vel_b", vel_b, ROWS)?;
-    let friction_b = Param::extract("friction_b", friction_b)?;
-    let radius = Param::extract("radius", radius)?;
-    let t_max = match t_max {
-        Some(t) => Param::extract("t_max", t)?,
-        None => Param::All(f64::INFINITY),
-    };
-    let pairs = Pairs {
-        pos_a: rows("pos_a", &pos_a)?,
-        vel_a: rows("vel_a", &vel_a)?,
-        friction_a: friction_a.per_pair("friction_a")?,
-        pos_b: rows("pos_b", &pos_b)?,
-        vel_b: rows("vel_b", &vel_b)?,
-        friction_b: friction_b.per_pair("friction_b")?,
-        radius: radius.per_pair("radius")?,
-        t_max: t_max.per_pair("t_max")?,
-    };
+    let pos_a = rows("pos_a", pos_a)?;
+    let vel_a = rows("vel_a", vel_a)?;
+    let friction_a = param("friction_a", friction_a)?;
+    let pos_b = rows("pos_b", pos_b)?;
+    let vel_b = rows("vel_b", vel_b)?;
+    let friction_b = param("friction_b", friction_b)?;
+    let radius = param("radius", radius)?;
+    let t_max = t_max.param_or("t_max", f64::INFINITY)?;
     let threads = threads(num_threads)?;
-    let n = pairs.pos_a.len();
-    let Some(out) = out else {
-        let mut out = vec![0.0; n];
-        timed_kernel(py, || batch::collision_times(&pairs, &mut out, threads))?;
-        return Ok(PyArray1::from_vec(py, out));
+    let pairs = Pairs {
+        pos_a: pos_a.rows(),
+        vel_a: vel_a.rows(),
+        friction_a: friction_a.per_pair(),
+        pos_b: pos_b.rows(),
+        vel_b: vel_b.rows(),
+        friction_b: friction_b.per_pair(),
+        radius: radius.per_pair(),
+        t_max: t_max.per_pair(),
     };
-    // The inputs' own errors first, as without `out`.
-    batch::check_lengths(&pairs, n).map_err(value_error)?;
-    let mut written = out_array::<Ix1>(out, &[n], OUT_TIMES)?;
-    let out = written.as_slice_mut().map_err(|_| layout_error("out"))?;
-    timed_kernel(py, || batch::collision_times(&pairs, out, threads))?;
-    Ok((**written).clone())
+    let n = pairs.pos_a.len();
+    // The inputs' own errors first, then `out`'s.
+    batch::check_lengths(&pairs, n).map_err(|e| from_core(py, e))?;
+    let inputs = [
+        Some(&pos_a),
+        Some(&vel_a),
+        Some(&pos_b),
+        Some(&vel_b),
+        friction_a.each(),
+        friction_b.each(),
+        radius.each(),
+        t_max.each(),
+    ];
+    let expected = "a 1-D float64 array of shape (N,)";
+    output::<Ix1>(py, n, out, [n], expected, &inputs, |times| {
+        timed(py, n, || batch::collision_times(&pairs, times, threads))
+    })
+}
+
+/// The result array: `out` (checked: see [`read::out`]) or a new one of `shape`, written by
+/// `fill`. The inputs read in place are borrowed through rust-numpy's registry first if the
+/// batch of `items` is large enough for the GIL to be released ([`read::track`]).
+fn output<'py, D: Dimension>(
+    py: Python<'py>,
+    items: usize,
+    out: Option<&Bound<'py, PyAny>>,
+    shape: impl IntoDimension<Dim = D>,
+    expected: &str,
+    inputs: &[Option<&Floats<'_>>],
+    fill: impl FnOnce(&mut [f64]) -> PyResult<()>,
+) -> PyResult<Bound<'py, PyArray<f64, D>>> {
+    let shape = shape.into_dimension();
+    let _borrowed = match items > INLINE_UP_TO {
+        true => read::track(inputs)?,
+        false => Vec::new(),
+    };
+    let Some(out) = out else {
+        let fresh = PyArray::<f64, D>::zeros(py, shape, false);
+        // SAFETY: a new array, which nothing else holds yet.
+        fill(unsafe { fresh.as_slice_mut() }.map_err(|_| layout(py))?)?;
+        return Ok(fresh);
+    };
+    let mut written = read::out::<D>(out, shape.slice(), expected, inputs)?;
+    let _borrowed = match items > INLINE_UP_TO {
+        true => Some(written.tracked()?),
+        false => None,
+    };
+    fill(written.values())?;
+    Ok(written.into_array())
+}
+
+/// An output array that is not C-contiguous after all (checked before: never seen).
+fn layout(py: Python<'_>) -> PyErr {
+    input_error(
+        py,
+        "out",
+        None,
+        "expected a C-contiguous, aligned float64 array",
+    )
 }
 
 thread_local! {
-    /// How long the Rust kernel ran in this thread's last `collision_times` call, in seconds.
+    /// How long the Rust kernel ran in this thread's last `collision_times` call of more than
+    /// [`INLINE_UP_TO`] pairs, in seconds.
     static LAST_KERNEL_SECONDS: Cell<f64> = const { Cell::new(f64::NAN) };
 }
 
-/// Runs `kernel` without the GIL, and records how long it ran ([`_last_kernel_seconds`]).
-fn timed_kernel(
+/// [`run`], timing the kernel of batches of more than [`INLINE_UP_TO`] pairs
+/// ([`_last_kernel_seconds`]); small batches are not timed, so as not to add the clock's cost
+/// to calls that cost a microsecond.
+fn timed(
     py: Python<'_>,
-    kernel: impl Send + FnOnce() -> Result<(), InputError>,
+    n: usize,
+    kernel: impl Send + FnOnce() -> Result<(), crate::InputError>,
 ) -> PyResult<()> {
+    if n <= INLINE_UP_TO {
+        return run(py, false, kernel);
+    }
     let (result, seconds) = py.detach(|| {
         let start = Instant::now();
         let result = kernel();
         (result, start.elapsed().as_secs_f64())
     });
     LAST_KERNEL_SECONDS.with(|last| last.set(seconds));
-    result.map_err(value_error)
+    result.map_err(|e| from_core(py, e))
 }
 
-/// Seconds the Rust kernel took inside this thread's last `collision_times` call (NaN before
-/// any): what `benchmarks/compare.py` subtracts from the call's own time to measure what the
-/// binding adds, in the same call (separate runs on these shared cores differ by more than
-/// that). Private: for benchmarks.
+/// Seconds the Rust kernel took inside this thread's last :func:`collision_times` call on
+/// more than 1024 pairs (NaN before any).
+///
+/// What ``benchmarks/compare.py`` subtracts from the call's own time to measure what the
+/// binding adds, in the same call (separate runs on shared cores differ by more than that).
+/// Private: for benchmarks.
 #[pyfunction]
 fn _last_kernel_seconds() -> f64 {
     LAST_KERNEL_SECONDS.with(Cell::get)
 }
 
-const OUT_TIMES: &str = "a 1-D float64 array of shape (N,)";
-
-/// The collision time of one pair (`inf` if none); the same search as one row of
-/// `collision_times`, without an index in error messages.
+/// The time at which two balls first touch, or ``inf`` if they never do.
+///
+/// Parameters
+/// ----------
+/// pos_a, vel_a, pos_b, vel_b
+///     Centre and velocity of each ball at time 0, as ``(x, y)``: two numbers (a list, a
+///     tuple, an array).
+/// friction_a, friction_b
+///     Each ball's friction deceleration ``μ ≥ 0`` (length / time²); ``0`` for none.
+/// radius
+///     The contact distance: the sum of the two balls' radii (``> 0``).
+/// t_max
+///     Horizon: a collision at ``t ≥ t_max`` is reported as ``inf``.
+///
+/// A number is anything ``float()`` accepts (an int, a ``Fraction``, a numpy scalar …) but
+/// a bool.
+///
+/// Returns
+/// -------
+/// float
+///     The first time ``t ≥ 0`` at which the centres are ``radius`` apart and closing in
+///     (``0.0`` if they already touch or overlap and approach each other), else ``inf``.
+///     It is exactly the value :func:`collision_times` gives for the same pair.
+///
+/// Raises
+/// ------
+/// InputError
+///     A ``ValueError``: a NaN or infinite number, a negative friction, ``radius ≤ 0``, a
+///     negative or NaN ``t_max``, or a vector that is not two numbers; the message names
+///     the argument (``.index`` is ``None``).
+/// TypeError
+///     An argument that is not made of real numbers.
+///
+/// Examples
+/// --------
+/// >>> import ballcollide as bc
+/// >>> # A cue ball at 2 m/s, slowed at 0.2 m/s², towards a resting ball 1 m away.
+/// >>> t = bc.collision_time([0, 0], [2, 0], 0.2, [1, 0], [0, 0], 0.2, 0.05715)
+/// >>> round(t, 6)
+/// 0.483094
+/// >>> bc.collision_time([0, 0], [2, 0], 0.2, [1, 0.1], [0, 0], 0.2, 0.05715)  # misses
+/// inf
 #[pyfunction]
-#[pyo3(signature = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max=f64::INFINITY))]
+#[pyo3(
+    signature = (
+        pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, t_max=Given(None)
+    ),
+    text_signature = "(pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, \
+                      t_max=1e999)"
+)]
 #[allow(clippy::too_many_arguments)]
 fn collision_time(
-    pos_a: [f64; 2],
-    vel_a: [f64; 2],
-    friction_a: f64,
-    pos_b: [f64; 2],
-    vel_b: [f64; 2],
-    friction_b: f64,
-    radius: f64,
-    t_max: f64,
+    py: Python<'_>,
+    pos_a: &Bound<'_, PyAny>,
+    vel_a: &Bound<'_, PyAny>,
+    friction_a: &Bound<'_, PyAny>,
+    pos_b: &Bound<'_, PyAny>,
+    vel_b: &Bound<'_, PyAny>,
+    friction_b: &Bound<'_, PyAny>,
+    radius: &Bound<'_, PyAny>,
+    t_max: Given<'_>,
 ) -> PyResult<f64> {
     let pairs = Pairs {
-        pos_a: &[pos_a],
-        vel_a: &[vel_a],
-        friction_a: PerPair::All(friction_a),
-        pos_b: &[pos_b],
-        vel_b: &[vel_b],
-        friction_b: PerPair::All(friction_b),
-        radius: PerPair::All(radius),
-        t_max: PerPair::All(t_max),
+        pos_a: &[point("pos_a", pos_a)?],
+        vel_a: &[point("vel_a", vel_a)?],
+        friction_a: PerPair::All(number("friction_a", friction_a)?),
+        pos_b: &[point("pos_b", pos_b)?],
+        vel_b: &[point("vel_b", vel_b)?],
+        friction_b: PerPair::All(number("friction_b", friction_b)?),
+        radius: PerPair::All(number("radius", radius)?),
+        t_max: PerPair::All(t_max.number_or("t_max", f64::INFINITY)?),
     };
     let mut out = [0.0];
     batch::collision_times(&pairs, &mut out, Threads::AtMost(NonZeroUsize::MIN))
         // A single query: the message names the argument, not an index.
-        .map_err(|e| value_error(InputError::new(e.argument(), e.kind())))?;
+        .map_err(|e| from_core(py, crate::InputError::new(e.argument(), e.kind())))?;
     Ok(out[0])
 }
 
-/// Centres of N balls at time `t` (see `ballcollide.positions_at`).
+/// The centres of N balls at time ``t``; a ball that has stopped stays where it stopped.
+///
+/// Ball ``i`` starts at ``pos[i]`` with velocity ``vel[i]`` and decelerates at
+/// ``friction`` until it stops at ``τ = |v|/μ``; its centre at ``0 ≤ t ≤ τ`` is
+/// ``p + v·t·(1 − t/(2τ))`` and ``p + v·τ/2`` afterwards. Negative times count as ``0``.
+///
+/// Parameters
+/// ----------
+/// pos, vel
+///     Shape ``(N, 2)``, as in :func:`collision_times`.
+/// friction, t
+///     Numbers or shape ``(N,)``: friction decelerations (``≥ 0``) and times (finite).
+/// num_threads
+///     As in :func:`collision_times`.
+/// out
+///     As in :func:`collision_times`, of shape ``(N, 2)``.
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     Shape ``(N, 2)``, float64 (``out`` itself if given).
+///
+/// Raises
+/// ------
+/// InputError, TypeError
+///     As :func:`collision_times`, e.g. ``t[1]: must be finite, got inf``.
+///
+/// Examples
+/// --------
+/// >>> import ballcollide as bc
+/// >>> # 2 m/s slowed at 0.5 m/s²: it stops after 4 s, 4 m further on, and stays.
+/// >>> bc.positions_at([[0, 0], [0, 0]], [[2, 0], [2, 0]], 0.5, [2.0, 10.0])
+/// array([[3., 0.],
+///        [4., 0.]])
 #[pyfunction]
-#[pyo3(signature = (pos, vel, friction, t, num_threads=None, out=None))]
+#[pyo3(signature = (pos, vel, friction, t, *, num_threads=None, out=None))]
 fn positions_at<'py>(
     py: Python<'py>,
     pos: &Bound<'py, PyAny>,
     vel: &Bound<'py, PyAny>,
     friction: &Bound<'py, PyAny>,
     t: &Bound<'py, PyAny>,
-    num_threads: Option<i64>,
+    num_threads: Option<&Bound<'py, PyAny>>,
     out: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let pos = array::<Ix2>("pos", pos, ROWS)?;
-    let vel = array::<Ix2>("vel", vel, ROWS)?;
-    let friction = Param::extract("friction", friction)?;
-    let t = Param::extract("t", t)?;
-    let pos = rows("pos", &pos)?;
-    let vel = rows("vel", &vel)?;
-    let friction = friction.per_pair("friction")?;
-    let t = t.per_pair("t")?;
+    let pos = rows("pos", pos)?;
+    let vel = rows("vel", vel)?;
+    let friction = param("friction", friction)?;
+    let t = param("t", t)?;
     let threads = threads(num_threads)?;
-    let n = pos.len();
-    let Some(out) = out else {
-        let mut out = vec![[0.0; 2]; n];
-        py.detach(|| batch::positions_at(pos, vel, friction, t, &mut out, threads))
-            .map_err(value_error)?;
-        return PyArray1::from_vec(py, out.into_flattened()).reshape(Dim([n, 2]));
-    };
-    batch::check_ball_arrays(pos, vel, friction, t, n).map_err(value_error)?;
-    let mut written = out_array::<Ix2>(out, &[n, 2], ROWS)?;
-    let flat = written.as_slice_mut().map_err(|_| layout_error("out"))?;
-    let out = flat.as_chunks_mut::<2>().0;
-    py.detach(|| batch::positions_at(pos, vel, friction, t, out, threads))
-        .map_err(value_error)?;
-    Ok((**written).clone())
+    let (pos_rows, vel_rows) = (pos.rows(), vel.rows());
+    let (per_ball, times) = (friction.per_pair(), t.per_pair());
+    let n = pos_rows.len();
+    batch::check_ball_arrays(pos_rows, vel_rows, per_ball, times, n)
+        .map_err(|e| from_core(py, e))?;
+    let inputs = [Some(&pos), Some(&vel), friction.each(), t.each()];
+    let expected = "a 2-D float64 array of shape (N, 2)";
+    output::<Ix2>(py, n, out, [n, 2], expected, &inputs, |flat| {
+        let centres = flat.as_chunks_mut::<2>().0;
+        run(py, n > INLINE_UP_TO, || {
+            batch::positions_at(pos_rows, vel_rows, per_ball, times, centres, threads)
+        })
+    })
 }
 
-/// Real roots of N polynomials of degree k = 1..4, coefficients `(N, k+1)` highest degree
-/// first; `(N, k)` roots ascending with multiplicity, NaN-padded.
+/// The real roots of N polynomials of degree ``k`` (1 to 4), sorted, NaN-padded.
+///
+/// Parameters
+/// ----------
+/// coeffs
+///     Shape ``(N, k+1)``, highest degree first like ``numpy.roots``: row ``i`` is
+///     ``c[i,0]·x^k + … + c[i,k]``. A 1-D array of ``k+1`` coefficients is one polynomial.
+///     A zero leading coefficient lowers the degree (the row just has fewer roots).
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     Shape ``(N, k)`` (``(k,)`` for 1-D input), float64: each row's real roots in
+///     ascending order, a multiple root repeated, then NaN for the missing ones. A constant
+///     row (no isolated root) is all NaN.
+///
+/// Raises
+/// ------
+/// InputError
+///     A ``ValueError``: a NaN or infinite coefficient (named as ``coeffs[i]``, ``i`` the
+///     row), or a shape other than ``(N, 2..5)`` or ``(2..5,)``.
+/// TypeError
+///     Coefficients that are not real numbers.
+///
+/// Examples
+/// --------
+/// >>> import ballcollide as bc
+/// >>> bc.real_roots([[1, -3, 2], [1, -2, 1], [1, 0, 1]])  # (x−1)(x−2), (x−1)², x²+1
+/// array([[ 1.,  2.],
+///        [ 1.,  1.],
+///        [nan, nan]])
+/// >>> bc.real_roots([1, -10, 35, -50, 24])  # (x−1)(x−2)(x−3)(x−4)
+/// array([1., 2., 3., 4.])
 #[pyfunction]
-fn real_roots<'py>(
-    py: Python<'py>,
-    coeffs: &Bound<'py, PyAny>,
-) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let coeffs = array::<Ix2>("coeffs", coeffs, "a 2-D float64 array of shape (N, k+1)")?;
-    let [n, cols] = [coeffs.shape()[0], coeffs.shape()[1]];
+fn real_roots<'py>(py: Python<'py>, coeffs: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    let (data, shape) = read::coefficients("coeffs", coeffs)?;
+    let flat = data.values();
+    let (n, cols) = match *shape.as_slice() {
+        [cols] => (1, cols),
+        [n, cols] => (n, cols),
+        _ => (0, 0),
+    };
     if !(2..=5).contains(&cols) {
-        return Err(PyValueError::new_err(format!(
-            "coeffs: expected shape (N, k+1) with degree k = 1..4, got ({n}, {cols})"
-        )));
+        let reason = format!(
+            "expected shape (N, k+1) with degree k = 1..4, got {}",
+            read::shape_text(&shape)
+        );
+        return Err(input_error(py, "coeffs", None, &reason));
     }
-    if !coeffs.is_c_contiguous() {
-        return Err(layout_error("coeffs"));
-    }
-    let flat = coeffs.as_slice().map_err(|_| layout_error("coeffs"))?;
     if let Some(i) = flat.iter().position(|x| !x.is_finite()) {
-        let err = InputError::new("coeffs", InputErrorKind::NotFinite(flat[i])).at(i / cols);
-        return Err(value_error(err));
+        let err = crate::InputError::new("coeffs", InputErrorKind::NotFinite(flat[i])).at(i / cols);
+        return Err(from_core(py, err));
     }
     let k = cols - 1;
+    let _borrowed = match n > INLINE_UP_TO {
+        true => read::track(&[Some(&data)])?,
+        false => Vec::new(),
+    };
     let mut out = vec![f64::NAN; n * k];
-    py.detach(|| {
-        out.par_chunks_mut(k)
-            .zip(flat.par_chunks(cols))
-            .with_min_len(1024)
-            .for_each(|(roots_out, c)| {
-                let roots = poly::real_roots(c);
-                roots_out[..roots.len()].copy_from_slice(&roots);
-            });
-    });
-    PyArray1::from_vec(py, out).reshape(Dim([n, k]))
+    let solve = |roots_out: &mut [f64], c: &[f64]| {
+        let roots = poly::real_roots(c);
+        roots_out[..roots.len()].copy_from_slice(&roots);
+    };
+    if n <= INLINE_UP_TO {
+        out.chunks_mut(k)
+            .zip(flat.chunks(cols))
+            .for_each(|(r, c)| solve(r, c));
+    } else {
+        py.detach(|| {
+            out.par_chunks_mut(k)
+                .zip(flat.par_chunks(cols))
+                .with_min_len(INLINE_UP_TO)
+                .for_each(|(r, c)| solve(r, c));
+        });
+    }
+    let roots = PyArray1::from_vec(py, out);
+    Ok(match shape.len() {
+        1 => roots.into_any(),
+        _ => roots.reshape(Dim([n, k]))?.into_any(),
+    })
 }
 
 /// The balls, per-ball radii and options of a scene query, validated by the core.
@@ -378,24 +495,25 @@ struct Scene {
     options: SceneOptions,
 }
 
-/// Reads a scene's arrays (C-contiguous float64) and builds its balls; `radius` may be one
-/// float for all balls.
+/// Reads a scene's arguments and builds its balls; `radius` may be one number for all balls.
 fn scene_input(
+    py: Python<'_>,
     pos: &Bound<'_, PyAny>,
     vel: &Bound<'_, PyAny>,
     friction: &Bound<'_, PyAny>,
     radius: &Bound<'_, PyAny>,
-    t_max: f64,
-    num_threads: Option<i64>,
+    t_max: Given<'_>,
+    num_threads: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Scene> {
-    let pos = array::<Ix2>("pos", pos, ROWS)?;
-    let vel = array::<Ix2>("vel", vel, ROWS)?;
-    let friction = Param::extract("friction", friction)?;
-    let radius = Param::extract("radius", radius)?;
-    let pos = rows("pos", &pos)?;
-    let vel = rows("vel", &vel)?;
-    let balls = scene::balls(pos, vel, friction.per_pair("friction")?).map_err(value_error)?;
-    let radii = match radius.per_pair("radius")? {
+    let pos = rows("pos", pos)?;
+    let vel = rows("vel", vel)?;
+    let friction = param("friction", friction)?;
+    let radius = param("radius", radius)?;
+    let t_max = t_max.number_or("t_max", f64::INFINITY)?;
+    let threads = threads(num_threads)?;
+    let balls =
+        scene::balls(pos.rows(), vel.rows(), friction.per_pair()).map_err(|e| from_core(py, e))?;
+    let radii = match radius.per_pair() {
         PerPair::All(r) => vec![r; balls.len()],
         PerPair::Each(r) => r.to_vec(),
     };
@@ -404,26 +522,76 @@ fn scene_input(
         radii,
         options: SceneOptions {
             t_max,
-            threads: threads(num_threads)?,
+            threads,
             ..SceneOptions::default()
         },
     })
 }
 
-/// The `(N, N)` matrix of collision times of N balls (see
-/// `ballcollide.pairwise_collision_times`).
+/// The collision time of every pair of N balls, as an ``(N, N)`` matrix.
+///
+/// Entry ``[i, j]`` is the time at which balls ``i`` and ``j`` first touch (what
+/// :func:`collision_time` gives for ball ``i`` as A, ball ``j`` as B and the sum of their
+/// radii, for ``i < j``; the matrix is symmetric), ``inf`` if they never do (or not before
+/// ``t_max``), and ``inf`` on the diagonal. Only pairs whose swept bounding boxes overlap
+/// are computed (the others cannot touch); the answer is the all-pairs answer, bit for bit.
+///
+/// Parameters
+/// ----------
+/// pos, vel
+///     Shape ``(N, 2)``: each ball's centre and velocity at time 0 (any array-like, as in
+///     :func:`collision_times`).
+/// friction
+///     A number or shape ``(N,)``: each ball's friction deceleration ``μ ≥ 0``.
+/// radius
+///     A number or shape ``(N,)``: each ball's radius (``> 0``). A pair touches when its
+///     centres are the *sum* of its two radii apart.
+/// t_max
+///     Horizon: a collision at ``t ≥ t_max`` is reported as ``inf``.
+/// num_threads
+///     ``None``: all cores; an int ``≥ 1``: at most that many. The result does not depend
+///     on it. Scenes of fewer than 64 balls run on the calling thread; the GIL is released
+///     for more than 16.
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     Shape ``(N, N)``, float64 (``N²`` numbers: for large N prefer
+///     :func:`earliest_collision` or :func:`first_contacts`).
+///
+/// Raises
+/// ------
+/// InputError
+///     A ``ValueError``: a NaN or infinite number, a negative friction, a radius ``≤ 0``, a
+///     negative ``t_max``, a wrong shape or length; the message names the argument and the
+///     first bad index, e.g. ``radius[3]: ...``.
+/// TypeError
+///     An argument that is not made of real numbers.
+/// MemoryError
+///     An ``(N, N)`` matrix too large to allocate (checked before any work is done).
+///
+/// Examples
+/// --------
+/// >>> import ballcollide as bc
+/// >>> # A ball at 1 m/s (no friction) towards a resting ball 1 m away; radii 0.2 and 0.3.
+/// >>> bc.pairwise_collision_times([[0, 0], [1, 0]], [[1, 0], [0, 0]], 0.0, [0.2, 0.3])
+/// array([[inf, 0.5],
+///        [0.5, inf]])
 #[pyfunction]
-#[pyo3(signature = (pos, vel, friction, radius, t_max=f64::INFINITY, num_threads=None))]
+#[pyo3(
+    signature = (pos, vel, friction, radius, *, t_max=Given(None), num_threads=None),
+    text_signature = "(pos, vel, friction, radius, *, t_max=1e999, num_threads=None)"
+)]
 fn pairwise_collision_times<'py>(
     py: Python<'py>,
     pos: &Bound<'py, PyAny>,
     vel: &Bound<'py, PyAny>,
     friction: &Bound<'py, PyAny>,
     radius: &Bound<'py, PyAny>,
-    t_max: f64,
-    num_threads: Option<i64>,
+    t_max: Given<'py>,
+    num_threads: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let s = scene_input(pos, vel, friction, radius, t_max, num_threads)?;
+    let s = scene_input(py, pos, vel, friction, radius, t_max, num_threads)?;
     let n = s.balls.len();
     // N² numbers: a matrix that cannot be allocated is a MemoryError, not an abort.
     let fits = n
@@ -435,37 +603,96 @@ fn pairwise_collision_times<'py>(
              earliest_collision and first_contacts need only O(N)"
         )));
     }
-    let times = py
-        .detach(|| scene::pairwise_collision_times(&s.balls, &s.radii, &s.options))
-        .map_err(value_error)?;
+    let times = run(py, n > SCENE_INLINE_UP_TO, || {
+        scene::pairwise_collision_times(&s.balls, &s.radii, &s.options)
+    })?;
     PyArray1::from_vec(py, times).reshape(Dim([n, n]))
 }
 
-/// The first collision of N balls, `(t, i, j)` or `(inf, -1, -1)` (see
-/// `ballcollide.earliest_collision`).
+/// The first collision among N balls: ``(t, i, j)`` with ``i < j``.
+///
+/// ``(inf, -1, -1)`` if no two balls touch before ``t_max``. Of pairs colliding at the same
+/// time, the lowest ``i`` wins, then the lowest ``j``. This is the question an event-driven
+/// simulator asks after every event; only the pairs whose swept bounding boxes overlap are
+/// computed, and the answer equals the all-pairs answer exactly.
+///
+/// Parameters
+/// ----------
+/// pos, vel, friction, radius, t_max, num_threads
+///     As in :func:`pairwise_collision_times`.
+///
+/// Raises
+/// ------
+/// InputError, TypeError
+///     As :func:`pairwise_collision_times`.
+///
+/// Examples
+/// --------
+/// >>> import ballcollide as bc
+/// >>> pos = [[0, 0], [5, 5], [1, 0]]
+/// >>> vel = [[1, 0], [0, 0], [-1, 0]]
+/// >>> t, i, j = bc.earliest_collision(pos, vel, 0.5, 0.05)
+/// >>> (round(t, 6), i, j)
+/// (0.51676, 0, 2)
+/// >>> bc.earliest_collision(pos, vel, 0.5, 0.05, t_max=0.1)
+/// (inf, -1, -1)
 #[pyfunction]
-#[pyo3(signature = (pos, vel, friction, radius, t_max=f64::INFINITY, num_threads=None))]
+#[pyo3(
+    signature = (pos, vel, friction, radius, *, t_max=Given(None), num_threads=None),
+    text_signature = "(pos, vel, friction, radius, *, t_max=1e999, num_threads=None)"
+)]
 fn earliest_collision(
     py: Python<'_>,
     pos: &Bound<'_, PyAny>,
     vel: &Bound<'_, PyAny>,
     friction: &Bound<'_, PyAny>,
     radius: &Bound<'_, PyAny>,
-    t_max: f64,
-    num_threads: Option<i64>,
+    t_max: Given<'_>,
+    num_threads: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<(f64, i64, i64)> {
-    let s = scene_input(pos, vel, friction, radius, t_max, num_threads)?;
-    let found = py
-        .detach(|| scene::earliest_collision(&s.balls, &s.radii, &s.options))
-        .map_err(value_error)?;
+    let s = scene_input(py, pos, vel, friction, radius, t_max, num_threads)?;
+    let found = run(py, s.balls.len() > SCENE_INLINE_UP_TO, || {
+        scene::earliest_collision(&s.balls, &s.radii, &s.options)
+    })?;
     Ok(found.map_or((f64::INFINITY, -1, -1), |(t, i, j)| {
         (t, index_i64(i), index_i64(j))
     }))
 }
 
-/// Each ball's first collision and partner (see `ballcollide.first_contacts`).
+/// Each ball's first collision: ``(times, partner)``, both of shape ``(N,)``.
+///
+/// Ball ``i`` first touches ball ``partner[i]`` at ``times[i]``, ignoring every other
+/// collision (each is the earliest entry of row ``i`` of :func:`pairwise_collision_times`);
+/// ``inf`` and ``-1`` if it touches none before ``t_max``. Of partners at the same time, the
+/// lowest index wins.
+///
+/// Parameters
+/// ----------
+/// pos, vel, friction, radius, t_max, num_threads
+///     As in :func:`pairwise_collision_times`.
+///
+/// Returns
+/// -------
+/// tuple of numpy.ndarray
+///     ``times`` (float64) and ``partner`` (int64, ``-1`` for none).
+///
+/// Raises
+/// ------
+/// InputError, TypeError
+///     As :func:`pairwise_collision_times`.
+///
+/// Examples
+/// --------
+/// >>> import ballcollide as bc
+/// >>> times, partner = bc.first_contacts([[0, 0], [0, 2], [9, 9]], [[0, 1], [0, 0], [0, 0]],
+/// ...                                    0.0, 0.5)
+/// >>> times, partner
+/// (array([ 1.,  1., inf]), array([ 1,  0, -1]))
 #[pyfunction]
-#[pyo3(signature = (pos, vel, friction, radius, t_max=f64::INFINITY, num_threads=None))]
+#[pyo3(
+    signature = (pos, vel, friction, radius, *, t_max=Given(None), num_threads=None),
+    text_signature = "(pos, vel, friction, radius, *, t_max=1e999, num_threads=None)"
+)]
 #[allow(clippy::type_complexity)]
 fn first_contacts<'py>(
     py: Python<'py>,
@@ -473,13 +700,13 @@ fn first_contacts<'py>(
     vel: &Bound<'py, PyAny>,
     friction: &Bound<'py, PyAny>,
     radius: &Bound<'py, PyAny>,
-    t_max: f64,
-    num_threads: Option<i64>,
+    t_max: Given<'py>,
+    num_threads: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<i64>>)> {
-    let s = scene_input(pos, vel, friction, radius, t_max, num_threads)?;
-    let (times, partners) = py
-        .detach(|| scene::first_contacts(&s.balls, &s.radii, &s.options))
-        .map_err(value_error)?;
+    let s = scene_input(py, pos, vel, friction, radius, t_max, num_threads)?;
+    let (times, partners) = run(py, s.balls.len() > SCENE_INLINE_UP_TO, || {
+        scene::first_contacts(&s.balls, &s.radii, &s.options)
+    })?;
     let partners: Vec<i64> = partners
         .into_iter()
         .map(|p| p.map_or(-1, index_i64))
@@ -496,18 +723,27 @@ fn index_i64(i: usize) -> i64 {
 }
 
 /// ballcollide's compiled core: collision times of balls slowing under friction, and real
-/// roots of polynomials of degree ≤ 4. Use the `ballcollide` package, which converts its
-/// inputs and calls these functions.
+/// roots of polynomials of degree ≤ 4. The ``ballcollide`` package re-exports it.
 #[pymodule(name = "_core")]
 fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
-    m.add_function(wrap_pyfunction!(collision_times, m)?)?;
+    m.add("InputError", py.get_type::<InputError>())?;
     m.add_function(wrap_pyfunction!(_last_kernel_seconds, m)?)?;
-    m.add_function(wrap_pyfunction!(collision_time, m)?)?;
-    m.add_function(wrap_pyfunction!(positions_at, m)?)?;
-    m.add_function(wrap_pyfunction!(real_roots, m)?)?;
-    m.add_function(wrap_pyfunction!(pairwise_collision_times, m)?)?;
-    m.add_function(wrap_pyfunction!(earliest_collision, m)?)?;
-    m.add_function(wrap_pyfunction!(first_contacts, m)?)?;
+    let public = [
+        wrap_pyfunction!(collision_time, m)?,
+        wrap_pyfunction!(collision_times, m)?,
+        wrap_pyfunction!(positions_at, m)?,
+        wrap_pyfunction!(real_roots, m)?,
+        wrap_pyfunction!(pairwise_collision_times, m)?,
+        wrap_pyfunction!(earliest_collision, m)?,
+        wrap_pyfunction!(first_contacts, m)?,
+    ];
+    for f in public {
+        // Their public home, as numpy's functions are `numpy`'s: reprs, pickles and doctest
+        // find them there.
+        f.setattr("__module__", "ballcollide")?;
+        m.add_function(f)?;
+    }
     Ok(())
 }

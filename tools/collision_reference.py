@@ -13,7 +13,7 @@ Usage::
     python tools/collision_reference.py                  # writes tests/data/collision_cases.txt
     python tools/collision_reference.py --fraction 0.05  # a quick, smaller run
 
-Model (see /work/shared/SPEC.md)
+Model (see docs/contract.md)
 --------------------------------
 Ball: position p, velocity v, friction mu >= 0.  For 0 <= t <= tau = |v|/mu,
 x(t) = p + v t - mu/2 (v/|v|) t^2; afterwards it rests at p + v tau / 2.

@@ -26,7 +26,6 @@ array([0.5 ,  inf, 0.25])
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Sequence
 from typing import Any, Union
 
@@ -41,9 +40,9 @@ except ImportError as e:  # dask, or its array dependencies, missing
         "`pip install 'ballcollide[dask]'` (or `pip install 'dask[array]'`)"
     ) from e
 
-from . import _real_array, _threads
-from . import collision_time as _collision_time
-from . import collision_times as _collision_times
+from . import InputError
+from . import collision_times as _check_now  # the eager checks, on an empty batch
+from . import collision_times as _collision_times  # one call for each chunk
 
 __all__ = ["collision_times"]
 
@@ -54,33 +53,57 @@ PerPairInput = Union[float, "da.Array", npt.ArrayLike]
 
 _ROWS = ("pos_a", "vel_a", "pos_b", "vel_b")
 _NAMES = ("pos_a", "vel_a", "friction_a", "pos_b", "vel_b", "friction_b", "radius", "t_max")
-# Where an error of the kernel names an element: "friction_b[7]: friction must be ≥ 0 …".
-_INDEXED = re.compile(r"(?P<name>[a-z_]+)\[(?P<index>[0-9]+)\]")
 
 
-def _checked(name: str, x: Any) -> da.Array | np.ndarray:
-    """``x`` as a Dask or numpy array of real numbers with the right number of dimensions."""
+def _input_error(argument: str, index: int | None, reason: str) -> InputError:
+    """An :class:`ballcollide.InputError` worded as the core words its own."""
+    where = argument if index is None else f"{argument}[{index}]"
+    error = InputError(f"{where}: {reason}")
+    error.argument, error.index, error.reason = argument, index, reason
+    return error
+
+
+def _shaped(name: str, x: Any) -> Any:
+    """``x`` (a Dask array, or anything the core reads) with its shape checked.
+
+    Only the shape is looked at here, since a Dask array's values are not known yet; its
+    dtype, and the values of everything that is not a Dask array, are the core's to check
+    (:func:`collision_times` runs it on stand-ins).
+    """
     a: da.Array | np.ndarray
     if isinstance(x, da.Array):
-        if x.dtype.kind not in "fiu":
-            raise TypeError(f"{name}: expected real numbers, got an array of dtype {x.dtype}")
         a = x
     else:
-        a = _real_array(name, x)
+        try:
+            a = np.asarray(x)
+        except (ValueError, TypeError) as e:  # ragged nested lists, unconvertible objects
+            reason = f"cannot be read as an array of numbers ({e})"
+            raise _input_error(name, None, reason) from None
     if name in _ROWS:
         if a.ndim != 2 or a.shape[1] != 2:
-            raise ValueError(f"{name}: expected shape (N, 2), got {a.shape}")
+            raise _input_error(name, None, f"expected shape (N, 2), got {a.shape}")
     elif a.ndim > 1:
-        raise ValueError(f"{name}: expected a scalar or shape (N,), got shape {a.shape}")
+        raise _input_error(name, None, f"expected a scalar or shape (N,), got shape {a.shape}")
     if a.ndim > 0 and math.isnan(a.shape[0]):
-        raise ValueError(
-            f"{name}: its chunk sizes are unknown (shape {a.shape}); "
-            f"call {name}.compute_chunk_sizes() first"
+        raise _input_error(
+            name,
+            None,
+            f"its chunk sizes are unknown (shape {a.shape}); "
+            f"call {name}.compute_chunk_sizes() first",
         )
-    return a
+    return a if isinstance(a, da.Array) else x
 
 
-def _pair_chunks(arrays: Sequence[da.Array | np.ndarray], n: int) -> tuple[int, ...]:
+def _stand_in(x: Any) -> Any:
+    """What the core checks now in place of ``x``: an empty array of a Dask array's dtype (its
+    values are checked chunk by chunk when computed), and everything else itself, emptied."""
+    if isinstance(x, da.Array):
+        return np.empty((0, *x.shape[1:]), dtype=x.dtype) if x.ndim else np.ones((), x.dtype)
+    a = np.asarray(x)
+    return a[:0] if a.ndim else x
+
+
+def _pair_chunks(arrays: Sequence[Any], n: int) -> tuple[int, ...]:
     """The pair-axis chunks: the first Dask argument's, or Dask's "auto" for numpy only."""
     for a in arrays:
         if isinstance(a, da.Array) and a.ndim > 0:
@@ -96,44 +119,34 @@ def _pair_chunks(arrays: Sequence[da.Array | np.ndarray], n: int) -> tuple[int, 
 def _block(
     pos_a: np.ndarray,
     vel_a: np.ndarray,
-    friction_a: float | np.ndarray,
+    friction_a: Any,
     pos_b: np.ndarray,
     vel_b: np.ndarray,
-    friction_b: float | np.ndarray,
-    radius: float | np.ndarray,
-    t_max: float | np.ndarray,
+    friction_b: Any,
+    radius: Any,
+    t_max: Any,
     *,
     num_threads: int | None,
     block_info: dict[Any, Any] | None = None,
 ) -> npt.NDArray[np.float64]:
     """One chunk of pairs: one call of the kernel; errors name the global index."""
-    args = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max)
-    # Per-pair arrays arrive as (n, 1) blocks (see collision_times), scalars as floats or
-    # 0-d arrays.
+    # Per-pair arrays arrive as (n, 1) blocks (see collision_times), scalars as they were
+    # given or as 0-d arrays.
     fa, fb, r, tm = (_flat(x) for x in (friction_a, friction_b, radius, t_max))
     try:
         return _collision_times(
             pos_a, vel_a, fa, pos_b, vel_b, fb, r, t_max=tm, num_threads=num_threads
         )
-    except ValueError as e:
-        scalars = {name for name, x in zip(_NAMES, args) if np.ndim(x) == 0}
+    except InputError as e:
+        if e.index is None:  # a scalar's error: no pair of its own
+            raise
         # Where this chunk starts in the whole result (map_blocks tells it).
         start = 0 if block_info is None else int(block_info[None]["array-location"][0][0])
-        raise type(e)(_global_message(str(e), start, scalars)) from None
+        raise _input_error(e.argument, start + e.index, e.reason) from None
 
 
-def _flat(x: float | np.ndarray) -> float | np.ndarray:
+def _flat(x: Any) -> Any:
     return np.reshape(x, -1) if np.ndim(x) == 2 else x
-
-
-def _global_message(message: str, start: int, scalars: set[str]) -> str:
-    """The kernel's message with the block's index made global (dropped for scalars)."""
-    m = _INDEXED.match(message)
-    if m is None or m["name"] not in _NAMES:
-        return message
-    name = m["name"]
-    where = name if name in scalars else f"{name}[{start + int(m['index'])}]"
-    return where + message[m.end() :]
 
 
 def collision_times(
@@ -178,14 +191,15 @@ def collision_times(
 
     Raises
     ------
-    ValueError, TypeError
+    ballcollide.InputError, TypeError
         At once, for what can be seen without computing: a wrong shape, a length that
-        differs from ``pos_a``'s, a non-real dtype, unknown chunk sizes, a bad scalar
-        (``radius ≤ 0`` …) or ``num_threads``. Bad values inside arrays (NaN or infinite
-        numbers, a negative friction, ``radius ≤ 0``, a negative ``t_max``) raise
-        ``ValueError`` when the result is computed, naming the argument and the index of
-        the bad pair in the whole array (the first one of its chunk; if several chunks have
-        bad pairs, whichever fails first is reported).
+        differs from ``pos_a``'s, a non-real dtype (``TypeError``), unknown chunk sizes, a
+        bad scalar (``radius ≤ 0`` …) or ``num_threads``. Bad values inside arrays (NaN or
+        infinite numbers, a negative friction, ``radius ≤ 0``, a negative ``t_max``) raise
+        :class:`ballcollide.InputError` (a ``ValueError``) when the result is computed,
+        naming the argument and, as ``.index``, the index of the bad pair in the whole array
+        (the first one of its chunk; if several chunks have bad pairs, whichever fails first
+        is reported).
 
     Notes
     -----
@@ -218,43 +232,25 @@ def collision_times(
     >>> bcd.collision_times(pos_a, vel_a, bad, pos_b, np.zeros((n, 2)), 0.0, 1.0).compute()
     Traceback (most recent call last):
     ...
-    ValueError: friction_a[6]: friction must be ≥ 0, got -1
+    ballcollide.InputError: friction_a[6]: friction must be ≥ 0, got -1
     """
-    threads = _threads(num_threads)
-    args = [
-        _checked(name, x)
-        for name, x in zip(
-            _NAMES, (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max)
-        )
-    ]
-    n = args[0].shape[0]
+    given = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max)
+    args = [_shaped(name, x) for name, x in zip(_NAMES, given)]
+    n = np.shape(args[0])[0]
     for name, a in zip(_NAMES, args):
-        if a.ndim > 0 and a.shape[0] != n:
-            raise ValueError(f"{name}: has {a.shape[0]} rows, expected {n}")
-
-    # Bad scalars fail now, as the kernel words it (a one-pair call, no index).
-    scalar = {
-        name: float(a)
-        for name, a in zip(_NAMES, args)
-        if not isinstance(a, da.Array) and a.ndim == 0
-    }
-    _collision_time(
-        (0.0, 0.0),
-        (0.0, 0.0),
-        scalar.get("friction_a", 0.0),
-        (0.0, 0.0),
-        (0.0, 0.0),
-        scalar.get("friction_b", 0.0),
-        scalar.get("radius", 1.0),
-        t_max=scalar.get("t_max", np.inf),
-    )
+        if np.ndim(a) > 0 and np.shape(a)[0] != n:
+            raise _input_error(name, None, f"has {np.shape(a)[0]} rows, expected {n}")
+    # The core checks the rest at once, on an empty batch of the same dtypes and scalars:
+    # dtypes, lists it cannot read, bad scalars (as it words them, without an index), and
+    # num_threads.
+    standing = [_stand_in(a) for a in args]
+    _check_now(*standing[:7], t_max=standing[7], num_threads=num_threads)
+    args = [a if isinstance(a, da.Array) or np.ndim(a) == 0 else np.asarray(a) for a in args]
 
     chunks = _pair_chunks(args, n)
     blocks: list[Any] = []
     for name, a in zip(_NAMES, args):
-        if name in scalar:
-            blocks.append(scalar[name])
-        elif a.ndim == 0:  # a 0-d Dask array: one value, broadcast to every chunk
+        if np.ndim(a) == 0:  # a number, or a 0-d array (Dask: one value for every chunk)
             blocks.append(a)
         elif name in _ROWS:
             blocks.append(_rechunked(a, (chunks, (2,))))
@@ -264,7 +260,7 @@ def collision_times(
     out: da.Array = da.map_blocks(  # type: ignore[no-untyped-call]
         _block,
         *blocks,
-        num_threads=threads,
+        num_threads=num_threads,
         drop_axis=1,
         dtype=np.float64,
         meta=np.empty((0,), dtype=np.float64),

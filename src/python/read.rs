@@ -1,0 +1,505 @@
+//! Reading the Python functions' arguments: numbers, rows, per-pair values, `num_threads`,
+//! `out`. Each reader accepts what Python and numpy users hand over (lists and tuples,
+//! any real dtype, C or Fortran order, strided views, read-only or big-endian arrays, and
+//! any number `float()` accepts where a scalar goes) and gives the Rust core float64 data in
+//! C order: in place when it already is so, else converted once (rust-numpy's
+//! [`PyArrayLike`] with [`AllowTypeChange`]). Booleans are not numbers here.
+//!
+//! Errors name the argument: `TypeError` for what is not made of real numbers,
+//! [`InputError`](super::input_error::InputError) (a `ValueError`) for a wrong shape,
+//! layout or value.
+
+use std::ffi::c_int;
+use std::num::NonZeroUsize;
+use std::sync::OnceLock;
+
+use numpy::ndarray::{Dimension, IxDyn};
+use numpy::npyffi::{self, NPY_TYPES, NpyTypes, PY_ARRAY_API};
+use numpy::{AllowTypeChange, PyArray, PyArrayLike, PyArrayMethods};
+use numpy::{PyArrayDescr, PyArrayDescrMethods};
+use numpy::{PyReadonlyArray, PyReadwriteArray, PyUntypedArray, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyOverflowError, PyTypeError};
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyFloat, PyInt, PyList, PyTuple};
+
+use super::input_error::input_error;
+use crate::batch::{PerPair, Threads};
+
+/// float64 values in C order, read in place or converted.
+///
+/// An array read in place is not entered in rust-numpy's borrow registry (which costs two
+/// locked hash-map updates and allocations per array, more than a call on a few pairs costs
+/// in all) by a call that holds the GIL throughout: no Python code can write into it
+/// meanwhile, and native code writing into a call's inputs from another thread without the
+/// GIL breaks the documented contract (as it would for numpy's own functions). A call that
+/// releases the GIL first borrows every array read in place through the registry ([`track`]),
+/// so that a rust-numpy writer elsewhere (another call's `out=`) is refused meanwhile; and
+/// every call checks that its `out` overlaps no input ([`out`]).
+pub(super) enum Floats<'py> {
+    /// A C-contiguous, aligned, native float64 array.
+    InPlace(Bound<'py, PyArray<f64, IxDyn>>),
+    /// The values gathered or converted into memory of our own.
+    Copied(Vec<f64>),
+}
+
+impl<'py> Floats<'py> {
+    /// The values, in C order.
+    pub(super) fn values(&self) -> &[f64] {
+        match self {
+            // SAFETY: nothing writes into the array while the values are read (see the type's
+            // documentation: the GIL is held, or the array is borrowed through the registry,
+            // and no other thread modifies a call's inputs). `as_slice` succeeds: `InPlace`
+            // holds only C-contiguous, aligned arrays.
+            Self::InPlace(a) => unsafe { a.as_slice() }.unwrap_or(&[]),
+            Self::Copied(v) => v,
+        }
+    }
+
+    /// The array read in place, borrowed through rust-numpy's registry (see [`track`]).
+    fn tracked(&self) -> PyResult<Option<PyReadonlyArray<'py, f64, IxDyn>>> {
+        match self {
+            Self::InPlace(a) => a.try_readonly().map(Some).map_err(|_| being_written()),
+            Self::Copied(_) => Ok(None),
+        }
+    }
+
+    /// The values as `(x, y)` rows.
+    pub(super) fn rows(&self) -> &[[f64; 2]] {
+        self.values().as_chunks::<2>().0
+    }
+}
+
+/// A scalar parameter: one value for all pairs (balls), or one per pair.
+pub(super) enum Param<'py> {
+    All(f64),
+    Each(Floats<'py>),
+}
+
+impl<'py> Param<'py> {
+    pub(super) fn per_pair(&self) -> PerPair<'_> {
+        match self {
+            Self::All(x) => PerPair::All(*x),
+            Self::Each(values) => PerPair::Each(values.values()),
+        }
+    }
+
+    /// The values, if one per pair.
+    pub(super) fn each(&self) -> Option<&Floats<'py>> {
+        match self {
+            Self::All(_) => None,
+            Self::Each(values) => Some(values),
+        }
+    }
+}
+
+/// Borrows every array of `inputs` read in place through rust-numpy's registry, for a call
+/// that releases the GIL: the borrows last as long as the returned guards.
+pub(super) fn track<'py>(
+    inputs: &[Option<&Floats<'py>>],
+) -> PyResult<Vec<PyReadonlyArray<'py, f64, IxDyn>>> {
+    let mut guards = Vec::new();
+    for input in inputs.iter().flatten() {
+        guards.extend(input.tracked()?);
+    }
+    Ok(guards)
+}
+
+/// An argument with a default, as distinct from one given as `None` (a `TypeError` where a
+/// number goes): `Given(None)` when left out.
+pub(super) struct Given<'py>(pub(super) Option<Bound<'py, PyAny>>);
+
+impl<'a, 'py> FromPyObject<'a, 'py> for Given<'py> {
+    type Error = PyErr;
+
+    fn extract(obj: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        Ok(Self(Some(obj.to_owned())))
+    }
+}
+
+impl<'py> Given<'py> {
+    /// The number given, or `default`.
+    pub(super) fn number_or(&self, name: &str, default: f64) -> PyResult<f64> {
+        self.0.as_ref().map_or(Ok(default), |obj| number(name, obj))
+    }
+
+    /// The per-pair parameter given, or `default` for all.
+    pub(super) fn param_or(&self, name: &str, default: f64) -> PyResult<Param<'py>> {
+        self.0
+            .as_ref()
+            .map_or(Ok(Param::All(default)), |obj| param(name, obj))
+    }
+}
+
+/// A numpy array of real numbers and its dtype.
+struct Real<'py> {
+    array: Bound<'py, PyUntypedArray>,
+    dtype: Bound<'py, PyArrayDescr>,
+}
+
+/// `obj` as a numpy array of real numbers (itself if it is one, else `numpy.asarray(obj)`).
+fn real_array<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Real<'py>> {
+    match obj.cast::<PyUntypedArray>() {
+        Ok(array) => real(name, obj, array.clone()),
+        Err(_) => real(name, obj, asarray(name, obj)?),
+    }
+}
+
+/// `numpy.asarray(obj)`, or an error naming the argument.
+fn asarray<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyUntypedArray>> {
+    let py = obj.py();
+    // SAFETY: `obj` is a live object; `PyArray_FromAny` returns a new reference or NULL with
+    // an exception set, and with no dtype asked for it returns an ndarray.
+    let made = unsafe {
+        let ptr = PY_ARRAY_API.PyArray_FromAny(
+            py,
+            obj.as_ptr(),
+            std::ptr::null_mut(),
+            0,
+            0,
+            0,
+            std::ptr::null_mut(),
+        );
+        Bound::from_owned_ptr_or_err(py, ptr)
+    };
+    // Ragged nested lists, objects numpy cannot read.
+    let made = made.map_err(|e| {
+        let reason = format!("cannot be read as an array of numbers ({})", e.value(py));
+        input_error(py, name, None, &reason)
+    })?;
+    Ok(made.cast_into::<PyUntypedArray>()?)
+}
+
+/// `array` (read from `obj`) if its dtype is a real one: a float or integer kind.
+fn real<'py>(
+    name: &str,
+    obj: &Bound<'py, PyAny>,
+    array: Bound<'py, PyUntypedArray>,
+) -> PyResult<Real<'py>> {
+    let dtype = array.dtype();
+    if !matches!(dtype.kind(), b'f' | b'i' | b'u') {
+        let what = if is_numpy_scalar(obj) {
+            "a scalar"
+        } else {
+            "an array"
+        };
+        return Err(PyTypeError::new_err(format!(
+            "{name}: expected real numbers, got {what} of dtype {dtype}"
+        )));
+    }
+    Ok(Real { array, dtype })
+}
+
+/// Whether `obj` is a numpy scalar (`np.float32(1)`, `np.bool_(True)` …).
+fn is_numpy_scalar(obj: &Bound<'_, PyAny>) -> bool {
+    is_numpy_type(obj, NpyTypes::PyGenericArrType_Type)
+}
+
+/// Whether `obj` is an instance of one of numpy's types.
+fn is_numpy_type(obj: &Bound<'_, PyAny>, ty: NpyTypes) -> bool {
+    // SAFETY: a type object from numpy's C API table, and a live object.
+    unsafe {
+        let ty = npyffi::get_type_object(obj.py(), ty);
+        pyo3::ffi::PyObject_TypeCheck(obj.as_ptr(), ty) != 0
+    }
+}
+
+/// Whether `dtype` is float64 in this machine's byte order: what `PyArray<f64, _>`'s own
+/// type check asks, without asking numpy for a float64 descriptor to compare with.
+fn native_float64(dtype: &Bound<'_, PyArrayDescr>) -> bool {
+    dtype.num() == NPY_TYPES::NPY_DOUBLE as c_int && dtype.is_native_byteorder() != Some(false)
+}
+
+/// The float64 values of a real array, in C order.
+fn floats<'py>(real: &Real<'py>) -> PyResult<Floats<'py>> {
+    let Real { array, dtype } = real;
+    if native_float64(dtype) && array.is_c_contiguous() && array.is_aligned() {
+        // SAFETY: an ndarray of native float64 (`native_float64`).
+        let a = unsafe { array.cast_unchecked::<PyArray<f64, IxDyn>>() };
+        return Ok(Floats::InPlace(a.clone()));
+    }
+    let converted: PyArrayLike<'py, f64, IxDyn, AllowTypeChange> = array.extract()?;
+    if converted.is_c_contiguous() && converted.is_aligned() {
+        // A new array (or a view of a native float64 one): this call is its only reader.
+        return Ok(Floats::InPlace((**converted).clone()));
+    }
+    Ok(Floats::Copied(
+        converted.as_array().iter().copied().collect(),
+    ))
+}
+
+fn being_written() -> PyErr {
+    pyo3::exceptions::PyRuntimeError::new_err(
+        "an input array is being written by another call (as its out=)",
+    )
+}
+
+/// A shape as numpy prints it: `()`, `(3,)`, `(3, 2)`.
+pub(super) fn shape_text(shape: &[usize]) -> String {
+    match shape {
+        [n] => format!("({n},)"),
+        _ => {
+            let dims: Vec<String> = shape.iter().map(usize::to_string).collect();
+            format!("({})", dims.join(", "))
+        }
+    }
+}
+
+/// A number: a Python float (or `np.float64`) as is; anything else `float()` accepts (an int,
+/// a `Fraction`, a `Decimal`, a numpy scalar or 0-d array of a real dtype); not a bool.
+pub(super) fn number(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<f64> {
+    if let Ok(x) = obj.cast::<PyFloat>() {
+        return Ok(x.value());
+    }
+    if obj.is_instance_of::<PyBool>() {
+        return Err(PyTypeError::new_err(format!(
+            "{name}: expected real numbers, got bool"
+        )));
+    }
+    if obj.is_instance_of::<PyUntypedArray>()
+        || obj.is_instance_of::<PyList>()
+        || obj.is_instance_of::<PyTuple>()
+        || is_numpy_scalar(obj)
+    {
+        let real = real_array(name, obj)?;
+        if real.array.ndim() != 0 {
+            let shape = shape_text(real.array.shape());
+            let reason = format!("expected a scalar, got shape {shape}");
+            return Err(input_error(obj.py(), name, None, &reason));
+        }
+        return Ok(floats(&real)?.values().first().copied().unwrap_or(f64::NAN));
+    }
+    obj.extract::<f64>().map_err(|e| {
+        let py = obj.py();
+        if e.is_instance_of::<PyOverflowError>(py) {
+            let reason = format!(
+                "must be finite, got {} (beyond float64's range)",
+                e.value(py)
+            );
+            input_error(py, name, None, &reason)
+        } else if e.is_instance_of::<PyTypeError>(py) {
+            PyTypeError::new_err(format!(
+                "{name}: expected real numbers, got {}",
+                type_name(obj)
+            ))
+        } else {
+            e
+        }
+    })
+}
+
+fn type_name(obj: &Bound<'_, PyAny>) -> String {
+    obj.get_type()
+        .name()
+        .map_or_else(|_| "another type".to_owned(), |n| n.to_string())
+}
+
+/// An `(x, y)` vector: two numbers (a list or tuple of Python numbers is read directly).
+pub(super) fn point(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 2]> {
+    let plain = |item: &Bound<'_, PyAny>| {
+        item.is_instance_of::<PyFloat>()
+            || (item.is_instance_of::<PyInt>() && !item.is_instance_of::<PyBool>())
+    };
+    let pair = match (obj.cast::<PyTuple>(), obj.cast::<PyList>()) {
+        (Ok(t), _) if t.len() == 2 => Some((t.get_item(0)?, t.get_item(1)?)),
+        (_, Ok(l)) if l.len() == 2 => Some((l.get_item(0)?, l.get_item(1)?)),
+        _ => None,
+    };
+    if let Some((x, y)) = pair
+        && plain(&x)
+        && plain(&y)
+    {
+        return Ok([number(name, &x)?, number(name, &y)?]);
+    }
+    let real = real_array(name, obj)?;
+    if real.array.shape() != [2] {
+        let shape = shape_text(real.array.shape());
+        let reason = format!("expected a 2-vector (x, y), got shape {shape}");
+        return Err(input_error(obj.py(), name, None, &reason));
+    }
+    match floats(&real)?.values() {
+        &[x, y] => Ok([x, y]),
+        _ => Err(input_error(
+            obj.py(),
+            name,
+            None,
+            "expected a 2-vector (x, y)",
+        )),
+    }
+}
+
+/// An `(N, 2)` array of rows.
+pub(super) fn rows<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Floats<'py>> {
+    let real = real_array(name, obj)?;
+    let shape = real.array.shape();
+    if shape.len() != 2 || shape[1] != 2 {
+        let reason = format!("expected shape (N, 2), got {}", shape_text(shape));
+        return Err(input_error(obj.py(), name, None, &reason));
+    }
+    floats(&real)
+}
+
+/// A per-pair parameter: a number, or an array-like of shape `(N,)`.
+pub(super) fn param<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Param<'py>> {
+    if let Ok(x) = obj.cast::<PyFloat>() {
+        return Ok(Param::All(x.value()));
+    }
+    let real = match obj.cast::<PyUntypedArray>() {
+        Ok(array) => real(name, obj, array.clone())?,
+        Err(_) if obj.is_instance_of::<PyList>() || obj.is_instance_of::<PyTuple>() => {
+            real(name, obj, asarray(name, obj)?)?
+        }
+        Err(_) => return number(name, obj).map(Param::All),
+    };
+    match real.array.ndim() {
+        0 => number(name, &real.array).map(Param::All),
+        1 => floats(&real).map(Param::Each),
+        _ => {
+            let shape = shape_text(real.array.shape());
+            let reason = format!("expected a scalar or shape (N,), got shape {shape}");
+            Err(input_error(obj.py(), name, None, &reason))
+        }
+    }
+}
+
+/// `num_threads`: `None` → every core; an int `n ≥ 1` → at most `n` (and at most the cores
+/// there are, so that a huge `n` cannot start thousands of threads).
+pub(super) fn threads(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Threads> {
+    let Some(obj) = obj.filter(|o| !o.is_none()) else {
+        return Ok(Threads::All);
+    };
+    let py = obj.py();
+    let not_int = |what: &str| {
+        PyTypeError::new_err(format!("num_threads: expected None or an int, got {what}"))
+    };
+    if obj.is_instance_of::<PyBool>() || is_numpy_type(obj, NpyTypes::PyBoolArrType_Type) {
+        return Err(not_int("bool"));
+    }
+    // SAFETY: a live object; `PyNumber_Index` returns a new reference or NULL with an
+    // exception set.
+    let index =
+        unsafe { Bound::from_owned_ptr_or_err(py, pyo3::ffi::PyNumber_Index(obj.as_ptr())) }
+            .map_err(|_| not_int(&type_name(obj)))?;
+    let n = match index.extract::<i64>() {
+        Ok(n) => n,
+        // Beyond 64 bits: as many threads as there are cores if positive.
+        Err(_) if index.gt(0)? => i64::MAX,
+        Err(_) => i64::MIN,
+    };
+    if n < 1 {
+        let reason = format!("must be None (all cores) or ≥ 1, got {index}");
+        return Err(input_error(py, "num_threads", None, &reason));
+    }
+    let n = usize::try_from(n).unwrap_or(usize::MAX).min(cores());
+    Ok(NonZeroUsize::new(n).map_or(Threads::All, Threads::AtMost))
+}
+
+/// The cores this process may use, read once: `available_parallelism` reads the cgroup quota
+/// and the affinity mask on every call (~25 µs on Linux), more than a call on a few hundred
+/// pairs costs in all.
+fn cores() -> usize {
+    static CORES: OnceLock<usize> = OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, NonZeroUsize::get))
+}
+
+/// A caller's output array (`out=`): a float64 numpy array of `shape` (else a `TypeError` if
+/// not a native float64 array of that many dimensions, a `ValueError` otherwise),
+/// C-contiguous, writeable and sharing no memory with the inputs. A call that releases the
+/// GIL borrows it through rust-numpy's registry too ([`Out::tracked`]).
+///
+/// Its shape is checked here, after the inputs' own checks: the core measures every input
+/// against the output's length, and would blame the first input for an output of the wrong
+/// length.
+pub(super) fn out<'py, D: Dimension>(
+    obj: &Bound<'py, PyAny>,
+    shape: &[usize],
+    expected: &str,
+    inputs: &[Option<&Floats<'_>>],
+) -> PyResult<Out<'py, D>> {
+    let py = obj.py();
+    let fail = |reason: &str| input_error(py, "out", None, reason);
+    let array = match obj.cast::<PyUntypedArray>() {
+        Ok(a) if a.ndim() == shape.len() && native_float64(&a.dtype()) => {
+            // SAFETY: an ndarray of native float64 (`native_float64`) with `D`'s dimensions.
+            unsafe { a.cast_unchecked::<PyArray<f64, D>>() }
+        }
+        found => {
+            let found = match found {
+                Ok(a) => format!("a {}-D array of dtype {}", a.ndim(), a.dtype()),
+                Err(_) => type_name(obj),
+            };
+            let message = format!("out: expected {expected}, got {found}");
+            return Err(PyTypeError::new_err(message));
+        }
+    };
+    if array.shape() != shape {
+        let (want, got) = (shape_text(shape), shape_text(array.shape()));
+        return Err(fail(&format!("expected shape {want}, got {got}")));
+    }
+    if !array.is_c_contiguous() || !array.is_aligned() {
+        return Err(fail("expected a C-contiguous, aligned float64 array"));
+    }
+    // SAFETY: a live array's header.
+    let flags = unsafe { (*npyffi::_PyArray_GET_ITEM_DATA(array.as_array_ptr())).flags };
+    if flags & npyffi::NPY_ARRAY_WRITEABLE == 0 {
+        return Err(fail("the array is read-only"));
+    }
+    // SAFETY: only the addresses are looked at.
+    let range = unsafe { array.as_slice() }.map_or(0..0, address_range);
+    let overlaps = |input: &Floats<'_>| {
+        let r = address_range(input.values());
+        r.start < range.end && range.start < r.end
+    };
+    if inputs.iter().flatten().any(|input| overlaps(input)) {
+        return Err(fail("the array shares memory with an input"));
+    }
+    Ok(Out(array.clone()))
+}
+
+/// A caller's `out=` array, checked by [`out`].
+pub(super) struct Out<'py, D>(Bound<'py, PyArray<f64, D>>);
+
+impl<'py, D: Dimension> Out<'py, D> {
+    /// Its elements, to be written.
+    pub(super) fn values(&mut self) -> &mut [f64] {
+        // SAFETY: writeable, C-contiguous and aligned (checked by `out`), overlapping no
+        // input; nothing else writes into it or reads it during the call: the GIL is held,
+        // or the array is borrowed through the registry ([`Out::tracked`]).
+        unsafe { self.0.as_slice_mut() }.unwrap_or(&mut [])
+    }
+
+    /// The array borrowed for writing through rust-numpy's registry, for a call that releases
+    /// the GIL (see [`track`]): refused if some rust-numpy code borrows it meanwhile.
+    pub(super) fn tracked(&self) -> PyResult<PyReadwriteArray<'py, f64, D>> {
+        let py = self.0.py();
+        self.0
+            .try_readwrite()
+            .map_err(|_| input_error(py, "out", None, "the array shares memory with an input"))
+    }
+
+    pub(super) fn into_array(self) -> Bound<'py, PyArray<f64, D>> {
+        self.0
+    }
+}
+
+/// The addresses a slice's elements occupy.
+fn address_range(values: &[f64]) -> std::ops::Range<usize> {
+    let r = values.as_ptr_range();
+    r.start as usize..r.end as usize
+}
+
+/// Polynomial coefficients: a 1-D or 2-D array of real numbers, and its shape.
+pub(super) fn coefficients<'py>(
+    name: &str,
+    obj: &Bound<'py, PyAny>,
+) -> PyResult<(Floats<'py>, Vec<usize>)> {
+    let real = real_array(name, obj)?;
+    let shape = real.array.shape().to_vec();
+    if !matches!(shape.len(), 1 | 2) {
+        let reason = format!(
+            "expected shape (N, k+1) with degree k = 1..4, got {}",
+            shape_text(&shape)
+        );
+        return Err(input_error(obj.py(), name, None, &reason));
+    }
+    Ok((floats(&real)?, shape))
+}
