@@ -195,11 +195,34 @@ fn a_window_whose_time_scale_underflows_still_ends() {
         let a = ball([0.0, 0.0], [1.0, 0.0], 1e-3);
         let b = ball([3e-170, 1e-171], [2.0, 1e-3], 1e-3);
         let _ = send.send(collision_time(&a, &b, 1e-170));
+        // What hypothesis found (a radius 1e-300 of the positions, a friction of 7.8e232).
+        let a = ball(
+            [-4.70655934, -4.70655934],
+            [-0.0, 6.22191567],
+            7.7778273e232,
+        );
+        let b = ball(
+            [-1.57801527, -7.39298934e-72],
+            [-9.75603582e76, 7.43727028],
+            1.5,
+        );
+        let _ = send.send(with_horizon_checked(&a, &b, 1e-300, 2.38238312));
     });
-    let got = receive
-        .recv_timeout(std::time::Duration::from_secs(20))
-        .expect("the search ends");
-    // Squares of 1e-170 underflow: beyond the range where the answer is exact (B recedes; that
-    // is decided by numbers that underflow), so only that it ends, with a time or none.
-    assert!(got.expect("valid input").is_none_or(|t| t >= 0.0));
+    for _ in 0..2 {
+        let got = receive
+            .recv_timeout(std::time::Duration::from_secs(20))
+            .expect("the search ends");
+        // Squares of 1e-170 underflow: beyond the range where the answer is exact (whether
+        // the balls approach is decided by numbers that underflow), so only that it ends.
+        assert!(got.expect("valid input").is_none_or(|t| t >= 0.0));
+    }
+}
+
+fn with_horizon_checked(
+    a: &Ball,
+    b: &Ball,
+    radius: f64,
+    t_max: f64,
+) -> Result<Option<f64>, ballcollide::InputError> {
+    collision_time_with(a, b, radius, &CollisionOptions { t_max })
 }
