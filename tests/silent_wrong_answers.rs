@@ -226,3 +226,122 @@ fn with_horizon_checked(
 ) -> Result<Option<f64>, ballcollide::InputError> {
     collision_time_with(a, b, radius, &CollisionOptions { t_max })
 }
+
+mod found_in_review {
+    //! Reproducers of a review of the fixes above: each lost a contact.
+
+    use ballcollide::path::{Path2, Path3, Segment2, Segment3};
+    use ballcollide::scene::{SceneOptions, pairwise_collision_times};
+    use ballcollide::{Ball, CollisionOptions, collision_time, path_collision_time};
+    use nalgebra::{Vector2, Vector3};
+
+    fn v(x: f64, y: f64) -> Vector2<f64> {
+        Vector2::new(x, y)
+    }
+
+    fn paths(a: Vec<Segment2>, b: Vec<Segment2>, radius: f64) -> Option<f64> {
+        let (a, b) = (Path2::new(a).unwrap(), Path2::new(b).unwrap());
+        path_collision_time(&a, &b, radius, &CollisionOptions::default()).unwrap()
+    }
+
+    #[test]
+    fn a_contact_exactly_at_a_window_boundary_is_found() {
+        let rest = vec![Segment2::at_rest(0.0, v(2.0, 0.0))];
+        let roll = Segment2::new(0.0, v(0.0, 0.0), v(1.0, 0.0), v(0.0, 0.0));
+        // A's new segment starts at the contact.
+        let slows = Segment2::new(1.0, v(1.0, 0.0), v(1.0, 0.0), v(-0.5, 0.0));
+        assert_eq!(paths(vec![roll, slows], rest.clone(), 1.0), Some(1.0));
+        assert_eq!(paths(vec![roll], rest.clone(), 1.0), Some(1.0));
+        // B's.
+        let again = vec![rest[0], Segment2::at_rest(1.0, v(2.0, 0.0))];
+        assert_eq!(paths(vec![roll], again, 1.0), Some(1.0));
+        // A friction ball stops exactly as the other reaches it (and runs on into it).
+        let a = Ball::new(v(0.0, 0.0), v(2.0, 0.0), 1.0).unwrap();
+        let b = Ball::new(v(5.0, 0.0), v(-1.0, 0.0), 0.0).unwrap();
+        assert_eq!(collision_time(&a, &b, 1.0).unwrap(), Some(2.0));
+        let (pa, pb) = (a.path().unwrap(), b.path().unwrap());
+        let options = CollisionOptions::default();
+        assert_eq!(
+            path_collision_time(&pa, &pb, 1.0, &options).unwrap(),
+            Some(2.0)
+        );
+        // In 3-D, a falling ball whose contact is at its segment start.
+        let fall = Segment3::new(
+            0.0,
+            Vector3::new(0.0, 0.0, 3.0),
+            Vector3::zeros(),
+            Vector3::new(0.0, 0.0, -2.0),
+        );
+        let drop = Segment3::new(
+            1.0,
+            Vector3::new(0.0, 0.0, 2.0),
+            Vector3::new(0.0, 0.0, -2.0),
+            Vector3::zeros(),
+        );
+        let a = Path3::new(vec![fall, drop]).unwrap();
+        let b = Path3::new(vec![Segment3::at_rest(0.0, Vector3::zeros())]).unwrap();
+        assert_eq!(
+            path_collision_time(&a, &b, 2.0, &options).unwrap(),
+            Some(1.0)
+        );
+    }
+
+    #[test]
+    fn touching_balls_approaching_at_third_order_collide_at_once() {
+        // g(s) = −2s³ + 1.25s⁴: the gap's first non-zero derivative is the third.
+        let a = vec![Segment2::new(0.0, v(1.0, 0.0), v(0.0, 1.0), v(-1.0, -2.0))];
+        let b = vec![Segment2::at_rest(0.0, v(0.0, 0.0))];
+        assert_eq!(paths(a, b, 1.0), Some(0.0));
+    }
+
+    #[test]
+    fn a_long_window_keeps_a_late_contact() {
+        // A runs off at 1 m/s, barely decelerating, and comes back onto B ~2/|a| later.
+        for e in [10, 20, 28, 32, 40, 100] {
+            let acc = -(10f64).powi(-e);
+            let a = vec![Segment2::new(0.0, v(0.6, 0.3), v(1.0, 0.0), v(acc, 0.0))];
+            let b = vec![Segment2::at_rest(0.0, v(0.0, 0.0))];
+            // 0.6 + t + acc·t²/2 = 0.4 (x only: y stays 0.3, within 0.5 at |x| ≤ 0.4).
+            let half = acc / 2.0;
+            let exact = (-1.0 - (1.0 - 4.0 * half * 0.2f64).sqrt()) / (2.0 * half);
+            let t = paths(a, b, 0.5).expect("A comes back");
+            assert!(
+                (t - exact).abs() <= 1e-12 * exact,
+                "1e-{e}: {t:e} vs {exact:e}"
+            );
+        }
+        // In 3-D: a ball shot up at 1e8 m/s falls back onto one at rest.
+        let up = Segment3::new(
+            0.0,
+            Vector3::new(0.0, 0.0, 0.2),
+            Vector3::new(0.0, 0.0, 1e8),
+            Vector3::new(0.0, 0.0, -9.81),
+        );
+        let a = Path3::new(vec![up]).unwrap();
+        let b = Path3::new(vec![Segment3::at_rest(0.0, Vector3::zeros())]).unwrap();
+        let t = path_collision_time(&a, &b, 0.1, &CollisionOptions::default())
+            .unwrap()
+            .expect("a hit");
+        assert!((t - 20387359.83690112).abs() < 1e-6, "{t}");
+    }
+
+    #[test]
+    fn a_scene_pair_is_the_pair_query_with_the_summed_radius_bit_for_bit() {
+        let a = Ball::new(
+            v(-1.8133261538946301, 0.5275808549638468),
+            v(-1.1240590499746418e-50, -1.1594300559926448e-50),
+            9.994528477132552e-101,
+        )
+        .unwrap();
+        let b = Ball::new(
+            v(-0.36543290864109057, -1.6800426548189051),
+            v(-4.070715451318607e-51, 1.4165506226421468e-50),
+            9.17970995846664e-101,
+        )
+        .unwrap();
+        let radii = [1.1898672350806805, 1.1951882766486495];
+        let scene = pairwise_collision_times(&[a, b], &radii, &SceneOptions::default()).unwrap();
+        let pair = collision_time(&a, &b, radii[0] + radii[1]).unwrap();
+        assert_eq!(Some(scene[1]), pair);
+    }
+}

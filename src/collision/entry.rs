@@ -76,8 +76,10 @@ fn slope_root<const D: usize>(
 pub(crate) enum WindowSearch {
     /// The balls start to interpenetrate at this time since the window's start.
     Entry(f64),
-    /// No entry; whether the gap is positive at the window's end (carried to the next
-    /// window, to catch a crossing that falls exactly between two windows).
+    /// No entry; whether the balls end the window apart: the gap, having been positive, is
+    /// still `≥ 0` at the window's end (carried to the next window, so that a crossing that
+    /// falls exactly between two windows, or at a boundary where the gap is exactly 0, is an
+    /// entry at the next window's start).
     NoEntry { ends_positive: bool },
 }
 
@@ -118,7 +120,7 @@ pub(crate) fn first_entry<const D: usize>(
         (left, g_left) = (right, g_right);
     }
     WindowSearch::NoEntry {
-        ends_positive: g_left > 0.0,
+        ends_positive: seen_positive & (g_left >= 0.0),
     }
 }
 
@@ -173,7 +175,8 @@ pub(crate) fn piecewise_entry<const D: usize>(gap: &Gap<D>, end: f64) -> Option<
         }
     }
     Some(WindowSearch::NoEntry {
-        ends_positive: gap.value(end) > 0.0,
+        // The window started positive (every open piece starts so).
+        ends_positive: gap.value(end) >= 0.0,
     })
 }
 

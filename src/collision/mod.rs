@@ -56,11 +56,12 @@ use after_stop::after_first_stop;
 use crossing::apart_by_window;
 use entry::{WindowSearch, first_entry, piecewise_entry};
 use length_unit::{LengthUnit, largest, normalised_balls};
-use long_window::{first_piece, long_window, next_piece};
+use long_window::{first_piece, long_window, next_piece, plain_piece};
 use moving_entry::{WhileMoving, while_moving_one};
 use nalgebra::SVector;
 pub use path_contact::path_collision_time;
 use prefilter::{PairInput, never_touch};
+use window_box::apart_on_window;
 
 /// Options of a collision query ([`collision_time_with`]).
 ///
@@ -149,6 +150,11 @@ pub(crate) fn first_contact_screened(
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
+    // The pair query's own contact distance, `r_a + r_b` rounded, wherever it is finite (so
+    // that a scene's pair gives the bits of `collision_time` with that radius); the sum is
+    // formed in the pair's unit only where it overflows.
+    let sum = radii[0] + radii[1];
+    let radii = if sum.is_finite() { [sum, 0.0] } else { radii };
     let (a, b, radius) = normalised_balls(a, b, radii);
     let (a, b) = (&a, &b);
     let pair = PairInput::of(a, b, radius, t_max);
@@ -261,8 +267,13 @@ pub(crate) fn approaching<const D: usize>(gap: &Gap<D>) -> bool {
         radius: gap.radius,
     };
     let slope = gap.half_slope(0.0);
-    // `|` and `&` rather than `||` and `&&`: no branch, so that lanes can run it.
-    (slope < 0.0) | ((slope == 0.0) & (gap.half_curvature(0.0) < 0.0))
+    let curvature = gap.half_curvature(0.0);
+    // g‴/6 = d′·d″ (g⁗ = 6|d″|² is never negative). `|` and `&` rather than `||` and `&&`:
+    // no branch, so that lanes can run it.
+    let third = gap.velocity.dot(&gap.acceleration);
+    (slope < 0.0)
+        | ((slope == 0.0) & (curvature < 0.0))
+        | ((slope == 0.0) & (curvature == 0.0) & (third < 0.0))
 }
 
 /// Longest window searched: contacts later than about 1e301 (in the input's time unit) are not
@@ -309,13 +320,14 @@ fn search_window<const D: usize>(
     }
     let (mut start, mut end) = (0.0, first_piece(gap, length));
     let mut previous_positive = previous_positive;
+    let mut budget = SPLITS;
     loop {
         let piece = if start == 0.0 {
             *gap
         } else {
             gap.shifted(start)
         };
-        match search_plain_window(&piece, end - start, previous_positive) {
+        match search_piece(&piece, end - start, previous_positive, &mut budget) {
             WindowSearch::Entry(s) => return WindowSearch::Entry(start + s),
             WindowSearch::NoEntry { ends_positive } => previous_positive = ends_positive,
         }
@@ -326,6 +338,43 @@ fn search_window<const D: usize>(
         }
         start = end;
         end = next_piece(&gap.shifted(start), start, length);
+    }
+}
+
+/// How many times the pieces of one long window may be halved in all: far more than a window
+/// whose boxes prove its far parts apart needs (about two per halving towards each feature),
+/// and a bound on the work where nothing can be proven (lengths whose squares underflow).
+const SPLITS: u32 = 4096;
+
+/// The first entry on a piece of a long window (its motion `piece`, re-expanded at its start),
+/// as time since its start: nothing if its box proves it apart ([`apart_on_window`]); the
+/// window search if it is plain even measured by the radius alone ([`plain_piece`]: then it
+/// is plain wherever the balls may touch in it); otherwise its two halves in turn, while the
+/// `budget` of halvings lasts.
+fn search_piece<const D: usize>(
+    piece: &Gap<D>,
+    length: f64,
+    previous_positive: bool,
+    budget: &mut u32,
+) -> WindowSearch {
+    if apart_on_window(piece, length) {
+        return WindowSearch::NoEntry {
+            ends_positive: true,
+        };
+    }
+    if *budget == 0 || plain_piece(piece, length) || length.is_nan() || length <= 0.0 {
+        return search_plain_window(piece, length, previous_positive);
+    }
+    *budget -= 1;
+    let half = 0.5 * length;
+    match search_piece(piece, half, previous_positive, budget) {
+        WindowSearch::NoEntry { ends_positive } => {
+            match search_piece(&piece.shifted(half), length - half, ends_positive, budget) {
+                WindowSearch::Entry(s) => WindowSearch::Entry(half + s),
+                no_entry => no_entry,
+            }
+        }
+        entry => entry,
     }
 }
 
@@ -372,7 +421,7 @@ fn search_plain_window<const D: usize>(
                 WindowSearch::Entry(0.0)
             } else {
                 WindowSearch::NoEntry {
-                    ends_positive: g_start > 0.0,
+                    ends_positive: (g_start > 0.0) | (previous_positive & (g_start == 0.0)),
                 }
             };
         }
