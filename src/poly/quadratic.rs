@@ -6,16 +6,18 @@ use super::scaling::{exponent, scale};
 /// The real root of `b·x + c = 0`.
 ///
 /// A constant polynomial (`b = 0`) has no isolated root; it gives an empty result even when
-/// `c = 0` (then every `x` is a root, as `numpy.roots` also reports nothing).
+/// `c = 0` (then every `x` is a root, as `numpy.roots` also reports nothing). A non-finite
+/// coefficient gives no root, as for every solver.
 ///
 /// ```
 /// use ballcollide::poly::solve_linear;
 /// assert_eq!(solve_linear(2.0, -3.0).as_slice(), &[1.5]);
 /// assert!(solve_linear(0.0, 1.0).is_empty());
+/// assert!(solve_linear(-1.0, f64::INFINITY).is_empty());
 /// ```
 pub fn solve_linear(b: f64, c: f64) -> RealRoots {
     let mut roots = RealRoots::empty();
-    if b != 0.0 {
+    if b != 0.0 && b.is_finite() && c.is_finite() {
         roots.push(-c / b);
     }
     roots
