@@ -353,6 +353,14 @@ pub fn scene(case: &SceneCase, k: i32) -> Check {
             brute[j * n + i] = t;
         }
     }
+    if let Some(i) = (0..n * n).find(|&i| brute[i].is_nan() || brute[i] < 0.0) {
+        return Err(format!(
+            "pair ({}, {}): time {:e}, for {case:?}",
+            i / n,
+            i % n,
+            brute[i]
+        ));
+    }
     for search in [PairSearch::BroadPhase, PairSearch::AllPairs] {
         for threads in [1, 2] {
             let m = matrix(case, search, threads)?;
