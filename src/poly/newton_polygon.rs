@@ -10,11 +10,13 @@
 //!   vertices' heights, and so is `h_k + k·log₂|x|`), so an error in `c_k` that is small next
 //!   to `2^h_k` is small next to the polynomial's largest term wherever it is evaluated, and
 //!   therefore next to the sum `Σ|c_j|·|x|^j` that the roots' conditioning is measured
-//!   against ([`envelope`]). A coefficient far below the polygon is negligible at every `x`,
+//!   against ([`monic_quartic_envelope`]). A coefficient far below the polygon is negligible at every `x`,
 //!   whatever its own relative error.
 //!
 //! Heights are taken from the coefficients' binary exponents (`2^e ≤ |c| < 2^(e+1)`), so the
 //! bounds hold as stated, with a factor below 2 to spare.
+
+use super::scaling::{exponent, pow2};
 
 /// How far apart (in bits of magnitude) two groups of roots must be before the polynomial is
 /// split into two lower-degree ones, one per group.
@@ -68,40 +70,61 @@ impl Hull {
     fn vertices(&self) -> &[(usize, f64)] {
         &self.vertices[..self.len]
     }
-
-    /// The polygon's height over degree `k`, or `None` outside its span.
-    fn height(&self, k: usize) -> Option<f64> {
-        let v = self.vertices();
-        let right = v.iter().position(|&(kv, _)| kv >= k)?;
-        let (k2, e2) = v[right];
-        if k2 == k {
-            return Some(e2);
-        }
-        let (k1, e1) = v[right.checked_sub(1)?];
-        Some(e1 + (e2 - e1) * (k - k1) as f64 / (k2 - k1) as f64)
-    }
 }
 
-/// For each coefficient of `coeffs` (highest degree first, degree ≤ 4), the power of two
-/// `2^⌊h_k⌋` under its Newton polygon at that degree: an error in `c_k` that is `δ` times this
-/// is at most `δ` times the polynomial's largest term, at every `x` (see the module's
-/// documentation). `0` outside the polygon's span (degrees above the leading non-zero
-/// coefficient or below the last one).
+/// For the monic quartic `x⁴ + a·x³ + b·x² + c·x + d` (`d ≠ 0`), the powers of two
+/// `2^⌊h_k⌋` under its Newton polygon at the degrees of `a, b, c, d`: an error in a
+/// coefficient that is `δ` times its envelope is at most `δ` times the quartic's largest term,
+/// at every `x` (see the module's documentation).
 ///
-/// The polynomial solvers measure the backward error of a candidate factorisation against
+/// The quartic solver measures the backward error of a candidate factorisation against
 /// `max(size of its terms, envelope)`: a coefficient far below the polygon (a tiny odd-degree
 /// term next to an even quartic, say) is then not mistaken for one that must be reproduced to
 /// full relative accuracy.
-pub(super) fn envelope<const N: usize>(coeffs: &[f64; N]) -> [f64; N] {
-    let hull = Hull::of(&coeffs.map(super::scaling::exponent));
-    let mut out = [0.0; N];
-    for (i, o) in out.iter_mut().enumerate() {
-        if let Some(h) = hull.height(N - 1 - i) {
-            // Heights are within the exponent range of floats: the conversion is exact.
-            *o = super::scaling::pow2(h.floor() as i32);
-        }
+pub(super) fn monic_quartic_envelope(a: f64, b: f64, c: f64, d: f64) -> [f64; 4] {
+    // Called once per quartic, so without the hull's bookkeeping: the polygon's height over a
+    // degree is the highest chord between points on either side of it (or the point itself),
+    // and with x⁴ at height 0 these are ten chords, written out. A zero coefficient is a point
+    // at −∞, under every chord. No NaN can arise, so plain comparisons do for max.
+    let (e3, e2, e1, e0) = (log2_floor(a), log2_floor(b), log2_floor(c), log2_floor(d));
+    let max = |x: f64, y: f64| if x > y { x } else { y };
+    let h3 = max(max(e3, e2 / 2.0), max(e1 / 3.0, e0 / 4.0));
+    let h2 = max(
+        max(e2, (e3 + e1) / 2.0),
+        max(max((2.0 * e3 + e0) / 3.0, 2.0 * e1 / 3.0), e0 / 2.0),
+    );
+    let h1 = max(
+        max(e1, (e2 + e0) / 2.0),
+        max((e3 + 2.0 * e0) / 3.0, 3.0 * e0 / 4.0),
+    );
+    [
+        pow2_floor(h3),
+        pow2_floor(h2),
+        pow2_floor(h1),
+        pow2_floor(e0),
+    ]
+}
+
+/// `2^⌊h⌋` (0 for `h = −∞`), with `⌊h⌋` taken without a library call: the truncation, one
+/// less for a negative fraction.
+#[inline(always)]
+fn pow2_floor(h: f64) -> f64 {
+    if h.is_finite() {
+        let t = h as i32;
+        pow2(if f64::from(t) > h { t - 1 } else { t })
+    } else {
+        0.0
     }
-    out
+}
+
+/// `⌊log₂|x|⌋` as a float (`−∞` for zero): the exponent field for a normal `x`.
+#[inline(always)]
+fn log2_floor(x: f64) -> f64 {
+    if x.is_normal() {
+        f64::from(((x.to_bits() >> 52) & 0x7ff) as i32 - 1023)
+    } else {
+        exponent(x).map_or(f64::NEG_INFINITY, f64::from)
+    }
 }
 
 /// Where to split a polynomial (given by its coefficient exponents, highest degree first) whose roots form two groups more than
@@ -162,37 +185,37 @@ mod tests {
     fn envelope_is_the_polygon_height() {
         // x⁴ + 2⁻¹⁰⁰·x + 2⁻⁴⁰: the linear term lies far below the chord from x⁴ to the
         // constant, whose height over degree 1 is −30.
-        let c = [1.0, 0.0, 0.0, 2f64.powi(-100), 2f64.powi(-40)];
+        let env = monic_quartic_envelope(0.0, 0.0, 2f64.powi(-100), 2f64.powi(-40));
         assert_eq!(
-            envelope(&c),
+            env,
             [
-                1.0,
                 2f64.powi(-10),
                 2f64.powi(-20),
                 2f64.powi(-30),
                 2f64.powi(-40)
             ]
         );
-        // On the polygon, a coefficient is its own envelope (to a power of two).
-        assert_eq!(envelope(&[1.0, -3.0, 2.0]), [1.0, 2.0, 2.0]);
-        // Degrees outside the span of the non-zero coefficients get 0.
-        assert_eq!(envelope(&[0.0, 1.0, 0.0, 4.0]), [0.0, 1.0, 2.0, 4.0]);
+        // (x − 1)(x − 2)(x − 3)(x − 4): every coefficient is on the polygon, its own envelope
+        // (to a power of two).
+        let env = monic_quartic_envelope(-10.0, 35.0, -50.0, 24.0);
+        assert_eq!(env, [8.0, 32.0, 32.0, 16.0]);
+        // A negative fractional height rounds down: x⁴ + 2⁻³ has height −1.5 over degree 2.
+        assert_eq!(monic_quartic_envelope(0.0, 0.0, 0.0, 0.125)[1], 0.25);
     }
 
     #[test]
     fn envelope_bounds_the_largest_term() {
-        // 2^h_k·|x|^k ≤ max_j |c_j|·|x|^j at every x, for a polygon with interior vertices.
-        let c = [3e-5, 0.0, 7e2, -1e-200, -1.5e-2];
-        let env = envelope(&c);
+        // 2^h_k·|x|^k ≤ max_j |c_j|·|x|^j at every x, for a polygon with interior vertices
+        // (x⁴ − 1.8e7·x² − 1.9e-196·x + 283, the monic form of issue 21's reproducer).
+        let c = [1.0, 0.0, -1.8e7, -1.9e-196, 283.0];
+        let env = monic_quartic_envelope(c[1], c[2], c[3], c[4]);
         for x in [1e-8_f64, 1e-4, 3e-3, 0.1, 1.0, 42.0, 4e3, 1e7] {
             let largest = (0..5)
                 .map(|i| c[i].abs() * x.powi(4 - i as i32))
                 .fold(0.0, f64::max);
             for (i, e) in env.iter().enumerate() {
-                assert!(
-                    e * x.powi(4 - i as i32) <= largest * (1.0 + 1e-12),
-                    "x = {x}, i = {i}"
-                );
+                let term = e * x.powi(3 - i as i32);
+                assert!(term <= largest * (1.0 + 1e-12), "x = {x}, degree {}", 3 - i);
             }
         }
     }

@@ -49,7 +49,7 @@
 
 use super::cubic::{merge, push_quadratic_roots, split_or_scale};
 use super::horner::{RootBuf, polish_roots};
-use super::newton_polygon::envelope;
+use super::newton_polygon::monic_quartic_envelope;
 use super::{RealRoots, solve_cubic};
 
 /// √ε (ε = 2⁻⁵²): the 2024 Remark's threshold factor for the `d₂ ≈ 0` test.
@@ -148,7 +148,7 @@ struct Monic {
     c: f64,
     d: f64,
     /// For `a, b, c, d`: the height of the quartic's Newton polygon at that coefficient's
-    /// degree ([`envelope`]). An error in a coefficient that is small next to it is small
+    /// degree ([`monic_quartic_envelope`]). An error in a coefficient that is small next to it is small
     /// next to the quartic's largest term at every `x`, so it never counts as large, however
     /// tiny the coefficient itself (see [`Monic::rel`]).
     envelope: [f64; 4],
@@ -156,13 +156,12 @@ struct Monic {
 
 impl Monic {
     fn new(a: f64, b: f64, c: f64, d: f64) -> Self {
-        let [_, ea, eb, ec, ed] = envelope(&[1.0, a, b, c, d]);
         Self {
             a,
             b,
             c,
             d,
-            envelope: [ea, eb, ec, ed],
+            envelope: monic_quartic_envelope(a, b, c, d),
         }
     }
 
@@ -181,7 +180,13 @@ impl Monic {
     /// which a coefficient's error cannot matter at any `x`: measured against it, dropping
     /// `1e-207·x` costs nothing, and getting `1e-12` wrong costs all.
     fn rel(&self, k: usize, r: f64, size: f64) -> f64 {
-        let size = size.max(self.envelope[k]);
+        // A plain comparison: f64::max's NaN handling costs instructions in this hot loop, and
+        // a NaN size gives the envelope here just as it would there.
+        let size = if size > self.envelope[k] {
+            size
+        } else {
+            self.envelope[k]
+        };
         if size > 0.0 { r.abs() / size } else { 0.0 }
     }
 }
