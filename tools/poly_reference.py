@@ -16,7 +16,14 @@ pair of roots falls in between, continuously. Tests assert |error| ≤ K·floor.
 Usage:  pip install python-flint mpmath
         python3 tools/poly_reference.py [--out tests/data/poly_cases.txt] [--seed 2024]
                                         [--jobs 2] [--scale 1.0]
-Generation takes about seven minutes on two cores; it is not run in CI (the output is committed).
+Generation takes a few minutes on two cores; it is not run in CI (the output is committed).
+
+A randomized search over one generator writes a separate file, which the reference test checks
+when POLY_CASES names it (the committed file is checked otherwise):
+
+        python3 tools/poly_reference.py --only quartic-tiny-coeffs --count 100000 --seed 7 \
+            --out /tmp/tiny.txt
+        POLY_CASES=/tmp/tiny.txt cargo test --release --test poly_reference
 """
 
 import argparse
@@ -508,6 +515,39 @@ def quartic_random(rng):
     return [signed_mag(rng, -30, 30) for _ in range(5)]
 
 
+def quartic_tiny(rng):
+    """Random quartics with some coefficients scaled by 10^-k for k up to 330 (so some are
+    subnormal or underflow to ±0) and some exactly ±0: a tiny odd-degree coefficient next to
+    an even quartic is where a coefficient-relative backward error went wrong (issue 21)."""
+    c = [signed_mag(rng, -3, 3) for _ in range(5)]
+    tiny = []
+    for i in range(5):
+        u = rng.random()
+        interior = 1 <= i <= 3
+        if u < (0.35 if interior else 0.12):
+            tiny.append(i)
+        elif interior and u < 0.5:
+            c[i] = rng.choice([0.0, -0.0])
+    if not any(1 <= i <= 3 for i in tiny):
+        tiny.append(rng.choice([1, 3, 3, 2]))
+    for i in tiny:
+        c[i] *= 10.0 ** -rng.uniform(8, 330)
+    if c[0] == 0.0:
+        c[0] = signed_mag(rng, -3, 3)
+    return c
+
+
+def regression_cases():
+    """Inputs that once gave wrong roots, with the issue that reported them."""
+    return [
+        # issue 21 item 4: tiny odd-degree coefficients next to an even quartic.
+        ("regression", "issue21-tiny-x", [-5.18e-05, 0.0, 934.0, 1e-200, -0.01466]),
+        ("regression", "issue21-tiny-x-x2", [0.5, 0.0, 2e-120, 1.3e-308, -4e-7]),
+        ("regression", "issue21-tiny-x3", [-5.18e-05, 1e-200, 934.0, 0.0, -0.01466]),
+        ("regression", "issue21-tiny-x3-x", [-5.18e-05, 3e-190, 934.0, -2e-200, -0.01466]),
+    ]
+
+
 def clustered_roots(rng, n):
     """n roots around a random centre, some clustered (relative gaps 1e-8…1e-1), some in
     complex pairs close to the real axis."""
@@ -544,14 +584,17 @@ GENERATORS = {
     "cubic-clustered": (cubic_clustered, 2000),
     "quartic-random-coeffs": (quartic_random, 2000),
     "quartic-clustered": (quartic_clustered, 2000),
+    "quartic-tiny-coeffs": (quartic_tiny, 3000),
 }
 
 
-def random_cases(seed, scale):
+def random_cases(seed, scale, only=None, count=None):
     out = []
     for k, (cat, (gen, n)) in enumerate(GENERATORS.items()):
+        if only is not None and cat != only:
+            continue
         rng = random.Random(seed * 1000 + k)
-        for i in range(max(1, int(n * scale))):
+        for i in range(count if count is not None else max(1, int(n * scale))):
             out.append((cat, str(i), gen(rng)))
     return out
 
@@ -567,8 +610,20 @@ def main():
     ap.add_argument("--seed", type=int, default=2024)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--scale", type=float, default=1.0, help="fraction of the random cases")
+    ap.add_argument("--only", choices=sorted(GENERATORS), help="one generator's cases only")
+    ap.add_argument("--count", type=int, help="how many cases of --only's generator")
     args = ap.parse_args()
-    cases = published_cases() + classical_cases() + random_cases(args.seed, args.scale)
+    if args.count is not None and args.only is None:
+        ap.error("--count needs --only")
+    if args.only is not None:
+        cases = random_cases(args.seed, args.scale, args.only, args.count)
+    else:
+        cases = (
+            published_cases()
+            + classical_cases()
+            + regression_cases()
+            + random_cases(args.seed, args.scale)
+        )
     with multiprocessing.Pool(args.jobs) as pool:
         lines = pool.map(work, cases, chunksize=500)
     with open(args.out, "w") as f:

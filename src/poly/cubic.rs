@@ -2,16 +2,9 @@
 //! stable quadratic, and a polishing step; plus the scaling helpers the quartic shares.
 
 use super::horner::{RootBuf, eval_compensated, pair_within_rounding, polish_roots};
+use super::newton_polygon::split_point;
 use super::scaling::{exponent, scale};
 use super::{RealRoots, real_roots, solve_quadratic};
-
-/// How far apart (in bits of magnitude) two groups of roots must be before the polynomial is
-/// split into two lower-degree ones, one per group.
-///
-/// Dropping the coefficients of the other group changes each kept root's residual by at most
-/// about `2^-SPLIT_BITS` relative, far below one rounding (2⁻⁵³), so the split costs no accuracy;
-/// it is what keeps coefficients like `1e-300·x⁴ + x³ + …` from underflowing once rescaled.
-const SPLIT_BITS: f64 = 64.0;
 
 /// A backward-error allowance, in units of ε/2, under which a complex pair `u ± iv` is taken as
 /// the real double root `u` (see [`pair_within_rounding`]): a few roundings of the
@@ -251,62 +244,6 @@ fn scaled<const N: usize>(coeffs: &[f64; N], en: i32, s: i32) -> [f64; N] {
     out
 }
 
-/// Where to split a polynomial (given by its coefficient exponents, highest degree first) whose roots form two groups more than
-/// [`SPLIT_BITS`] apart in magnitude, as read off its Newton polygon: the index `i` such that
-/// `coeffs[..=i]` has the large roots and `coeffs[i..]` the small ones.
-///
-/// The upper convex hull of the points `(degree k, log₂|c_k|)` has one edge per group of roots
-/// of similar magnitude; the slope of an edge is the log of that magnitude. A vertex where the
-/// slope jumps by more than `SPLIT_BITS` separates two groups, and at it each group's
-/// polynomial is the part of the coefficients on its side, up to terms smaller than
-/// `2^-SPLIT_BITS` relative.
-fn split_point(exps: &[Option<i32>]) -> Option<usize> {
-    let n = exps.len().checked_sub(1)?;
-    // Fast path: an edge slope is at most the exponent range, so slopes can differ by more
-    // than SPLIT_BITS only if the exponents span more than SPLIT_BITS / 2.
-    let (mut lo, mut hi) = (i32::MAX, i32::MIN);
-    for &e in exps.iter().flatten() {
-        lo = lo.min(e);
-        hi = hi.max(e);
-    }
-    if f64::from(hi.saturating_sub(lo)) <= SPLIT_BITS / 2.0 {
-        return None;
-    }
-    // Hull vertices as (degree, exponent), degree ascending (array index n − k).
-    let mut hull: [(usize, f64); 5] = [(0, 0.0); 5];
-    let mut len = 0;
-    for k in 0..=n {
-        let Some(e) = exps[n - k] else {
-            continue;
-        };
-        let pt = (k, e as f64);
-        // Keep the hull upper-convex: drop the last vertex while it lies on or below the chord.
-        while len >= 2 {
-            let (k1, e1) = hull[len - 2];
-            let (k2, e2) = hull[len - 1];
-            let cross = (k2 - k1) as f64 * (pt.1 - e1) - (e2 - e1) * (pt.0 - k1) as f64;
-            if cross >= 0.0 {
-                len -= 1;
-            } else {
-                break;
-            }
-        }
-        if len < hull.len() {
-            hull[len] = pt;
-            len += 1;
-        }
-    }
-    for w in hull[..len].windows(3) {
-        let [(k0, e0), (k1, e1), (k2, e2)] = [w[0], w[1], w[2]];
-        let small = (e0 - e1) / (k1 - k0) as f64;
-        let large = (e1 - e2) / (k2 - k1) as f64;
-        if large - small > SPLIT_BITS {
-            return Some(n - k1);
-        }
-    }
-    None
-}
-
 /// The union of two root sets, sorted.
 pub(super) fn merge(x: RealRoots, y: RealRoots) -> RealRoots {
     let mut out = x;
@@ -320,18 +257,6 @@ pub(super) fn merge(x: RealRoots, y: RealRoots) -> RealRoots {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn split_point_finds_separated_groups() {
-        // 1e-300·x⁴ + x³ + x² + x + 1: one root near −1e300, three of order one.
-        assert_eq!(
-            split_point(&exponents(&[1e-300, 1.0, 1.0, 1.0, 1.0])),
-            Some(1)
-        );
-        assert_eq!(split_point(&exponents(&[1.0, -6.0, 11.0, -6.0])), None);
-        // Roots 1e-200 and 1e200.
-        assert_eq!(split_point(&exponents(&[1.0, -1e200, 1.0])), Some(1));
-    }
 
     #[test]
     fn root_exponent_bounds_the_roots() {

@@ -21,6 +21,7 @@
 mod bracketed;
 mod cubic;
 mod horner;
+mod newton_polygon;
 mod quadratic;
 mod quartic;
 mod roots;

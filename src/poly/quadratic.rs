@@ -6,16 +6,18 @@ use super::scaling::{exponent, scale};
 /// The real root of `b·x + c = 0`.
 ///
 /// A constant polynomial (`b = 0`) has no isolated root; it gives an empty result even when
-/// `c = 0` (then every `x` is a root, as `numpy.roots` also reports nothing).
+/// `c = 0` (then every `x` is a root, as `numpy.roots` also reports nothing). A non-finite
+/// coefficient gives no root, as for every solver.
 ///
 /// ```
 /// use ballcollide::poly::solve_linear;
 /// assert_eq!(solve_linear(2.0, -3.0).as_slice(), &[1.5]);
 /// assert!(solve_linear(0.0, 1.0).is_empty());
+/// assert!(solve_linear(-1.0, f64::INFINITY).is_empty());
 /// ```
 pub fn solve_linear(b: f64, c: f64) -> RealRoots {
     let mut roots = RealRoots::empty();
-    if b != 0.0 {
+    if b != 0.0 && b.is_finite() && c.is_finite() {
         roots.push(-c / b);
     }
     roots
@@ -94,19 +96,15 @@ pub fn solve_quadratic(a: f64, b: f64, c: f64) -> RealRoots {
         return roots;
     }
     let q = -0.5 * (b1 + disc.sqrt().copysign(b1));
-    // x₁ = q/a and x₂ = c/q. A scaled coefficient that fell into the subnormal range has lost
-    // bits (roots far apart in magnitude): divide by the original one then, and apply the
-    // scaling to the quotient instead (q = q₁·2^(ek−s) in original units).
-    roots.push(if a1.is_normal() {
-        scale(q / a1, s)
-    } else {
-        scale(q / a, ek - s)
-    });
-    roots.push(if c1.is_normal() {
-        scale(c1 / q, s)
-    } else {
-        scale(c / q, s - ek)
-    });
+    // x₁ = q₁/a₁·2^s and x₂ = c₁/q₁·2^s. When the roots are far apart in magnitude, a₁ and c₁
+    // are tiny next to b₁ and may be subnormal (so may a and c themselves): a quotient by or of
+    // a subnormal loses bits or overflows although the root is an ordinary float (1.6e-320·x²
+    // + 8.8e-14·x − 1e-323 has a root at −5.7e306). So a and c enter through their mantissas
+    // in [1, 2) (exact), and the powers of two are applied once, to the quotients:
+    // a₁ = ma·2^(ea+2s−ek) and c₁ = mc·2^(ec−ek).
+    let (ma, mc) = (scale(a, -ea), scale(c, -ec));
+    roots.push(scale(q / ma, ek - s - ea));
+    roots.push(scale(mc / q, ec + s - ek));
     roots.sort();
     roots
 }
@@ -148,6 +146,34 @@ mod tests {
         let h = 2f64.powi(-29);
         let r = solve_quadratic(1.0, 2.0 + h, 1.0 + h);
         assert_eq!(r.as_slice(), &[-(1.0 + h), -1.0]);
+    }
+
+    #[test]
+    fn subnormal_leading_or_constant_coefficients_keep_both_roots() {
+        // Found by the fuzz target `poly`: the large root overflowed to ±∞ (a quotient by a
+        // subnormal a) and the small one lost bits (c/q formed in the subnormal range).
+        // Expected: the nearest floats to the exact roots (mpmath, 80 digits).
+        let cases = [
+            (
+                [2.14964753e-315, -9.313069759778103e-10, 2.53e-321],
+                [2.716200105827e-312, 4.33237059909601e305],
+            ),
+            (
+                [1.553e-320, 8.837381374653466e-14, -1e-323],
+                [-5.691078280515176e306, 1.11812679547425e-310],
+            ),
+            (
+                [3.6455701910074625e-304, 0.0859375, 5e-324],
+                [-2.357312998992099e302, -6e-323],
+            ),
+        ];
+        for ([a, b, c], want) in cases {
+            assert_eq!(
+                solve_quadratic(a, b, c).as_slice(),
+                &want,
+                "{a:e} {b:e} {c:e}"
+            );
+        }
     }
 
     #[test]

@@ -49,6 +49,7 @@
 
 use super::cubic::{merge, push_quadratic_roots, split_or_scale};
 use super::horner::{RootBuf, polish_roots};
+use super::newton_polygon::monic_quartic_envelope;
 use super::{RealRoots, solve_cubic};
 
 /// √ε (ε = 2⁻⁵²): the 2024 Remark's threshold factor for the `d₂ ≈ 0` test.
@@ -99,35 +100,38 @@ pub fn solve_quartic(a: f64, b: f64, c: f64, d: f64, e: f64) -> RealRoots {
         return merge(solve_cubic(a, b, c, d), RealRoots::from_unsorted(&[0.0]));
     }
     if b == 0.0 && d == 0.0 {
-        return biquadratic(a, c, e);
+        return split_or_scale([a, 0.0, c, 0.0, e], biquadratic_scaled);
     }
     split_or_scale([a, b, c, d, e], quartic_scaled)
 }
 
-/// `a·x⁴ + c·x² + e` through the quadratic `a·z² + c·z + e` in `z = x²`.
-fn biquadratic(a: f64, c: f64, e: f64) -> RealRoots {
-    let q = [a, c, e];
+/// `a·x⁴ + c·x² + e`, scaled as by [`quartic_scaled`], through the quadratic
+/// `a·z² + c·z + e` in `z = x²`.
+///
+/// Scaled first, like every other quartic: in the original variable `z = x²` is the square
+/// of a root, which overflows for roots beyond 1.3e154 and loses bits in the subnormal range
+/// for roots below 1.5e-154, although the roots themselves are ordinary floats.
+fn biquadratic_scaled(p: [f64; 5]) -> RootBuf {
+    let [a, _, c, _, e] = p;
     let mut z = RootBuf::default();
-    push_quadratic_roots(&q, a, c, e, &mut z);
-    let mut out = [0.0; 4];
-    let mut n = 0;
+    push_quadratic_roots(&[a, c, e], a, c, e, &mut z);
+    let mut roots = RootBuf::default();
     for &zi in z.as_mut_slice().iter() {
-        if zi >= 0.0 && n + 2 <= out.len() {
+        if zi >= 0.0 {
             let r = zi.sqrt();
-            out[n] = -r;
-            out[n + 1] = r;
-            n += 2;
+            roots.push(-r);
+            roots.push(r);
         }
     }
-    RealRoots::from_unsorted(&out[..n])
+    roots
 }
 
 /// The roots, in the scaled variable, of a quartic `p` scaled as by [`scaled`]
 /// (`p[0] ∈ [1, 2)`, all `|p[k]| < 2`, `p[4] ≠ 0`).
 fn quartic_scaled(p: [f64; 5]) -> RootBuf {
     let lead = p[0];
-    let (a, b, c, d) = (p[1] / lead, p[2] / lead, p[3] / lead, p[4] / lead);
-    let f = polish_factors(a, b, c, d, factor(a, b, c, d));
+    let q = Monic::new(p[1] / lead, p[2] / lead, p[3] / lead, p[4] / lead);
+    let f = polish_factors(q, factor(q));
     let mut roots = RootBuf::default();
     push_quadratic_roots(&p, 1.0, f[0], f[1], &mut roots);
     push_quadratic_roots(&p, 1.0, f[2], f[3], &mut roots);
@@ -135,9 +139,62 @@ fn quartic_scaled(p: [f64; 5]) -> RootBuf {
     roots
 }
 
+/// A monic quartic `x⁴ + a·x³ + b·x² + c·x + d`, with the yardsticks its backward errors are
+/// measured against.
+#[derive(Clone, Copy, Debug)]
+struct Monic {
+    a: f64,
+    b: f64,
+    c: f64,
+    d: f64,
+    /// For `a, b, c, d`: the height of the quartic's Newton polygon at that coefficient's
+    /// degree ([`monic_quartic_envelope`]). An error in a coefficient that is small next to it is small
+    /// next to the quartic's largest term at every `x`, so it never counts as large, however
+    /// tiny the coefficient itself (see [`Monic::rel`]).
+    envelope: [f64; 4],
+}
+
+impl Monic {
+    fn new(a: f64, b: f64, c: f64, d: f64) -> Self {
+        Self {
+            a,
+            b,
+            c,
+            d,
+            envelope: monic_quartic_envelope(a, b, c, d),
+        }
+    }
+
+    /// The error `r` of coefficient `k` (0 for `a` … 3 for `d`) relative to the size of the
+    /// terms it was formed from, `size`, or to the coefficient's envelope if that is larger
+    /// (0 when both are zero).
+    ///
+    /// The paper measures each error relative to its coefficient (absolutely for a zero one);
+    /// that breaks down when a coefficient is tiny next to its terms (a coefficient `1e-57`
+    /// next to terms of order one makes every rounding look like a relative error of `1e40`).
+    /// Relative to the terms, the measure is the componentwise backward error, which rounding
+    /// can achieve; but it still breaks down when a coefficient and its terms are all tiny
+    /// next to the rest of the quartic (`x⁴ − 1.07x² + 1e-207·x + 1e-12`): the factorisation
+    /// that drops the `x` term has a relative error of 1 there, as large as one that gets the
+    /// constant term wrong, and the wrong one may be kept. The envelope is the size below
+    /// which a coefficient's error cannot matter at any `x`: measured against it, dropping
+    /// `1e-207·x` costs nothing, and getting `1e-12` wrong costs all.
+    fn rel(&self, k: usize, r: f64, size: f64) -> f64 {
+        // A plain comparison: f64::max's NaN handling costs instructions in this hot loop, and
+        // a NaN size gives the envelope here just as it would there.
+        let size = if size > self.envelope[k] {
+            size
+        } else {
+            self.envelope[k]
+        };
+        if size > 0.0 { r.abs() / size } else { 0.0 }
+    }
+}
+
 /// Two real quadratic factors `(x² + α₁x + β₁)(x² + α₂x + β₂)` of the monic quartic, as
 /// `[α₁, β₁, α₂, β₂]`: the heart of Algorithm 1010.
-fn factor(a: f64, b: f64, c: f64, d: f64) -> [f64; 4] {
+fn factor(q: Monic) -> [f64; 4] {
+    let Monic { a, b, c, d, .. } = q;
     let phi = resolvent_dominant_root(a, b, c, d);
     let l1 = a / 2.0;
     let l3 = b / 6.0 + phi / 2.0;
@@ -149,7 +206,7 @@ fn factor(a: f64, b: f64, c: f64, d: f64) -> [f64; 4] {
     let d_minus_l3sq = d - l3 * l3;
     let mut best: Option<(f64, f64, f64)> = None;
     let mut consider = |d2: f64, l2: f64| {
-        let err = ldlt_error(b, c, d, d2, l1, l2, l3);
+        let err = ldlt_error(q, d2, l1, l2, l3);
         if err.is_finite() && best.is_none_or(|(e, _, _)| err < e) {
             best = Some((err, d2, l2));
         }
@@ -168,23 +225,28 @@ fn factor(a: f64, b: f64, c: f64, d: f64) -> [f64; 4] {
 
     // The main branch (d₂ ≠ 0): real factors for d₂ < 0, complex-conjugate ones for d₂ > 0.
     let main: Option<(Factors, f64)> = if d2 < 0.0 {
-        let f = real_branch(a, b, c, d, l1, l2, l3, (-d2).sqrt());
-        Some((Factors::Real(f), coefficient_error(a, b, c, d, f)))
+        let f = real_branch(q, l1, l2, l3, (-d2).sqrt());
+        Some((Factors::Real(f), coefficient_error(q, f)))
     } else if d2 > 0.0 {
         let g = d2.sqrt();
         let f = Factors::Complex {
             alpha: (l1, g),
             beta: (l3, g * l2),
         };
-        let err = f.error(a, b, c, d);
+        let err = f.error(q);
         Some((f, err))
     } else {
         None
     };
 
     // The d₂ ≈ 0 branch, with the Remarks' switching test; it is used when its backward error
-    // is smaller than the main branch's.
-    let near_zero = d2.abs() <= SQRT_EPS * ((2.0 * b / 3.0).abs() + phi.abs() + l1 * l1);
+    // is smaller than the main branch's. d₂ is a summand of b = d₂ + l₁² + 2l₃, so it is
+    // measured against b's envelope too: where the terms it is formed from are all far below
+    // the Newton polygon (a = b = c ≈ 0 next to d, say), d₂ is rounding noise — possibly a
+    // subnormal one that no relative threshold on those terms can recognise — however it
+    // compares with them.
+    let d2_scale = ((2.0 * b / 3.0).abs() + phi.abs() + l1 * l1).max(q.envelope[1]);
+    let near_zero = d2.abs() <= SQRT_EPS * d2_scale;
     let chosen = match main {
         Some((f, _)) if !near_zero => f,
         main => {
@@ -200,7 +262,7 @@ fn factor(a: f64, b: f64, c: f64, d: f64) -> [f64; 4] {
                 }
             };
             match main {
-                Some((f, err0)) if err0 <= alt.error(a, b, c, d) => f,
+                Some((f, err0)) if err0 <= alt.error(q) => f,
                 _ => alt,
             }
         }
@@ -219,10 +281,11 @@ enum Factors {
 
 impl Factors {
     /// Backward error with which the factors reproduce `a, b, c, d` (each coefficient's error
-    /// relative to the size of its terms, see [`term_rel`]).
-    fn error(self, a: f64, b: f64, c: f64, d: f64) -> f64 {
+    /// relative to the size of its terms, see [`Monic::rel`]).
+    fn error(self, q: Monic) -> f64 {
+        let Monic { a, b, c, d, .. } = q;
         match self {
-            Factors::Real(f) => coefficient_error(a, b, c, d, f),
+            Factors::Real(f) => coefficient_error(q, f),
             Factors::Complex {
                 alpha: (ar, ai),
                 beta: (br, bi),
@@ -230,13 +293,14 @@ impl Factors {
                 // (x² + αx + β)(x² + ᾱx + β̄) = x⁴ + 2Re α·x³ + (|α|² + 2Re β)·x²
                 //                                 + 2Re(α·β̄)·x + |β|².
                 let (m2, n2) = (ar * ar + ai * ai, br * br + bi * bi);
-                term_rel(2.0 * ar - a, 2.0 * ar.abs() + a.abs())
-                    + term_rel(m2 + 2.0 * br - b, m2 + 2.0 * br.abs() + b.abs())
-                    + term_rel(
+                q.rel(0, 2.0 * ar - a, 2.0 * ar.abs() + a.abs())
+                    + q.rel(1, m2 + 2.0 * br - b, m2 + 2.0 * br.abs() + b.abs())
+                    + q.rel(
+                        2,
                         2.0 * (ar * br + ai * bi) - c,
                         2.0 * ((ar * br).abs() + (ai * bi).abs()) + c.abs(),
                     )
-                    + term_rel(n2 - d, n2 + d.abs())
+                    + q.rel(3, n2 - d, n2 + d.abs())
             }
         }
     }
@@ -273,8 +337,8 @@ impl Factors {
 /// Case `d₂ < 0` (the paper's Case I): the real factors, with the smaller `|β|` recomputed from
 /// `β₁β₂ = d` and the smaller `|α|` from whichever of the three equations that involve it
 /// reproduces `a, b, c` best.
-#[allow(clippy::too_many_arguments)]
-fn real_branch(a: f64, b: f64, c: f64, d: f64, l1: f64, l2: f64, l3: f64, g: f64) -> [f64; 4] {
+fn real_branch(q: Monic, l1: f64, l2: f64, l3: f64, g: f64) -> [f64; 4] {
+    let Monic { a, b, c, d, .. } = q;
     let mut a1 = l1 + g;
     let mut a2 = l1 - g;
     let (b1, b2) = balance_product(l3 + g * l2, l3 - g * l2, d);
@@ -286,12 +350,14 @@ fn real_branch(a: f64, b: f64, c: f64, d: f64, l1: f64, l2: f64, l3: f64, g: f64
             for x in cands.into_iter().flatten() {
                 let f = set(x, base);
                 let [x1, y1, x2, y2] = f;
-                let err = term_rel(x1 + x2 - a, x1.abs() + x2.abs() + a.abs())
-                    + term_rel(
+                let err = q.rel(0, x1 + x2 - a, x1.abs() + x2.abs() + a.abs())
+                    + q.rel(
+                        1,
                         y1 + x1 * x2 + y2 - b,
                         y1.abs() + (x1 * x2).abs() + y2.abs() + b.abs(),
                     )
-                    + term_rel(
+                    + q.rel(
+                        2,
                         x1 * y2 + y1 * x2 - c,
                         (x1 * y2).abs() + (y1 * x2).abs() + c.abs(),
                     );
@@ -409,39 +475,31 @@ fn depressed_cubic_dominant_root(g: f64, h: f64) -> f64 {
 
 /// Backward error of an LDLᵀ candidate: how well `d₂ + l₁² + 2l₃`, `2d₂l₂ + 2l₁l₃` and
 /// `d₂l₂² + l₃²` reproduce `b`, `c`, `d` (eqs. 29–30 of the paper), each error relative to
-/// the size of its terms (see [`term_rel`]).
-fn ldlt_error(b: f64, c: f64, d: f64, d2: f64, l1: f64, l2: f64, l3: f64) -> f64 {
+/// the size of its terms (see [`Monic::rel`]).
+fn ldlt_error(q: Monic, d2: f64, l1: f64, l2: f64, l3: f64) -> f64 {
+    let Monic { b, c, d, .. } = q;
     let (t1, t2, t3) = (l1 * l1, 2.0 * d2 * l2, d2 * l2 * l2);
-    term_rel(
+    q.rel(
+        1,
         d2 + t1 + 2.0 * l3 - b,
         d2.abs() + t1 + 2.0 * l3.abs() + b.abs(),
-    ) + term_rel(
+    ) + q.rel(
+        2,
         t2 + 2.0 * l1 * l3 - c,
         t2.abs() + 2.0 * (l1 * l3).abs() + c.abs(),
-    ) + term_rel(t3 + l3 * l3 - d, t3.abs() + l3 * l3 + d.abs())
-}
-
-/// `|r| / size`: a residual relative to the magnitude of the terms it was formed from (0 when
-/// they are all zero).
-///
-/// The paper measures each error relative to its coefficient, and absolutely for a zero one;
-/// that breaks down when a coefficient is tiny next to its terms (a coefficient `1e-57` next
-/// to terms of order one makes every rounding look like a relative error of `1e40`, and then
-/// the wrong candidate is chosen and the Newton polishing stops at once). Relative to the
-/// terms, the measure is the componentwise backward error, which is what rounding can achieve.
-fn term_rel(r: f64, size: f64) -> f64 {
-    if size > 0.0 { r.abs() / size } else { 0.0 }
+    ) + q.rel(3, t3 + l3 * l3 - d, t3.abs() + l3 * l3 + d.abs())
 }
 
 /// Backward error with which real factors `[α₁, β₁, α₂, β₂]` reproduce the monic quartic's
 /// `a, b, c, d`: the sum of the residuals, each relative to the size of its terms.
-fn coefficient_error(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> f64 {
+fn coefficient_error(q: Monic, f: [f64; 4]) -> f64 {
+    let Monic { a, b, c, d, .. } = q;
     let [a1, b1, a2, b2] = f;
-    let r = residual(a, b, c, d, f);
-    term_rel(r[0], a1.abs() + a2.abs() + a.abs())
-        + term_rel(r[1], b1.abs() + (a1 * a2).abs() + b2.abs() + b.abs())
-        + term_rel(r[2], (a1 * b2).abs() + (b1 * a2).abs() + c.abs())
-        + term_rel(r[3], (b1 * b2).abs() + d.abs())
+    let r = residual(q, f);
+    q.rel(0, r[0], a1.abs() + a2.abs() + a.abs())
+        + q.rel(1, r[1], b1.abs() + (a1 * a2).abs() + b2.abs() + b.abs())
+        + q.rel(2, r[2], (a1 * b2).abs() + (b1 * a2).abs() + c.abs())
+        + q.rel(3, r[3], (b1 * b2).abs() + d.abs())
 }
 
 /// The residuals of `α₁ + α₂ = a`, `β₁ + α₁α₂ + β₂ = b`, `α₁β₂ + β₁α₂ = c`, `β₁β₂ = d`.
@@ -450,7 +508,8 @@ fn coefficient_error(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> f64 {
 /// one rounding of the coefficients makes anyway, and the real roots are refined afterwards
 /// against the original quartic with a compensated residual. (Fused multiply-adds would be
 /// library calls on baseline x86-64, and this is the hot loop.)
-fn residual(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
+fn residual(q: Monic, f: [f64; 4]) -> [f64; 4] {
+    let Monic { a, b, c, d, .. } = q;
     let [a1, b1, a2, b2] = f;
     [
         (a1 - a) + a2,
@@ -463,10 +522,10 @@ fn residual(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
 /// Newton's method on the four equations tying the factors to the coefficients (sec. 2.3 of
 /// the paper), stopped when the backward error no longer decreases; the best iterate is kept.
 /// (The paper stops on the coefficient-relative error and keeps the smallest absolute one;
-/// both are measured here relative to the terms, see [`term_rel`].)
-fn polish_factors(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
+/// both are measured here relative to the terms, see [`Monic::rel`].)
+fn polish_factors(q: Monic, f: [f64; 4]) -> [f64; 4] {
     let mut x = f;
-    let mut err = coefficient_error(a, b, c, d, x);
+    let mut err = coefficient_error(q, x);
     let mut best = (err, x);
     // Already at rounding level (each residual about an ulp of its terms): a Newton step
     // could not do better, only confirm it.
@@ -474,7 +533,7 @@ fn polish_factors(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
         return x;
     }
     for _ in 0..20 {
-        let r = residual(a, b, c, d, x);
+        let r = residual(q, x);
         let Some(step) = factor_newton_step(x, r) else {
             break;
         };
@@ -487,7 +546,7 @@ fn polish_factors(a: f64, b: f64, c: f64, d: f64, f: [f64; 4]) -> [f64; 4] {
         if !next.iter().all(|v| v.is_finite()) {
             break;
         }
-        let e = coefficient_error(a, b, c, d, next);
+        let e = coefficient_error(q, next);
         if e < best.0 {
             best = (e, next);
         }
@@ -573,12 +632,8 @@ mod tests {
     #[test]
     fn factor_newton_converges_quadratically() {
         // (x² − 3x + 2)(x² + x + 5) = x⁴ − 2x³ + 4x² − 13x + 10, from a perturbed start.
-        let (a, b, c, d) = (-2.0, 4.0, -13.0, 10.0);
         let f = polish_factors(
-            a,
-            b,
-            c,
-            d,
+            Monic::new(-2.0, 4.0, -13.0, 10.0),
             [-3.0 + 1e-3, 2.0 - 1e-3, 1.0 + 2e-3, 5.0 + 1e-3],
         );
         for (x, y) in f.iter().zip([-3.0, 2.0, 1.0, 5.0]) {
@@ -626,7 +681,8 @@ mod tests {
             ));
         }
         // Remark 2024: x⁴ − 11x² − 46 (through the general path too, not only as biquadratic).
-        let f = polish_factors(0.0, -11.0, 0.0, -46.0, factor(0.0, -11.0, 0.0, -46.0));
+        let q = Monic::new(0.0, -11.0, 0.0, -46.0);
+        let f = polish_factors(q, factor(q));
         let mut roots = RootBuf::default();
         let p = [1.0, 0.0, -11.0, 0.0, -46.0];
         push_quadratic_roots(&p, 1.0, f[0], f[1], &mut roots);

@@ -42,7 +42,7 @@ impl RealRoots {
     }
 
     /// Roots from a slice of at most four values, sorted ascending (NaN values are dropped:
-    /// they are never roots).
+    /// they are never roots; `−0.0` becomes `+0.0`).
     ///
     /// Values beyond the fourth are ignored.
     ///
@@ -50,6 +50,8 @@ impl RealRoots {
     /// use ballcollide::poly::RealRoots;
     /// let r = RealRoots::from_unsorted(&[3.0, -1.0, 2.0]);
     /// assert_eq!(r.as_slice(), &[-1.0, 2.0, 3.0]);
+    /// let z = RealRoots::from_unsorted(&[-0.0]);
+    /// assert!(z[0].is_sign_positive());
     /// ```
     pub fn from_unsorted(values: &[f64]) -> Self {
         let mut roots = Self::empty();
@@ -61,11 +63,13 @@ impl RealRoots {
     }
 
     /// Appends one root (kept unsorted until [`RealRoots::sort`]); NaN is ignored and so is a
-    /// fifth value.
+    /// fifth value. A zero root is stored as `+0.0`: its sign means nothing, and keeping it
+    /// would make the roots' bits depend on the signs of zero coefficients (`−b/a` with
+    /// `b = ±0`).
     pub(crate) fn push(&mut self, x: f64) {
         let n = self.len as usize;
         if n < Self::CAPACITY && !x.is_nan() {
-            self.values[n] = x;
+            self.values[n] = if x == 0.0 { 0.0 } else { x };
             self.len += 1;
         }
     }

@@ -1,0 +1,295 @@
+//! Input decoders for the fuzz targets, and the invariants they check (shared with the
+//! property tests in `tests/invariants.rs`).
+//!
+//! libFuzzer's bytes are read as numbers over the whole float range: exponents from −1074 to
+//! 1023, both zeros, small integers and dyadic fractions (which make contacts likely), numbers
+//! of a table's size with full mantissas, all multiplied by one power of two per case (so that
+//! a whole configuration sits at 2^±500, say).
+
+use arbitrary::{Result, Unstructured};
+use ballcollide::poly::scaling::scale;
+
+#[path = "../../tests/support/exact.rs"]
+mod exact;
+#[path = "../../tests/support/invariants.rs"]
+pub mod invariants;
+
+use invariants::{BallInput, PairCase, SceneCase, Shared};
+
+/// Inputs that start with this are read literally (see [`Raw`]) instead of decoded: the form of
+/// the regression corpus, which stays the same input whatever the decoders become.
+pub const RAW: &[u8] = b"raw:";
+
+/// A literal input after [`RAW`]: little-endian `f64`, `i32` and `u32` values in the order the
+/// case's fields are listed (`fuzz/raw_input.py` writes them).
+pub struct Raw<'a>(&'a [u8]);
+
+impl<'a> Raw<'a> {
+    /// The literal reader, if `data` starts with [`RAW`].
+    pub fn of(data: &'a [u8]) -> Option<Self> {
+        data.strip_prefix(RAW).map(Self)
+    }
+
+    fn take<const N: usize>(&mut self) -> Option<[u8; N]> {
+        let (head, rest) = self.0.split_first_chunk::<N>()?;
+        self.0 = rest;
+        Some(*head)
+    }
+
+    /// The next `f64`.
+    pub fn f64(&mut self) -> Option<f64> {
+        self.take().map(f64::from_le_bytes)
+    }
+
+    /// The next `i32`.
+    pub fn i32(&mut self) -> Option<i32> {
+        self.take().map(i32::from_le_bytes)
+    }
+
+    /// The next `u32`, as a count (at most `max`).
+    pub fn count(&mut self, max: usize) -> Option<usize> {
+        let n = usize::try_from(u32::from_le_bytes(self.take()?)).ok()?;
+        (n <= max).then_some(n)
+    }
+
+    fn ball(&mut self) -> Option<BallInput> {
+        Some([
+            self.f64()?,
+            self.f64()?,
+            self.f64()?,
+            self.f64()?,
+            self.f64()?,
+        ])
+    }
+
+    fn pair(&mut self) -> Option<PairCase> {
+        Some(PairCase {
+            a: self.ball()?,
+            b: self.ball()?,
+            radius: self.f64()?,
+            t_max: self.f64()?,
+        })
+    }
+
+    /// A pair: ball A (x, y, vx, vy, friction), ball B, radius, t_max; then k, m.
+    pub fn pair_case(mut self) -> Option<(PairCase, i32, i32)> {
+        Some((self.pair()?, self.i32()?, self.i32()?))
+    }
+
+    /// A batch: the number of pairs, each pair as in [`Raw::pair_case`] without k and m, then
+    /// four bytes (non-zero: shared).
+    pub fn batch_case(mut self) -> Option<(Vec<PairCase>, Shared)> {
+        let n = self.count(1000)?;
+        let cases = (0..n).map(|_| self.pair()).collect::<Option<Vec<_>>>()?;
+        let s = self.take::<4>()?;
+        Some((cases, s.map(|b| b != 0)))
+    }
+
+    /// A scene: the number of balls, each ball and its radius, t_max, k.
+    pub fn scene_case(mut self) -> Option<(SceneCase, i32)> {
+        let n = self.count(1000)?;
+        let (mut balls, mut radii) = (Vec::new(), Vec::new());
+        for _ in 0..n {
+            balls.push(self.ball()?);
+            radii.push(self.f64()?);
+        }
+        let t_max = self.f64()?;
+        Some((
+            SceneCase {
+                balls,
+                radii,
+                t_max,
+            },
+            self.i32()?,
+        ))
+    }
+
+    /// A polynomial: the number of coefficients, the coefficients, k, m.
+    pub fn poly_case(mut self) -> Option<(Vec<f64>, i32, i32)> {
+        let n = self.count(16)?;
+        let c = (0..n).map(|_| self.f64()).collect::<Option<Vec<_>>>()?;
+        Some((c, self.i32()?, self.i32()?))
+    }
+}
+
+/// Any finite float, most often far from 1: a random exponent in −1074..=1023 and mantissa, or
+/// ±0, or a small integer.
+pub fn wide(u: &mut Unstructured) -> Result<f64> {
+    let kind: u8 = u.arbitrary()?;
+    Ok(match kind % 8 {
+        0 => 0.0,
+        1 => -0.0,
+        2 => f64::from(u.arbitrary::<i8>()?),
+        _ => {
+            let e: i32 = u.int_in_range(-1074..=1023)?;
+            let mantissa = u.arbitrary::<u64>()? >> 12;
+            let unit = f64::from_bits((1023u64 << 52) | mantissa); // in [1, 2)
+            let x = scale(unit, e);
+            if u.arbitrary::<bool>()? { -x } else { x }
+        }
+    })
+}
+
+/// A small dyadic number `i/2^j` (`|i| < 2^15`, `0 ≤ j ≤ 8`), sometimes ±0.
+pub fn small(u: &mut Unstructured) -> Result<f64> {
+    let kind: u8 = u.arbitrary()?;
+    Ok(match kind % 16 {
+        0 => 0.0,
+        1 => -0.0,
+        _ => f64::from(u.arbitrary::<i16>()? / 2) / f64::from(1u16 << u.int_in_range(0..=8)?),
+    })
+}
+
+/// A number like a table's: a full 52-bit mantissa, magnitude from 1/16 to 4, either sign.
+pub fn table(u: &mut Unstructured) -> Result<f64> {
+    let mantissa = u.arbitrary::<u64>()? >> 12;
+    let x = scale(
+        f64::from_bits((1023u64 << 52) | mantissa),
+        u.int_in_range(-4..=1)?,
+    );
+    Ok(if u.arbitrary::<bool>()? { -x } else { x })
+}
+
+/// The power of two a case is scaled by: `2^0` half of the time, else any exponent.
+pub fn case_scale(u: &mut Unstructured) -> Result<i32> {
+    Ok(if u.arbitrary::<bool>()? {
+        0
+    } else {
+        u.int_in_range(-1074..=1023)?
+    })
+}
+
+/// A length-like number times `2^s`: [`small`] or [`table`], sometimes [`wide`] instead.
+fn length(u: &mut Unstructured, s: i32) -> Result<f64> {
+    Ok(match u.arbitrary::<u8>()? % 5 {
+        0 => wide(u)?,
+        1 | 2 => scale(table(u)?, s),
+        _ => scale(small(u)?, s),
+    })
+}
+
+/// A friction: 0, −0, a small one times `2^s` or times a further power of two (a ball that
+/// barely decelerates: friction 1e-32 on a table), or any non-negative float.
+fn friction(u: &mut Unstructured, s: i32) -> Result<f64> {
+    let kind: u8 = u.arbitrary()?;
+    Ok(match kind % 7 {
+        0 => 0.0,
+        1 => -0.0,
+        2 => scale(small(u)?.abs(), s),
+        3 => scale(small(u)?.abs(), s + u.int_in_range(-200..=40)?),
+        4 => scale(table(u)?.abs(), s),
+        _ => wide(u)?.abs(),
+    })
+}
+
+/// A ball whose numbers are scaled by `2^s`.
+pub fn ball(u: &mut Unstructured, s: i32) -> Result<BallInput> {
+    Ok([
+        length(u, s)?,
+        length(u, s)?,
+        length(u, s)?,
+        length(u, s)?,
+        friction(u, s)?,
+    ])
+}
+
+/// A contact distance: a small positive one times `2^s`, or any positive float.
+pub fn radius(u: &mut Unstructured, s: i32) -> Result<f64> {
+    let r = if u.ratio(1, 4)? {
+        wide(u)?.abs()
+    } else {
+        scale(small(u)?.abs(), s)
+    };
+    Ok(if r > 0.0 { r } else { scale(1.0, s) })
+}
+
+/// A horizon: none (∞), ±0, a small one, one of 1e10 … 1e300, or any non-negative float.
+pub fn t_max(u: &mut Unstructured) -> Result<f64> {
+    let kind: u8 = u.arbitrary()?;
+    Ok(match kind % 8 {
+        0..=2 => f64::INFINITY,
+        3 => 0.0,
+        4 => -0.0,
+        5 => small(u)?.abs(),
+        6 => 10f64.powi(u.int_in_range(10..=300)?),
+        _ => wide(u)?.abs(),
+    })
+}
+
+/// A pair query with the exponents of a length scaling and of a time scaling.
+pub fn pair_case(u: &mut Unstructured) -> Result<(PairCase, i32, i32)> {
+    let s = case_scale(u)?;
+    let case = PairCase {
+        a: ball(u, s)?,
+        b: ball(u, s)?,
+        radius: radius(u, s)?,
+        t_max: t_max(u)?,
+    };
+    Ok((
+        case,
+        u.int_in_range(-1100..=1100)?,
+        u.int_in_range(-600..=600)?,
+    ))
+}
+
+/// A batch of 1 to 40 pair queries (sharing one scale) and which parameters are shared.
+pub fn batch_case(u: &mut Unstructured) -> Result<(Vec<PairCase>, Shared)> {
+    let s = case_scale(u)?;
+    let n = u.int_in_range(1..=40)?;
+    let mut cases = Vec::with_capacity(n);
+    for _ in 0..n {
+        cases.push(PairCase {
+            a: ball(u, s)?,
+            b: ball(u, s)?,
+            radius: radius(u, s)?,
+            t_max: t_max(u)?,
+        });
+    }
+    let shared = [
+        u.arbitrary()?,
+        u.arbitrary()?,
+        u.arbitrary()?,
+        u.arbitrary()?,
+    ];
+    Ok((cases, shared))
+}
+
+/// A scene of 2 to 12 balls (sharing one scale) with the exponent of a length scaling.
+pub fn scene_case(u: &mut Unstructured) -> Result<(SceneCase, i32)> {
+    let s = case_scale(u)?;
+    let n = u.int_in_range(2..=12)?;
+    let mut balls = Vec::with_capacity(n);
+    let mut radii = Vec::with_capacity(n);
+    for _ in 0..n {
+        balls.push(ball(u, s)?);
+        radii.push(radius(u, s)?);
+    }
+    let case = SceneCase {
+        balls,
+        radii,
+        t_max: t_max(u)?,
+    };
+    Ok((case, u.int_in_range(-1100..=1100)?))
+}
+
+/// Polynomial coefficients (2 to 5, highest degree first), with the exponents of a scaling of
+/// the coefficients and of the variable.
+pub fn poly_case(u: &mut Unstructured) -> Result<(Vec<f64>, i32, i32)> {
+    let s = case_scale(u)?;
+    let n = u.int_in_range(2..=5)?;
+    let mut c = Vec::with_capacity(n);
+    for _ in 0..n {
+        // A coefficient may also be tiny or huge next to the others: 2^±k on top of the scale.
+        let x = match u.arbitrary::<u8>()? % 4 {
+            0 => wide(u)?,
+            1 => scale(small(u)?, s + u.int_in_range(-1100..=1100)?),
+            _ => scale(small(u)?, s),
+        };
+        c.push(x);
+    }
+    Ok((
+        c,
+        u.int_in_range(-1100..=1100)?,
+        u.int_in_range(-300..=300)?,
+    ))
+}

@@ -1,0 +1,22 @@
+//! The batch's invariants (`tests/support/invariants.rs`) on inputs drawn across the whole
+//! float range: every pair's time is the scalar search's, bit for bit, on one thread and on
+//! two, with shared or per-pair parameters; valid input never errors. The fuzz target `batch`
+//! checks the same (docs/fuzzing.md).
+
+#[path = "support/exact.rs"]
+mod exact;
+#[path = "support/invariants.rs"]
+mod invariants;
+#[path = "support/strategies.rs"]
+mod strategies;
+
+use proptest::prelude::*;
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(600))]
+
+    #[test]
+    fn batch_equals_the_scalar_search((cases, shared) in strategies::batch_case()) {
+        invariants::batch(&cases, shared).map_err(TestCaseError::fail)?;
+    }
+}

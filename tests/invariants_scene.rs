@@ -1,0 +1,26 @@
+//! The scene queries' invariants (`tests/support/invariants.rs`) on scenes drawn across the
+//! whole float range: the broad phase, all pairs, one thread and two give the brute-force pair
+//! loop's matrix bit for bit; the earliest collision and first contacts are read off it; ±0
+//! flips and power-of-two scalings of lengths change no bit; valid input never errors. The
+//! fuzz target `scene` checks the same (docs/fuzzing.md).
+
+#[path = "support/exact.rs"]
+mod exact;
+#[path = "support/invariants.rs"]
+mod invariants;
+#[path = "support/strategies.rs"]
+mod strategies;
+
+use proptest::prelude::*;
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    #[test]
+    fn the_scene_equals_the_brute_force_pairs(
+        case in strategies::scene_case(),
+        k in -1100i32..=1100,
+    ) {
+        invariants::scene(&case, k).map_err(TestCaseError::fail)?;
+    }
+}
