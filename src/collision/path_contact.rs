@@ -72,7 +72,9 @@ pub(crate) fn first_path_contact<const D: usize>(
 ) -> Option<f64> {
     let unit = pair_unit(a, b, radii);
     let radius = unit.apply(radii[0]) + unit.apply(radii[1]);
-    let mut start = a.first()?.start.max(b.first()?.start);
+    // `+ 0.0` makes a first time of −0 a +0: `max` leaves the sign of equal zeros to the
+    // order of its operands, and the answer must not depend on which path is A.
+    let mut start = a.first()?.start.max(b.first()?.start) + 0.0;
     let (mut i, mut j) = (active(a, 0, start), active(b, 0, start));
     let (mut seg_a, mut seg_b) = (scaled(&a[i], unit), scaled(&b[j], unit));
     let mut previous_positive = None;
@@ -169,5 +171,31 @@ fn window_gap<const D: usize>(a: &Segment<D>, b: &Segment<D>, start: f64, radius
         velocity: a.velocity_at(start) - b.velocity_at(start),
         acceleration: a.acceleration - b.acceleration,
         radius,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::path::{Path2, Segment2};
+    use nalgebra::Vector2;
+
+    #[test]
+    fn a_contact_at_a_first_time_of_zero_is_plus_zero_whichever_path_starts_at_minus_zero() {
+        // Overlapping and approaching at t_from = max(0, −0): a contact at once, +0 both ways
+        // round.
+        let a = Path2::new(vec![Segment2::new(
+            0.0,
+            Vector2::zeros(),
+            Vector2::new(1.0, 0.0),
+            Vector2::zeros(),
+        )]);
+        let b = Path2::new(vec![Segment2::at_rest(-0.0, Vector2::new(0.5, 0.0))]);
+        let (a, b) = (a.expect("valid"), b.expect("valid"));
+        let options = CollisionOptions::default();
+        for (x, y) in [(&a, &b), (&b, &a)] {
+            let t = path_collision_time(x, y, 1.0, &options).expect("valid");
+            assert_eq!(t.map(f64::to_bits), Some(0f64.to_bits()));
+        }
     }
 }
