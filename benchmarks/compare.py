@@ -955,16 +955,16 @@ def pooltool_first_segment(
     pt: dict[str, Any], coefficients: Callable[[PoolPairs], np.ndarray], p: PoolPairs
 ) -> tuple[np.ndarray, list[float]]:
     """pooltool's batch work on the pairs' first segments (both balls sliding): the
-    coefficients, ``solve_many``, its root picker (smallest real root ≥ 0); the times and
-    the seconds of each of the three steps."""
-    t0 = time.perf_counter()
+    coefficients, ``solve_many``, its root picker (smallest real root ≥ 0); the times, and
+    the wall seconds of each of the three steps and the thread's CPU seconds of all three."""
+    cpu, t0 = time.thread_time(), time.perf_counter()
     c = coefficients(p)
     t1 = time.perf_counter()
     roots = pt["solve_many"](c)
     t2 = time.perf_counter()
     times = np.asarray(pt["smallest"](roots))
-    t3 = time.perf_counter()
-    return times, [t1 - t0, t2 - t1, t3 - t2]
+    t3, cpu = time.perf_counter(), time.thread_time() - cpu
+    return times, [t1 - t0, t2 - t1, t3 - t2, cpu]
 
 
 def first_window_agreement(data: PoolPairs, t_bc: np.ndarray, t_pt: np.ndarray) -> str:
@@ -1005,6 +1005,7 @@ def path_set(args: argparse.Namespace, pt: dict[str, Any] | None) -> None:
         peers["numpy"] = numpy_coefficients
         first = compile_seconds(lambda: pooltool_first_segment(pt, peers["own"], data.head(4)))
         print(f"# pooltool coefficient loop: first call (numba compile) {first:.1f} s, not timed")
+    # Per round: wall and thread-CPU ns/pair, and for pooltool the wall ns/pair of its steps.
     rounds: dict[str, list[list[float]]] = {"bc": [], "own": [], "numpy": []}
     answers: dict[str, np.ndarray] = {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -1018,36 +1019,41 @@ def path_set(args: argparse.Namespace, pt: dict[str, Any] | None) -> None:
             one = rust_paths(args, path, "1")
             if one is None:
                 return
-            rounds["bc"].append([float(one["median_ns_per_pair"])])
-            line = f"round {k + 1}: ballcollide 1 thread {rounds['bc'][-1][0]:.1f} ns/pair"
+            fields = ("median_ns_per_pair", "median_thread_cpu_ns_per_pair")
+            rounds["bc"].append([float(one[f]) for f in fields])
+            line = f"round {k + 1}, ns/pair (cpu): ballcollide 1 thread "
+            line += "{:.1f} ({:.1f})".format(*rounds["bc"][-1])
             for name, coefficients in peers.items():
                 steps = []
                 for _ in range(max(1, args.repeats)):
                     answers[name], seconds = pooltool_first_segment(pt, coefficients, data)
                     steps.append(seconds)
-                per_step = np.median(np.array(steps), axis=0) / n * 1e9
-                total = float(np.median(np.array(steps).sum(axis=1)) / n * 1e9)
-                rounds[name].append([total, *per_step])
-                line += f"; pooltool ({name} coefficients) {total:.1f}"
-            print(line + " ns/pair")
-    bc = np.array(rounds["bc"])[:, 0]
+                s = np.array(steps) / n * 1e9
+                wall, cpu = np.median(s[:, :3].sum(axis=1)), np.median(s[:, 3])
+                rounds[name].append([float(wall), float(cpu), *np.median(s[:, :3], axis=0)])
+                line += f"; pooltool ({name} coefficients) {wall:.1f} ({cpu:.1f})"
+            print(line)
+    bc = np.array(rounds["bc"])
     t_bc = answers["bc"]
     print(
         f"ballcollide: {int(np.isfinite(t_bc).sum())} hits ({100 * np.isfinite(t_bc).mean():.2f}"
         f" %), {int((t_bc < data.first_window_end()).sum())} in the first window (both balls "
-        f"sliding), {int((t_bc == 0).sum())} at t = 0; 1 thread {np.median(bc):.1f} ns/pair "
-        f"(median of rounds), all threads {float(every['median_ns_per_pair']):.1f} ns/pair"
+        f"sliding), {int((t_bc == 0).sum())} at t = 0; 1 thread {np.median(bc[:, 0]):.1f} "
+        f"ns/pair, thread cpu {np.median(bc[:, 1]):.1f} (medians of rounds); all threads "
+        f"{float(every['median_ns_per_pair']):.1f} ns/pair"
     )
     version = pt["version"] if pt is not None else "?"
     for name in peers:
         r = np.array(rounds[name])
         med = np.median(r, axis=0)
         print(
-            f"pooltool {version} first segment, {name} coefficients: "
-            f"{med[0]:.1f} ns/pair (median of rounds; coefficients {med[1]:.1f}, solve_many "
-            f"{med[2]:.1f}, root picker {med[3]:.1f}); ÷ ballcollide 1 thread = "
-            f"{med[0] / np.median(bc):.2f} from the medians, {np.median(r[:, 0] / bc):.2f} "
-            "median of rounds"
+            f"pooltool {version} first segment, {name} coefficients: {med[0]:.1f} ns/pair, "
+            f"thread cpu {med[1]:.1f} (medians of rounds; wall: coefficients {med[2]:.1f}, "
+            f"solve_many {med[3]:.1f}, root picker {med[4]:.1f}); pooltool ÷ ballcollide "
+            f"1 thread: wall {med[0] / np.median(bc[:, 0]):.2f}, cpu "
+            f"{med[1] / np.median(bc[:, 1]):.2f} from the medians; median of the rounds' "
+            f"ratios: wall {np.median(r[:, 0] / bc[:, 0]):.2f}, cpu "
+            f"{np.median(r[:, 1] / bc[:, 1]):.2f}"
         )
         print(f"  {first_window_agreement(data, t_bc, answers[name])}")
 
@@ -1123,7 +1129,7 @@ def parse(argv: Sequence[str] | None) -> argparse.Namespace:
     ap.add_argument("--batch-pairs", type=int, default=200_000, help="subsample, batched peers")
     ap.add_argument("--repeats", type=int, default=7, help="timed repeats (median)")
     ap.add_argument("--seed", type=int, default=2024)
-    ap.add_argument("--sets", default="random", help=f"comma list of {SETS} or 'all'")
+    ap.add_argument("--sets", default="random", help=f"comma list of {SETS}, 'all' or 'none'")
     ap.add_argument("--checks", type=int, default=3, help="mpmath checks per method")
     ap.add_argument("--quick", action="store_true", help="small sizes, no pooltool (smoke test)")
     ap.add_argument("--no-pooltool", action="store_true", help="skip pooltool")
@@ -1142,7 +1148,10 @@ def parse(argv: Sequence[str] | None) -> argparse.Namespace:
     if args.quick:
         args.pairs, args.loop_pairs, args.batch_pairs = 5_000, 300, 5_000
         args.repeats, args.no_pooltool = 3, True
-    args.sets = SETS if args.sets == "all" else tuple(args.sets.split(","))
+    if args.sets in ("all", "none"):
+        args.sets = SETS if args.sets == "all" else ()
+    else:
+        args.sets = tuple(args.sets.split(","))
     unknown = set(args.sets) - set(SETS)
     if unknown:
         ap.error(f"unknown sets {sorted(unknown)}; choose from {SETS}")

@@ -10,13 +10,17 @@
 //! (`2n`), `friction_a` (`n`), `pos_b` (`2n`), `vel_b` (`2n`), `friction_b` (`n`), `radius`
 //! (one value for all pairs). THREADS is a number (default 1) or `all`; REPEATS defaults
 //! to 15. With `fresh`, every call writes into a newly allocated output buffer (as the Python
-//! binding does) instead of reusing one. The output is one line of `key=value` fields: the median and minimum ns per pair
-//! over the repeats, and a checksum of the times (hit count and sum of the finite times).
+//! binding does) instead of reusing one. The output is one line of `key=value` fields: the
+//! median and minimum ns per pair over the repeats, the median CPU time of the calling thread
+//! per pair (the whole work on one thread), and a checksum of the times (hit count and sum of
+//! the finite times).
 
 use std::process::ExitCode;
 
 use ballcollide::batch::{Pairs, PerPair, collision_times};
 
+#[path = "../tests/support/thread_cpu_time.rs"]
+mod thread_cpu_time;
 #[path = "../tests/support/timing_example.rs"]
 mod timing_example;
 use timing_example::{Reader, threads, time_calls};

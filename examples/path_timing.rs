@@ -13,13 +13,16 @@
 //! `f64` for all pairs). THREADS is a number (default 1) or `all`; REPEATS defaults to 15.
 //! With OUT, the times of the last call are written there (`n` little-endian `f64`s, `+∞`
 //! where there is no contact). The output is one line of `key=value` fields: the median and
-//! minimum ns per pair over the repeats, and a checksum of the times (hit count and sum of
+//! minimum ns per pair over the repeats, the median CPU time of the calling thread per pair
+//! (the whole work on one thread), and a checksum of the times (hit count and sum of
 //! the finite times).
 
 use std::process::ExitCode;
 
 use ballcollide::batch::{PathPairs, PathRows, PerPair, path_collision_times};
 
+#[path = "../tests/support/thread_cpu_time.rs"]
+mod thread_cpu_time;
 #[path = "../tests/support/timing_example.rs"]
 mod timing_example;
 use timing_example::{Reader, threads, time_calls};

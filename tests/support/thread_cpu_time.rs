@@ -1,7 +1,8 @@
 //! [`ThreadCpuTime`]: a criterion measurement of the calling thread's CPU time, shared by the
-//! benchmarks' one-thread groups.
+//! benchmarks' one-thread groups; [`thread_cpu_ns`] for the timing examples.
 //!
 //! Included by path (`#[path = "../tests/support/thread_cpu_time.rs"] mod thread_cpu_time;`).
+#![allow(dead_code)]
 
 use std::sync::OnceLock;
 use std::time::Instant;
@@ -14,8 +15,9 @@ use criterion::measurement::{Measurement, ValueFormatter};
 /// kernel timings are comparable between runs. Off Linux it falls back to wall time.
 pub struct ThreadCpuTime;
 
+/// The calling thread's CPU time in nanoseconds (wall time off Linux).
 #[cfg(target_os = "linux")]
-fn thread_cpu_ns() -> u64 {
+pub fn thread_cpu_ns() -> u64 {
     #[repr(C)]
     struct Timespec {
         sec: i64,
@@ -35,8 +37,9 @@ fn thread_cpu_ns() -> u64 {
     }
 }
 
+/// The calling thread's CPU time in nanoseconds (wall time off Linux).
 #[cfg(not(target_os = "linux"))]
-fn thread_cpu_ns() -> u64 {
+pub fn thread_cpu_ns() -> u64 {
     wall_ns()
 }
 

@@ -2,13 +2,16 @@
 //! reading the raw little-endian files that `benchmarks/compare.py` writes ([`Reader`]), the
 //! THREADS argument ([`threads`]), and timing repeated batch calls ([`time_calls`]).
 //!
-//! Included by path: `#[path = "../tests/support/timing_example.rs"] mod timing_example;`.
+//! Included by path next to `thread_cpu_time.rs`, which it uses as `crate::thread_cpu_time`:
+//! `#[path = "../tests/support/timing_example.rs"] mod timing_example;`.
 
 use std::num::NonZeroUsize;
 use std::time::Instant;
 
 use ballcollide::InputError;
 use ballcollide::batch::Threads;
+
+use crate::thread_cpu_time::thread_cpu_ns;
 
 /// Reads little-endian words from a byte buffer, front to back.
 pub struct Reader<'a> {
@@ -83,8 +86,9 @@ fn median(mut xs: Vec<f64>) -> f64 {
 /// Times `call` on an output of `n` pairs, once to warm up and then `repeats` times (at
 /// least once); with `fresh`, every call writes into a newly allocated buffer instead of
 /// reusing one. Returns the last output and one line of `key=value` fields: the median and
-/// minimum ns per pair over the repeats, and a checksum of the times (hit count and sum of
-/// the finite times, in order).
+/// minimum ns per pair over the repeats (wall time), the median of the calling thread's CPU
+/// time per pair (all the work on one thread; on a shared machine, the work without the
+/// waits), and a checksum of the times (hit count and sum of the finite times, in order).
 pub fn time_calls(
     n: usize,
     repeats: usize,
@@ -93,22 +97,24 @@ pub fn time_calls(
 ) -> Result<(Vec<f64>, String), String> {
     let mut out = vec![0.0; n];
     call(&mut out).map_err(|e| e.to_string())?; // warm-up
-    let mut ns = Vec::with_capacity(repeats);
+    let (mut ns, mut cpu) = (Vec::with_capacity(repeats), Vec::with_capacity(repeats));
     for _ in 0..repeats.max(1) {
-        let start = Instant::now();
+        let (start, start_cpu) = (Instant::now(), thread_cpu_ns());
         if fresh {
             out = vec![0.0; n];
         }
         call(&mut out).map_err(|e| e.to_string())?;
         ns.push(start.elapsed().as_secs_f64() * 1e9 / n.max(1) as f64);
+        cpu.push(thread_cpu_ns().saturating_sub(start_cpu) as f64 / n.max(1) as f64);
     }
     let hits = out.iter().filter(|t| t.is_finite()).count();
     let sum: f64 = out.iter().filter(|t| t.is_finite()).sum();
     let min = ns.iter().copied().fold(f64::INFINITY, f64::min);
     let line = format!(
-        "n={n} repeats={} fresh={fresh} median_ns_per_pair={:.4} min_ns_per_pair={min:.4} hits={hits} sum={sum:.17e}",
+        "n={n} repeats={} fresh={fresh} median_ns_per_pair={:.4} min_ns_per_pair={min:.4} median_thread_cpu_ns_per_pair={:.4} hits={hits} sum={sum:.17e}",
         ns.len(),
         median(ns.clone()),
+        median(cpu),
     );
     Ok((out, line))
 }
