@@ -2,7 +2,8 @@
 //! segments, in batches.
 //!
 //! - `pool_table`: 200,000 random pool-table pairs of 3-segment paths (sliding → rolling →
-//!   rest, built as pooltool builds them: [`PoolBall::path`]);
+//!   rest, built as pooltool builds them: [`PoolBall::path`]); on one thread, also its two
+//!   parts apart: the pairs whose whole-path boxes are apart ([`boxes_apart`]) and the others;
 //! - `seed_as_paths`: 200,000 random table pairs of friction balls (speeds 0–3 m/s, friction
 //!   0.05–2 m/s²), as paths ([`Ball::path`]) through `path_collision_times` and as balls
 //!   through `collision_times`;
@@ -67,6 +68,21 @@ impl PathSet {
             radius: PerPair::All(CONTACT),
             t_max: PerPair::All(f64::INFINITY),
         }
+    }
+
+    /// The pairs `indices` of this set.
+    fn pick(&self, indices: &[usize]) -> Self {
+        Self {
+            a: self.a.pick(indices),
+            b: self.b.pick(indices),
+        }
+    }
+
+    /// The pairs split by [`boxes_apart`]: those apart, the others.
+    fn split_by_boxes(&self) -> [Self; 2] {
+        let (apart, overlap): (Vec<usize>, Vec<usize>) =
+            (0..self.a.len()).partition(|&i| boxes_apart(self, i));
+        [self.pick(&apart), self.pick(&overlap)]
     }
 
     fn times(&self) -> Vec<f64> {
@@ -316,20 +332,36 @@ fn spreading_scene(seed: u64) -> Vec<PoolBall> {
     balls
 }
 
-/// The two large sets, drawn once for both timers.
-fn sets() -> &'static (PathSet, SeedSet) {
-    static SETS: OnceLock<(PathSet, SeedSet)> = OnceLock::new();
-    SETS.get_or_init(|| (pool_table(PAIRS, 17), seed_set(PAIRS, 11)))
+/// The two large sets, drawn once for both timers, and the pool-table set's parts
+/// ([`PathSet::split_by_boxes`]).
+fn sets() -> &'static (PathSet, SeedSet, [PathSet; 2]) {
+    static SETS: OnceLock<(PathSet, SeedSet, [PathSet; 2])> = OnceLock::new();
+    SETS.get_or_init(|| {
+        let pool = pool_table(PAIRS, 17);
+        let parts = pool.split_by_boxes();
+        (pool, seed_set(PAIRS, 11), parts)
+    })
 }
 
 /// The groups on one thread or on all, for one kind of timer.
 fn groups<M: Measurement>(c: &mut Criterion<M>, threads: Threads, label: &str) {
-    let (pool, seed) = sets();
+    let (pool, seed, pool_parts) = sets();
     let mut group = c.benchmark_group(format!("pool_table_{label}"));
     short(&mut group, true);
     group.throughput(Throughput::Elements(PAIRS as u64));
     bench_paths(&mut group, "paths_3_segments", pool, threads);
     group.finish();
+    if label == "1_thread" {
+        // What each part of the set costs: the pairs a whole-path box screen would settle, and
+        // the rest (ns per pair of each part: the throughput is per pair of the part).
+        let mut group = c.benchmark_group("pool_table_parts_1_thread");
+        short(&mut group, true);
+        for (name, part) in ["boxes_apart", "boxes_overlap"].iter().zip(pool_parts) {
+            group.throughput(Throughput::Elements(part.a.len() as u64));
+            bench_paths(&mut group, name, part, threads);
+        }
+        group.finish();
+    }
 
     let mut group = c.benchmark_group(format!("seed_as_paths_{label}"));
     short(&mut group, true);
@@ -364,7 +396,7 @@ fn groups<M: Measurement>(c: &mut Criterion<M>, threads: Threads, label: &str) {
 }
 
 fn one_thread(c: &mut Criterion<ThreadCpuTime>) {
-    let (pool, seed) = sets();
+    let (pool, seed, _) = sets();
     describe("pool_table", pool);
     describe("seed_as_paths", &seed.paths);
     groups(c, ONE, "1_thread");

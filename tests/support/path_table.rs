@@ -59,6 +59,19 @@ impl<const D: usize> PathTable<D> {
         }
     }
 
+    /// The table of paths `indices` of this one, in that order.
+    pub fn pick(&self, indices: &[usize]) -> Self {
+        let k = self.segments;
+        let rows = || indices.iter().flat_map(|&i| i * k..(i + 1) * k);
+        Self {
+            start: rows().map(|r| self.start[r]).collect(),
+            pos: rows().map(|r| self.pos[r]).collect(),
+            vel: rows().map(|r| self.vel[r]).collect(),
+            acc: rows().map(|r| self.acc[r]).collect(),
+            segments: k,
+        }
+    }
+
     /// The number of paths.
     pub fn len(&self) -> usize {
         self.start.len() / self.segments
