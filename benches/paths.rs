@@ -10,7 +10,9 @@
 //! - `ball_against_all`: in a 16-ball scene, every ball against the 15 others (what an event
 //!   loop asks after each event), the ball broadcast (one A path) or repeated 15 times. Scenes:
 //!   `break` (the rack at rest, the cue ball sliding into it with spin) and `spreading` (every
-//!   ball of the rack moving away from it, sliding, the cue ball too).
+//!   ball of the rack moving away from it, sliding, the cue ball too). A query's 15 pairs are
+//!   fewer than a batch task's chunk, so `Threads::All` runs them on the calling thread too:
+//!   `ball_against_all_all_threads` is the same work as on one thread, in wall time.
 //!
 //! `cargo bench --bench paths` (under 2 minutes: few samples, short runs); `-- pool_table` etc.
 //! selects a group. One-thread groups (`…_1_thread`) time the thread's CPU time
