@@ -18,24 +18,20 @@ use ballcollide::scene::{PairSearch, SceneOptions, candidate_pairs, earliest_col
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use nalgebra::Vector2;
 
-const R: f64 = 0.028575;
-
+#[path = "../tests/support/pool_balls.rs"]
+mod pool_balls;
 #[path = "../tests/support/rng.rs"]
 mod rng;
+use pool_balls::BALL_RADIUS as R;
 use rng::Rng;
 
-/// A rack of 15 balls at rest (apex at (1.9, 0.635)) and the cue ball at 3 m/s towards it.
+/// A rack of 15 balls at rest and the cue ball at 3 m/s towards it.
 fn rack() -> Vec<Ball> {
-    let mut balls = Vec::new();
-    let d = 2.0 * R;
-    for row in 0..5 {
-        for k in 0..=row {
-            let x = 1.9 + row as f64 * d * 3f64.sqrt() / 2.0;
-            let y = 0.635 + (k as f64 - row as f64 / 2.0) * d;
-            balls.push(Ball::at_rest(Vector2::new(x, y)).expect("valid"));
-        }
-    }
-    balls.push(Ball::new(Vector2::new(0.635, 0.64), Vector2::new(3.0, 0.0), 0.2).expect("valid"));
+    let mut balls: Vec<Ball> = (pool_balls::rack().into_iter())
+        .map(|p| Ball::at_rest(p.into()).expect("valid"))
+        .collect();
+    let cue = Vector2::from(pool_balls::CUE_SPOT);
+    balls.push(Ball::new(cue, Vector2::new(3.0, 0.0), 0.2).expect("valid"));
     balls
 }
 

@@ -29,6 +29,13 @@ disagreement is "clear" when ballcollide's own hit/miss does not change with the
 by 1 ± 1e-6 (not a grazing contact). A few disagreements are settled by evaluating the motion
 in mpmath (50 digits, from the exact binary inputs) at the disputed times.
 
+``--paths`` adds the pool-path set (issue 17): ``--path-pairs`` pairs of pool balls on 3-segment
+paths (sliding → rolling → rest, pooltool's motion model), ballcollide's path batch through the
+Rust example ``examples/path_timing.rs`` (the Python bindings for paths come later) against
+pooltool 0.6's own batch work on the first segment alone — its quartic coefficients
+(``ball_ball_collision_coeffs`` in a numba loop, and the same quartics vectorised in numpy),
+``solve_many`` and its root picker — alternating for ``--path-rounds`` rounds in one run.
+
 ``--overhead`` measures ``collision_times`` from Python on 10⁶ pairs against the Rust kernel
 (``examples/kernel_timing.rs``) on the very same data, both on 1 thread.
 """
@@ -349,6 +356,8 @@ def load_pooltool() -> dict[str, Any] | None:
         "solve_many": quartic.solve_many,
         "smallest": core.get_real_positive_smallest_roots,
         "pair_time": solve.ball_ball_collision_time,
+        "coeffs": solve.ball_ball_collision_coeffs,
+        "sliding": const.sliding,
         "rolling": const.rolling,
         "stationary": const.stationary,
     }
@@ -676,27 +685,31 @@ def write_raw(p: Pairs, path: Path) -> None:
             f.write(np.ascontiguousarray(x, dtype="<f8").tobytes())
 
 
-def kernel_command(args: argparse.Namespace, path: Path, threads: str, fresh: bool) -> list[str]:
-    """How to run the Rust timing example."""
-    tail = [str(path), threads, str(args.repeats), *(["fresh"] if fresh else [])]
-    if args.kernel_bin:
-        return [args.kernel_bin, *tail]
-    return ["cargo", "run", "-q", "--release", "--example", "kernel_timing", "--", *tail]
+def example_command(name: str, binary: str | None, tail: list[str]) -> list[str]:
+    """How to run the Rust example ``name`` (its prebuilt ``binary``, else through cargo)."""
+    if binary:
+        return [binary, *tail]
+    return ["cargo", "run", "-q", "--release", "--example", name, "--", *tail]
+
+
+def run_example(cmd: list[str]) -> dict[str, str] | None:
+    """Run a Rust timing example; its ``key=value`` fields, or ``None`` (with a message)."""
+    print(f"$ {shlex.join(cmd)}")
+    try:
+        done = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, check=True)
+    except (OSError, subprocess.CalledProcessError) as e:
+        print(f"# skipped the Rust timing: {e}")
+        return None
+    print(done.stdout.strip())
+    return dict(field.split("=", 1) for field in done.stdout.split())
 
 
 def rust_kernel(
     args: argparse.Namespace, path: Path, threads: str, fresh: bool = False
 ) -> dict[str, str] | None:
-    """Run the Rust example; its ``key=value`` fields, or ``None`` (with a message)."""
-    cmd = kernel_command(args, path, threads, fresh)
-    print(f"$ {shlex.join(cmd)}")
-    try:
-        done = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, check=True)
-    except (OSError, subprocess.CalledProcessError) as e:
-        print(f"# skipped the Rust kernel timing: {e}")
-        return None
-    print(done.stdout.strip())
-    return dict(field.split("=", 1) for field in done.stdout.split())
+    """``examples/kernel_timing.rs`` on the pairs in ``path``."""
+    tail = [str(path), threads, str(args.repeats), *(["fresh"] if fresh else [])]
+    return run_example(example_command("kernel_timing", args.kernel_bin, tail))
 
 
 def overhead(args: argparse.Namespace) -> None:
@@ -785,6 +798,267 @@ def overhead(args: argparse.Namespace) -> None:
 
 
 # ---------------------------------------------------------------------------------------------
+# Pool-table paths (issue 17): ballcollide's path batch against pooltool's first-segment work
+
+BALL_R = RADIUS / 2  # ball radius, m
+U_SLIDE, U_ROLL, GRAVITY = 0.2, 0.01, 9.81  # pooltool's default cloth and gravity
+
+
+@dataclasses.dataclass
+class PathSide:
+    """One side of a batch of paths: ``start`` ``(N, K)``; ``pos``, ``vel``, ``acc``
+    ``(N, K, 2)``; unused trailing rows have ``start = inf`` (and zeros)."""
+
+    start: np.ndarray
+    pos: np.ndarray
+    vel: np.ndarray
+    acc: np.ndarray
+
+
+@dataclasses.dataclass
+class PoolPairs:
+    """Pairs of pool balls: their paths, and their pooltool states at ``t = 0`` (``rvw``)."""
+
+    a: PathSide
+    b: PathSide
+    rvw_a: np.ndarray
+    rvw_b: np.ndarray
+
+    def __len__(self) -> int:
+        return len(self.rvw_a)
+
+    def head(self, n: int) -> PoolPairs:
+        """The first ``n`` pairs (views, no copy)."""
+
+        def cut(s: PathSide) -> PathSide:
+            return PathSide(s.start[:n], s.pos[:n], s.vel[:n], s.acc[:n])
+
+        return PoolPairs(cut(self.a), cut(self.b), self.rvw_a[:n], self.rvw_b[:n])
+
+    def first_window_end(self) -> np.ndarray:
+        """When the first of the two balls leaves its first segment (``inf`` if neither)."""
+        second = [s.start[:, 1] if s.start.shape[1] > 1 else np.inf for s in (self.a, self.b)]
+        return np.asarray(np.minimum(*second))
+
+
+def _norm(x: np.ndarray) -> np.ndarray:
+    return np.asarray(np.hypot(x[..., 0], x[..., 1]))
+
+
+def _unit(x: np.ndarray, size: np.ndarray) -> np.ndarray:
+    return np.divide(x, size[:, None], out=np.zeros_like(x), where=size[:, None] > 0)
+
+
+def pool_side(pos: np.ndarray, vel: np.ndarray, spin: np.ndarray) -> PathSide:
+    """The paths of balls in pooltool's motion model, each segment's start in float64 from the
+    one before: sliding while the contact point slips, ``u = v + ω × (−R ẑ) = (vx − R ωy,
+    vy + R ωx)``, at ``−u_s g û`` for ``2|u|/(7 u_s g)``; rolling at ``−u_r g v̂`` for
+    ``|v|/(u_r g)``; at rest. A ball without slip (or without speed after it) skips the
+    slide (the roll); the used segments come first, then padding."""
+    n = len(pos)
+    slip = np.stack([vel[:, 0] - BALL_R * spin[:, 1], vel[:, 1] + BALL_R * spin[:, 0]], axis=1)
+    u = _norm(slip)
+    acc0 = -U_SLIDE * GRAVITY * _unit(slip, u)
+    tau0 = 2 * u / (7 * U_SLIDE * GRAVITY)
+    p1 = pos + vel * tau0[:, None] + 0.5 * acc0 * (tau0 * tau0)[:, None]
+    v1 = vel + acc0 * tau0[:, None]
+    speed = _norm(v1)
+    acc1 = -U_ROLL * GRAVITY * _unit(v1, speed)
+    tau1 = speed / (U_ROLL * GRAVITY)
+    p2 = p1 + v1 * tau1[:, None] + 0.5 * acc1 * (tau1 * tau1)[:, None]
+    zeros = np.zeros((n, 2))
+    start = np.stack([np.zeros(n), tau0, tau0 + tau1], axis=1)
+    rows = [np.stack(x, axis=1) for x in ((pos, p1, p2), (vel, v1, zeros), (acc0, acc1, zeros))]
+    used = np.stack([u > 0, speed > 0, np.ones(n, bool)], axis=1)
+    order = np.argsort(~used, axis=1, kind="stable")  # used rows first, in their order
+    start = np.where(
+        np.take_along_axis(used, order, 1), np.take_along_axis(start, order, 1), np.inf
+    )
+    pos_, vel_, acc_ = (np.take_along_axis(r, order[:, :, None], 1) for r in rows)
+    return PathSide(start, pos_, vel_, acc_)
+
+
+def pool_balls(rng: np.random.Generator, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Random balls as in ``tests/support/pool_balls.rs``: anywhere on the table, speed 0–3 m/s
+    in a random direction, each spin component ``(ωx, ωy)`` uniform in ±(3 m/s)/R."""
+    pos = _on_table(rng, n)
+    vel = _polar(rng.uniform(0, 3, n), rng.uniform(0, 2 * np.pi, n))
+    w = 3 / BALL_R
+    return pos, vel, rng.uniform(-w, w, (n, 2))
+
+
+def pool_rvw(pos: np.ndarray, vel: np.ndarray, spin: np.ndarray) -> np.ndarray:
+    """pooltool's ball states: rows position (z = R), velocity, angular velocity (ωz = 0)."""
+    out = rvw(pos, vel, BALL_R)
+    out[:, 2, :2] = spin
+    return out
+
+
+def pool_pairs(n: int, seed: int) -> PoolPairs:
+    """``n`` pairs of random pool balls (all sliding at ``t = 0``), as paths and states."""
+    rng = np.random.default_rng(seed)
+    a, b = pool_balls(rng, n), pool_balls(rng, n)
+    return PoolPairs(pool_side(*a), pool_side(*b), pool_rvw(*a), pool_rvw(*b))
+
+
+def write_paths(p: PoolPairs, path: Path) -> None:
+    """The pairs in ``examples/path_timing.rs``'s raw little-endian format."""
+
+    def u64(k: int) -> bytes:
+        return np.uint64(k).astype("<u8").tobytes()
+
+    with path.open("wb") as f:
+        f.write(u64(len(p)))
+        for side in (p.a, p.b):
+            f.write(u64(side.start.shape[0]) + u64(side.start.shape[1]))
+            for x in (side.start, side.pos, side.vel, side.acc):
+                f.write(np.ascontiguousarray(x, dtype="<f8").tobytes())
+        f.write(np.array([RADIUS], dtype="<f8").tobytes())
+
+
+def rust_paths(
+    args: argparse.Namespace, path: Path, threads: str, out: Path | None = None
+) -> dict[str, str] | None:
+    """``examples/path_timing.rs`` on the pairs in ``path`` (times written to ``out``)."""
+    tail = [str(path), threads, str(args.repeats), *([str(out)] if out else [])]
+    return run_example(example_command("path_timing", args.path_bin, tail))
+
+
+def pooltool_coefficients(pt: dict[str, Any]) -> Callable[..., np.ndarray]:
+    """pooltool's own per-pair quartic coefficients (``ball_ball_collision_coeffs``, numba) for
+    a whole batch, called from a numba loop so that no Python call is paid per pair."""
+    numba = importlib.import_module("numba")
+    coeffs = pt["coeffs"]
+
+    @numba.njit
+    def batch(rvw_a, rvw_b, state, mu, g, radius):  # type: ignore[no-untyped-def]
+        out = np.empty((rvw_a.shape[0], 5))
+        for i in range(rvw_a.shape[0]):
+            c = coeffs(rvw_a[i], rvw_b[i], state, state, mu, mu, 1.0, 1.0, g, g, radius)
+            for k in range(5):
+                out[i, k] = c[k]
+        return out
+
+    return lambda p: batch(p.rvw_a, p.rvw_b, pt["sliding"], U_SLIDE, GRAVITY, BALL_R)
+
+
+def numpy_coefficients(p: PoolPairs) -> np.ndarray:
+    """The same first-segment quartics as pooltool's, vectorised in numpy from the paths'
+    first rows (``gap_coefficients``): the cheapest way to feed ``solve_many``."""
+    a, b = p.a, p.b
+    return gap_coefficients(
+        a.pos[:, 0] - b.pos[:, 0], a.vel[:, 0] - b.vel[:, 0], a.acc[:, 0] - b.acc[:, 0], RADIUS
+    )
+
+
+def pooltool_first_segment(
+    pt: dict[str, Any], coefficients: Callable[[PoolPairs], np.ndarray], p: PoolPairs
+) -> tuple[np.ndarray, list[float]]:
+    """pooltool's batch work on the pairs' first segments (both balls sliding): the
+    coefficients, ``solve_many``, its root picker (smallest real root ≥ 0); the times, and
+    the wall seconds of each of the three steps and the thread's CPU seconds of all three."""
+    cpu, t0 = time.thread_time(), time.perf_counter()
+    c = coefficients(p)
+    t1 = time.perf_counter()
+    roots = pt["solve_many"](c)
+    t2 = time.perf_counter()
+    times = np.asarray(pt["smallest"](roots))
+    t3, cpu = time.perf_counter(), time.thread_time() - cpu
+    return times, [t1 - t0, t2 - t1, t3 - t2, cpu]
+
+
+def first_window_agreement(data: PoolPairs, t_bc: np.ndarray, t_pt: np.ndarray) -> str:
+    """Hit/miss agreement on the first window (a root at or after it counts as none), and the
+    worst time difference where both hit and the balls are apart at ``t = 0``."""
+    end = data.first_window_end()
+    bc_first = np.where(t_bc < end, t_bc, np.inf)
+    pt_first = np.where(t_pt < end, t_pt, np.inf)
+    apart = numpy_coefficients(data)[:, 4] > 0
+    differ = np.isfinite(bc_first) != np.isfinite(pt_first)
+    both = np.isfinite(bc_first) & np.isfinite(pt_first) & apart
+    worst = float(np.abs(bc_first[both] - pt_first[both]).max()) if both.any() else 0.0
+    return (
+        f"first window: ballcollide {int(np.isfinite(bc_first).sum())} hits, pooltool "
+        f"{int(np.isfinite(pt_first).sum())}; hit/miss disagreements {int(differ.sum())} "
+        f"({int((differ & np.isfinite(pt_first)).sum())} a pooltool hit, "
+        f"{int((differ & ~apart).sum())} overlapping at t = 0); worst |Δt| where both hit, "
+        f"apart at t = 0: {worst:.2e} s"
+    )
+
+
+def path_set(args: argparse.Namespace, pt: dict[str, Any] | None) -> None:
+    """ballcollide's path batch (through ``examples/path_timing.rs``) against pooltool's
+    first-segment batch work, on the same pool-table pairs, alternating for
+    ``--path-rounds`` rounds (each method the median of ``--repeats`` calls per round).
+
+    pooltool's coefficients are taken two ways: its own ``ball_ball_collision_coeffs`` (from
+    the balls' states) in a numba loop, and the same quartics vectorised in numpy."""
+    data = pool_pairs(args.path_pairs, args.seed)
+    n = len(data)
+    print(
+        f"\n## set: pool paths — {n} pairs of 3-segment pool-ball paths (sliding → rolling → "
+        f"rest), seed {args.seed}; ns/pair = median of {args.repeats} calls per round"
+    )
+    peers: dict[str, Callable[[PoolPairs], np.ndarray]] = {}
+    if pt is not None:
+        peers["own"] = pooltool_coefficients(pt)
+        peers["numpy"] = numpy_coefficients
+        first = compile_seconds(lambda: pooltool_first_segment(pt, peers["own"], data.head(4)))
+        print(f"# pooltool coefficient loop: first call (numba compile) {first:.1f} s, not timed")
+    # Per round: wall and thread-CPU ns/pair, and for pooltool the wall ns/pair of its steps.
+    rounds: dict[str, list[list[float]]] = {"bc": [], "own": [], "numpy": []}
+    answers: dict[str, np.ndarray] = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        path, out = Path(tmp) / "paths.bin", Path(tmp) / "times.bin"
+        write_paths(data, path)
+        every = rust_paths(args, path, "all", out)
+        if every is None:
+            return
+        answers["bc"] = np.fromfile(out, dtype="<f8")
+        for k in range(args.path_rounds):
+            one = rust_paths(args, path, "1")
+            if one is None:
+                return
+            fields = ("median_ns_per_pair", "median_thread_cpu_ns_per_pair")
+            rounds["bc"].append([float(one[f]) for f in fields])
+            line = f"round {k + 1}, ns/pair (cpu): ballcollide 1 thread "
+            line += "{:.1f} ({:.1f})".format(*rounds["bc"][-1])
+            for name, coefficients in peers.items():
+                steps = []
+                for _ in range(max(1, args.repeats)):
+                    answers[name], seconds = pooltool_first_segment(pt, coefficients, data)
+                    steps.append(seconds)
+                s = np.array(steps) / n * 1e9
+                wall, cpu = np.median(s[:, :3].sum(axis=1)), np.median(s[:, 3])
+                rounds[name].append([float(wall), float(cpu), *np.median(s[:, :3], axis=0)])
+                line += f"; pooltool ({name} coefficients) {wall:.1f} ({cpu:.1f})"
+            print(line)
+    bc = np.array(rounds["bc"])
+    t_bc = answers["bc"]
+    print(
+        f"ballcollide: {int(np.isfinite(t_bc).sum())} hits ({100 * np.isfinite(t_bc).mean():.2f}"
+        f" %), {int((t_bc < data.first_window_end()).sum())} in the first window (both balls "
+        f"sliding), {int((t_bc == 0).sum())} at t = 0; 1 thread {np.median(bc[:, 0]):.1f} "
+        f"ns/pair, thread cpu {np.median(bc[:, 1]):.1f} (medians of rounds); all threads "
+        f"{float(every['median_ns_per_pair']):.1f} ns/pair"
+    )
+    version = pt["version"] if pt is not None else "?"
+    for name in peers:
+        r = np.array(rounds[name])
+        med = np.median(r, axis=0)
+        print(
+            f"pooltool {version} first segment, {name} coefficients: {med[0]:.1f} ns/pair, "
+            f"thread cpu {med[1]:.1f} (medians of rounds; wall: coefficients {med[2]:.1f}, "
+            f"solve_many {med[3]:.1f}, root picker {med[4]:.1f}); pooltool ÷ ballcollide "
+            f"1 thread: wall {med[0] / np.median(bc[:, 0]):.2f}, cpu "
+            f"{med[1] / np.median(bc[:, 1]):.2f} from the medians; median of the rounds' "
+            f"ratios: wall {np.median(r[:, 0] / bc[:, 0]):.2f}, cpu "
+            f"{np.median(r[:, 1] / bc[:, 1]):.2f}"
+        )
+        print(f"  {first_window_agreement(data, t_bc, answers[name])}")
+
+
+# ---------------------------------------------------------------------------------------------
 # Plot: ns/pair against N
 
 
@@ -855,7 +1129,7 @@ def parse(argv: Sequence[str] | None) -> argparse.Namespace:
     ap.add_argument("--batch-pairs", type=int, default=200_000, help="subsample, batched peers")
     ap.add_argument("--repeats", type=int, default=7, help="timed repeats (median)")
     ap.add_argument("--seed", type=int, default=2024)
-    ap.add_argument("--sets", default="random", help=f"comma list of {SETS} or 'all'")
+    ap.add_argument("--sets", default="random", help=f"comma list of {SETS}, 'all' or 'none'")
     ap.add_argument("--checks", type=int, default=3, help="mpmath checks per method")
     ap.add_argument("--quick", action="store_true", help="small sizes, no pooltool (smoke test)")
     ap.add_argument("--no-pooltool", action="store_true", help="skip pooltool")
@@ -866,11 +1140,18 @@ def parse(argv: Sequence[str] | None) -> argparse.Namespace:
     ap.add_argument("--overhead-pairs", type=int, default=1_000_000)
     ap.add_argument("--overhead-rounds", type=int, default=5, help="Python/Rust alternations")
     ap.add_argument("--kernel-bin", help="prebuilt examples/kernel_timing binary (else cargo)")
+    ap.add_argument("--paths", action="store_true", help="pool-table paths vs pooltool")
+    ap.add_argument("--path-pairs", type=int, default=200_000, help="pairs of pool-ball paths")
+    ap.add_argument("--path-rounds", type=int, default=3, help="ballcollide/pooltool rounds")
+    ap.add_argument("--path-bin", help="prebuilt examples/path_timing binary (else cargo)")
     args = ap.parse_args(argv)
     if args.quick:
         args.pairs, args.loop_pairs, args.batch_pairs = 5_000, 300, 5_000
         args.repeats, args.no_pooltool = 3, True
-    args.sets = SETS if args.sets == "all" else tuple(args.sets.split(","))
+    if args.sets in ("all", "none"):
+        args.sets = SETS if args.sets == "all" else ()
+    else:
+        args.sets = tuple(args.sets.split(","))
     unknown = set(args.sets) - set(SETS)
     if unknown:
         ap.error(f"unknown sets {sorted(unknown)}; choose from {SETS}")
@@ -919,6 +1200,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     pt = setup_pooltool(args)
     for name in args.sets:
         run_set(name, args, pt)
+    if args.paths:
+        path_set(args, pt)
     if args.overhead:
         overhead(args)
     if args.plot:
