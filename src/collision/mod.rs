@@ -200,7 +200,11 @@ fn first_contact_in_unit(
 ) -> Option<f64> {
     let initial = Gap::between(a, b, radius, 0.0);
     let g0 = initial.value(0.0);
-    if g0 <= 0.0 && approaching(&initial) {
+    // Apart or not at the start, on numbers that cannot underflow (the pair's unit of length
+    // is chosen from speeds and frictions too, and beside a far larger one the squares of the
+    // distance and the radius may): the same sign as `g0` wherever `g0` is exact.
+    let apart = apart_at_start(&initial);
+    if !apart && approaching(&initial) {
         return (t_max > 0.0).then_some(0.0);
     }
     if let Some(answer) = straight::first_contact(a, b, radius, t_max, g0) {
@@ -216,7 +220,7 @@ fn first_contact_in_unit(
         (ta.min(tb), ta.max(tb))
     };
     // With no contact in the first window, the balls are apart at its end.
-    let mut previous_positive = g0 > 0.0 || moving.no_entry;
+    let mut previous_positive = apart || moving.no_entry;
     let windows = [(0.0, t1), (t1, t2), (t2, f64::INFINITY)];
     for (start, end) in windows.into_iter().skip(usize::from(moving.no_entry)) {
         // Windows are searched whole, whatever the horizon, which only cuts the answer: a
@@ -248,6 +252,39 @@ fn first_contact_in_unit(
         }
     }
     None
+}
+
+/// Whether the balls are apart at the window's start (`g(0) > 0`), decided in the unit of
+/// the larger of the distance and the radius.
+pub(crate) fn apart_at_start<const D: usize>(gap: &Gap<D>) -> bool {
+    let unit = LengthUnit::of(largest([gap.offset.amax(), gap.radius]));
+    let start = Gap {
+        offset: gap.offset.map(|x| unit.apply(x)),
+        velocity: SVector::zeros(),
+        acceleration: SVector::zeros(),
+        radius: unit.apply(gap.radius),
+    };
+    start.value(0.0) > 0.0
+}
+
+/// A window's motion in time units of the window (every field a length: the offset, the
+/// velocity times the unit, the acceleration times its square, the radius) in the unit of its
+/// own largest field: the same numbers up to an exact power of two, so that the window
+/// search, whose every decision is homogeneous in lengths, takes the same steps.
+fn in_own_unit<const D: usize>(gap: &Gap<D>) -> Gap<D> {
+    let unit = LengthUnit::of(largest([
+        gap.offset.amax(),
+        gap.velocity.amax(),
+        gap.acceleration.amax(),
+        gap.radius,
+    ]));
+    let u = |x: SVector<f64, D>| x.map(|c| unit.apply(c));
+    Gap {
+        offset: u(gap.offset),
+        velocity: u(gap.velocity),
+        acceleration: u(gap.acceleration),
+        radius: unit.apply(gap.radius),
+    }
 }
 
 /// Whether balls touching or overlapping at the start are moving into each other: the first
@@ -426,7 +463,9 @@ fn search_plain_window<const D: usize>(
             };
         }
     };
-    let scaled = gap.time_scaled(h);
+    // In the window's units every field is a length: in their own unit (exact), no square
+    // underflows or overflows whatever the pair's unit was chosen from.
+    let scaled = in_own_unit(&gap.time_scaled(h));
     let end = length / h;
     let found = piecewise_entry(&scaled, end)
         .unwrap_or_else(|| first_entry(&scaled, end, previous_positive));

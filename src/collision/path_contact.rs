@@ -12,7 +12,9 @@
 
 use super::length_unit::{LengthUnit, largest};
 use super::window_box::apart_on_window;
-use super::{CollisionOptions, WindowSearch, approaching, bounded_length, search_window};
+use super::{
+    CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_length, search_window,
+};
 use crate::coefficients::Gap;
 use crate::error::{InputError, check_horizon, check_radius};
 use crate::path::{Path, Segment};
@@ -90,11 +92,11 @@ pub(crate) fn first_path_contact<const D: usize>(
             None => {
                 // At the first time: touching or overlapping balls collide only if they
                 // approach; otherwise only a later re-entry counts.
-                let g0 = gap.value(0.0);
-                if g0 <= 0.0 && approaching(&gap) {
+                let apart = apart_at_start(&gap);
+                if !apart && approaching(&gap) {
                     return Some(start);
                 }
-                g0 > 0.0
+                apart
             }
         };
         // Most windows of balls on paths are proven apart by the box the separation sweeps.
