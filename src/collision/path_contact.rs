@@ -11,7 +11,7 @@
 //! ([`length_unit`](super::length_unit)), so that the answer does not depend on it.
 
 use super::length_unit::{LengthUnit, largest};
-use super::window_box::apart_on_window;
+use super::window_box::{apart_on_window, paths_apart};
 use super::{
     CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_length, search_window,
 };
@@ -74,6 +74,12 @@ pub(crate) fn first_path_contact<const D: usize>(
 ) -> Option<f64> {
     let unit = pair_unit(a, b, radii);
     let radius = unit.apply(radii[0]) + unit.apply(radii[1]);
+    // Paths whose boxes keep apart need no window: a proof (its margin far above the
+    // search's rounding), so its answer is the search's, in any unit. On the caller's numbers
+    // (no copy); a radius sum that overflows proves nothing.
+    if paths_apart(a, b, radii[0] + radii[1]) {
+        return None;
+    }
     // `+ 0.0` makes a first time of −0 a +0: `max` leaves the sign of equal zeros to the
     // order of its operands, and the answer must not depend on which path is A.
     let mut start = a.first()?.start.max(b.first()?.start) + 0.0;

@@ -197,10 +197,16 @@ pub fn pair(case: &PairCase, k: i32, m: i32) -> Check {
     // positions' squares can then underflow (2^±359 lost a contact at 0).
     // And only within the contract's range: the pair's non-zero magnitudes within 2^±400 of
     // each other (a friction of 1e154 beside positions of 0.1 is outside it).
-    let magnitudes = a.iter().chain(&b).chain(std::iter::once(&radius)).map(|x| x.abs());
+    let magnitudes = a
+        .iter()
+        .chain(&b)
+        .chain(std::iter::once(&radius))
+        .map(|x| x.abs());
     let (lo, hi) = magnitudes
         .filter(|&x| x > 0.0)
-        .fold((f64::INFINITY, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)));
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
+            (lo.min(x), hi.max(x))
+        });
     if m.abs() <= 30
         && hi / lo <= 2f64.powi(400)
         && let (Some(sa), Some(sb), Some(st)) = (scale_time(&a), scale_time(&b), horizon)
