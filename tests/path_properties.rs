@@ -578,6 +578,12 @@ fn check_valid_answer<const D: usize>(pair: &Pair<D>, t_max: f64) -> Result<(), 
     );
     prop_assert_eq!(batch[0].to_bits(), t.unwrap_or(INF).to_bits());
     prop_assert_eq!(bits(t), bits(pair.swapped().time_until(t_max)));
+    // And in other units of length, where they are exact.
+    for k in [-7, 1, 64] {
+        if let Some(scaled) = scaled(pair, k) {
+            prop_assert_eq!(bits(t), bits(scaled.time_until(t_max)), "2^{}", k);
+        }
+    }
     Ok(())
 }
 
