@@ -3,13 +3,16 @@
 //!
 //! Exact symmetries of float arithmetic must give the same bits: swapping A and B, quarter
 //! turns and reflections in the plane, sign flips of the axes in space, lengths scaled by a
-//! power of two over the whole exponent range, a 2-D pair embedded in 3-D at a common height,
-//! the batch against the single query, a horizon after the contact. Time shifts on a dyadic
-//! grid leave every window the same, so the answer moves by the shift to the rounding of the
-//! final sum. Inexact transformations (translation, general rotations, axis permutations in
-//! space, arbitrary time shifts, splitting a segment, a friction ball against its path) must
-//! agree within [`close`]'s tolerance, on configurations that are [`robust`]: not within
-//! rounding of a graze, where the hit/miss answer is legitimately undecided.
+//! power of two over the whole exponent range, time by a power of two, a 2-D pair embedded in
+//! 3-D at a common height, the batch against the single query, a horizon after the contact.
+//! Time shifts on a dyadic grid leave every window the same, so the answer moves by the shift
+//! to the rounding of the final sum. Inexact transformations (translation, general rotations,
+//! axis permutations in space, arbitrary time shifts, splitting a segment, a friction ball
+//! against its path) must agree within [`close`]'s tolerance, on configurations that are
+//! [`robust`]: not within rounding of a graze, where the hit/miss answer is legitimately
+//! undecided. Every answer must be valid (finite, from the first time on, before the horizon)
+//! for inputs from the whole float range, and a contact (the distance is the contact distance
+//! there, and a sampled overlap after a separation is never missed).
 //!
 //! Bad input (the checked constructors, the single query and the batch) must be a clear error
 //! naming the argument and the index (pair and segment in a batch), never a panic.
@@ -194,7 +197,9 @@ fn pool_path(start: f64, p: Vector2<f64>, v: Vector2<f64>, slip: f64, slide: f64
 }
 
 /// Two billiard balls on a 2.54 × 1.27 m table, their paths begun at different times (the
-/// events that gave them), half of the shots aimed at the other ball's first position.
+/// events that gave them): a third moving freely, a third shot at a ball at rest (aimed within
+/// 1.5 contact distances of its centre), a third with B's path moved so that at a random time
+/// in the first 2 s it is within 1.2 contact distances (in each coordinate) of A.
 fn pool_pair() -> impl Strategy<Value = Pair<2>> {
     let ball = (
         0.0..3.0f64,
@@ -204,22 +209,42 @@ fn pool_pair() -> impl Strategy<Value = Pair<2>> {
         -1.5..1.5f64,
         0.0..1.0f64,
     );
-    (ball.clone(), ball, prop::bool::ANY, -1.5..1.5f64).prop_map(
-        |((sa, pa, va, ta, slip_a, fa), (sb, pb, vb, tb, slip_b, fb), aimed, offset)| {
+    let aim = (
+        0..3u8,
+        -1.5..1.5f64,
+        0.0..2.0f64,
+        prop::array::uniform2(-1.2..1.2f64),
+    );
+    (ball.clone(), ball, aim).prop_map(
+        |(
+            (sa, pa, va, ta, slip_a, fa),
+            (sb, pb, vb, tb, slip_b, fb),
+            (mode, offset, when, near),
+        )| {
             let radius = 0.05715;
             let (pa, pb) = (Vector2::new(pa.0, pa.1), Vector2::new(pb.0, pb.1));
-            let mut ta = ta;
-            if aimed {
+            let (mut ta, mut vb) = (ta, vb);
+            if mode == 1 {
                 let d = pb - pa;
                 let dist = d.norm().max(1e-3);
                 ta = d.y.atan2(d.x) + (offset * radius / dist).clamp(-1.0, 1.0).asin();
+                vb = 0.0;
             }
             let dir = |t: f64| Vector2::new(t.cos(), t.sin());
-            Pair {
+            let mut pair = Pair {
                 a: pool_path(sa, pa, dir(ta) * va, slip_a, fa),
                 b: pool_path(sb, pb, dir(tb) * vb, slip_b, fb),
                 radius,
+            };
+            if mode == 2 {
+                let u = pair.t_from() + when;
+                let at = |s: &Segments<2>| Path::new(s.clone()).expect("valid").position_at(u);
+                let shift = at(&pair.a) - at(&pair.b) + Vector2::from(near) * radius;
+                for s in &mut pair.b {
+                    s.position += shift;
+                }
             }
+            pair
         },
     )
 }
@@ -274,6 +299,26 @@ fn close_at(x: Option<f64>, y: Option<f64>, scale: f64) -> Result<(), TestCaseEr
             "hit/miss differ: {x:?} vs {y:?}"
         ))),
     }
+}
+
+#[test]
+fn the_robustness_filter_rejects_grazes_and_keeps_clear_answers() {
+    // A rolls along y = 0 past B at rest at distance `gap` from its line.
+    let pair = |gap: f64| Pair::<2> {
+        a: vec![Segment::new(
+            0.0,
+            Vector2::new(-1.0, 0.0),
+            Vector2::new(1.0, 0.0),
+            Vector2::zeros(),
+        )],
+        b: vec![Segment::at_rest(0.0, Vector2::new(0.0, gap))],
+        radius: 0.5,
+    };
+    assert!(!robust(&pair(0.5))); // tangent
+    assert!(!robust(&pair(0.5 * (1.0 - 1e-9)))); // a graze
+    assert!(!robust(&pair(0.5 * (1.0 + 1e-9)))); // a near miss
+    assert!(robust(&pair(0.25))); // a clear hit
+    assert!(robust(&pair(0.75))); // a clear miss
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -533,6 +578,12 @@ fn check_valid_answer<const D: usize>(pair: &Pair<D>, t_max: f64) -> Result<(), 
     );
     prop_assert_eq!(batch[0].to_bits(), t.unwrap_or(INF).to_bits());
     prop_assert_eq!(bits(t), bits(pair.swapped().time_until(t_max)));
+    // And in other units of length, where they are exact.
+    for k in [-7, 1, 64] {
+        if let Some(scaled) = scaled(pair, k) {
+            prop_assert_eq!(bits(t), bits(scaled.time_until(t_max)), "2^{}", k);
+        }
+    }
     Ok(())
 }
 
@@ -557,8 +608,11 @@ fn check_contacts<const D: usize>(pair: &Pair<D>) -> Result<(), TestCaseError> {
     }
     let t_from = pair.t_from();
     let mut apart = false;
-    for i in 0..=400 {
-        let u = t_from + f64::from(i) * 0.03;
+    // Every 0.03 s for 12 s, then 5 % further each time up to ~1e5 s (the last segments last
+    // for ever, and accelerating paths may meet late).
+    let steady = (0..=400).map(|i| f64::from(i) * 0.03);
+    let growing = (1..=190).map(|i| 12.0 * 1.05f64.powi(i));
+    for u in steady.chain(growing).map(|s| t_from + s) {
         let d = distance(u);
         apart |= d > r * (1.0 + 1e-6);
         if apart && d < r * (1.0 - 1e-6) {
@@ -569,6 +623,32 @@ fn check_contacts<const D: usize>(pair: &Pair<D>) -> Result<(), TestCaseError> {
             break;
         }
     }
+    Ok(())
+}
+
+/// B on A's path moved by a constant `distance` along `direction` (rolling side by side with
+/// equal accelerations, falling under the same gravity, overlapping or apart): the relative
+/// motion is nil on every segment (positions jump by roundings at segment starts, but never
+/// from apart into overlap), so there is no contact, whether they overlap or not.
+fn check_together<const D: usize>(
+    a: Segments<D>,
+    direction: SVector<f64, D>,
+    distance: f64,
+    radius: f64,
+) -> Result<(), TestCaseError> {
+    let n = direction.norm();
+    prop_assume!(n > 0.1);
+    let d = direction * (distance / n);
+    let b = a
+        .iter()
+        .map(|s| Segment {
+            position: s.position + d,
+            ..*s
+        })
+        .collect();
+    let pair = Pair { a, b, radius };
+    prop_assert_eq!(pair.time(), None);
+    prop_assert_eq!(pair.swapped().time(), None);
     Ok(())
 }
 
@@ -801,6 +881,9 @@ proptest! {
     fn axis_permutations_agree_in_3d(pair in pair::<3>(), p in 0usize..6) {
         const PERMUTATIONS: [[usize; 3]; 6] =
             [[0, 1, 2], [0, 2, 1], [1, 0, 2], [1, 2, 0], [2, 0, 1], [2, 1, 0]];
+        // Not bit for bit: the gap's value takes the components by magnitude, but the
+        // slopes that steer Newton are dot products of three terms, rounded in axis order;
+        // answers an ulp or so apart occur (19 of 15,471 contacts in one run of 40,000 cases).
         prop_assume!(robust(&pair));
         let [i, j, k] = PERMUTATIONS[p];
         let permuted = pair.map_vectors(|v| Vector3::new(v[i], v[j], v[k]));
@@ -886,6 +969,26 @@ proptest! {
     #[test]
     fn the_batch_is_the_single_query_bit_for_bit_in_3d(case in batch_case::<3>()) {
         check_batch(&case)?;
+    }
+
+    #[test]
+    fn balls_moving_together_never_collide_in_2d(
+        a in path::<2>(),
+        direction in prop::array::uniform2(-1.0..1.0f64),
+        distance in prop_oneof![0.0..0.99f64, 1.01..3.0f64],
+        radius in 0.05..0.6f64,
+    ) {
+        check_together(a, Vector2::from(direction), distance * radius, radius)?;
+    }
+
+    #[test]
+    fn balls_moving_together_never_collide_in_3d(
+        a in path::<3>(),
+        direction in prop::array::uniform3(-1.0..1.0f64),
+        distance in prop_oneof![0.0..0.99f64, 1.01..3.0f64],
+        radius in 0.05..0.6f64,
+    ) {
+        check_together(a, Vector3::from(direction), distance * radius, radius)?;
     }
 
     #[test]
@@ -1048,6 +1151,8 @@ proptest! {
 
     #[test]
     fn a_friction_ball_and_its_path_agree((a, b, radius) in ball_pair()) {
+        // Within the tolerance, not bit for bit: the friction search and the path search form
+        // the motion differently (about a third of the contacts differ, by a few ulps).
         prop_assume!(robust_balls(&a, &b, radius));
         let (pa, pb) = (a.path().expect("a path"), b.path().expect("a path"));
         let path = path_collision_time(&pa, &pb, radius, &CollisionOptions::default())
@@ -1716,6 +1821,7 @@ proptest! {
         n in 0usize..6,
         shape in (0usize..4, 0usize..4, 0usize..8, 0usize..8),
         values in prop::collection::vec(fuzz_value(), 0..200),
+        unsorted in prop::collection::vec(prop_oneof![6 => Just(0usize), 1 => 1usize..4], 0..12),
         starts in prop::collection::vec(
             prop_oneof![4 => 0.0..3.0f64, 1 => Just(INF), 1 => fuzz_value()],
             0..40,
@@ -1732,9 +1838,12 @@ proptest! {
             let count = paths * k;
             let mut start: Vec<f64> =
                 (0..count).map(|r| starts.get(r).copied().unwrap_or(0.0)).collect();
-            for path in start.chunks_mut(k.max(1)) {
+            // Most paths sorted (so that most are valid); a few rows moved from the front to
+            // the back, so that a finite start may follow `+∞` padding.
+            for (p, path) in start.chunks_mut(k.max(1)).enumerate() {
                 if path.first().is_some_and(|s| s.is_finite()) {
                     path.sort_by(f64::total_cmp);
+                    path.rotate_left(unsorted.get(p).copied().unwrap_or(0) % path.len());
                 }
             }
             let mut take = || -> [f64; 2] {
