@@ -104,7 +104,9 @@ const NAMES: [Names; 2] = [
 /// The first invalid pair's error (lowest index), naming the argument and, for a path's
 /// values, the pair and the segment (``start_b[7, 2]: starts must not decrease, got 1 after
 /// 2``); a side's paths must number 1 or `out.len()`, and its rows `N·K` in every slice.
-/// On error, `out` holds unspecified values.
+/// Shapes and shared values come first: a radius or horizon shared by all pairs, and a
+/// broadcast path (reported at pair 0, even in an empty batch). On error, `out` holds
+/// unspecified values.
 ///
 /// ```
 /// use ballcollide::batch::{PathPairs, PathRows, PerPair, Threads, path_collision_times};
@@ -131,33 +133,47 @@ pub fn path_collision_times<const D: usize>(
     pairs.t_max.check_len("t_max", n)?;
     pairs.radius.check_shared("radius", check_radius)?;
     pairs.t_max.check_shared("t_max", check_horizon)?;
+    // A broadcast path is a shared value: checked first, even in an empty batch.
+    let broadcast = [pairs.a.len() == 1, pairs.b.len() == 1];
+    let mut shared = Vec::new();
+    for (side, names, one) in [
+        (&pairs.a, &NAMES[0], broadcast[0]),
+        (&pairs.b, &NAMES[1], broadcast[1]),
+    ] {
+        if one {
+            read_path(side, 0, names, &mut shared).map_err(|e| e.in_pair(0))?;
+        }
+    }
     run_chunks(out, threads, |offset, chunk| {
         // One buffer per side and task, reused for every pair (a broadcast side is read once).
         let (mut a, mut b) = (Vec::new(), Vec::new());
-        let broadcast_a = pairs.a.len() == 1;
-        if broadcast_a {
+        if broadcast[0] {
             read_path(&pairs.a, 0, &NAMES[0], &mut a).map_err(|e| e.in_pair(0))?;
+        }
+        if broadcast[1] {
+            read_path(&pairs.b, 0, &NAMES[1], &mut b).map_err(|e| e.in_pair(0))?;
         }
         for (k, slot) in chunk.iter_mut().enumerate() {
             let i = offset + k;
-            *slot = pair_time(pairs, i, broadcast_a, [&mut a, &mut b])?;
+            *slot = pair_time(pairs, i, broadcast, [&mut a, &mut b])?;
         }
         Ok(())
     })
 }
 
-/// Pair `i`'s answer, its paths read into the buffers (A's already there if broadcast).
+/// Pair `i`'s answer, its paths read into the buffers (a broadcast side's already there).
 fn pair_time<const D: usize>(
     pairs: &PathPairs<'_, D>,
     i: usize,
-    broadcast_a: bool,
+    [broadcast_a, broadcast_b]: [bool; 2],
     [a, b]: [&mut Vec<Segment<D>>; 2],
 ) -> Result<f64, InputError> {
     if !broadcast_a {
         read_path(&pairs.a, i, &NAMES[0], a).map_err(|e| e.in_pair(i))?;
     }
-    let j = if pairs.b.len() == 1 { 0 } else { i };
-    read_path(&pairs.b, j, &NAMES[1], b).map_err(|e| e.in_pair(i))?;
+    if !broadcast_b {
+        read_path(&pairs.b, i, &NAMES[1], b).map_err(|e| e.in_pair(i))?;
+    }
     let radius = check_radius("radius", pairs.radius.get(i)).map_err(|e| e.at(i))?;
     let t_max = check_horizon("t_max", pairs.t_max.get(i)).map_err(|e| e.at(i))?;
     Ok(first_path_contact(a, b, [radius, 0.0], t_max).unwrap_or(f64::INFINITY))
