@@ -13,9 +13,7 @@ _Number = SupportsFloat | SupportsIndex
 _PerPair = _Number | npt.ArrayLike
 _F64Array = npt.NDArray[np.float64]
 # One path: (start (K,), pos (K, D), vel (K, D), acc (K, D)).
-_Path = (
-    tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike] | list[npt.ArrayLike]
-)
+_Path = tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike] | list[npt.ArrayLike]
 _I64Array = npt.NDArray[np.int64]
 
 __all__ = [
