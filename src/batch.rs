@@ -8,7 +8,9 @@
 
 mod paths;
 
-pub use paths::{PathPairs, PathRows, path_collision_times};
+pub use paths::{PathPairs, PathRows, path_collision_times, path_positions_at};
+#[cfg(feature = "python")]
+pub(crate) use paths::{check_path_pairs, check_path_positions};
 
 use std::num::NonZeroUsize;
 use std::sync::{Arc, Mutex};

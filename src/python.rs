@@ -5,7 +5,8 @@
 //! read-only or big-endian arrays, any real number where a scalar goes), releases the GIL for
 //! batches large enough to be worth it, and calls [`crate::batch`], [`crate::scene`] and
 //! [`crate::poly`]. Validation of values is the core's, so Python and Rust give identical
-//! answers and messages.
+//! answers and messages. The functions on paths of constant-acceleration segments are in
+//! [`paths`].
 //!
 //! The `///` comments of the `#[pyfunction]`s below are the Python docstrings (numpydoc, with
 //! doctests run by `tests/python/test_api.py`): the one place the Python API is documented.
@@ -16,6 +17,7 @@
 //! Nothing here panics on any input.
 
 mod input_error;
+mod paths;
 mod read;
 
 use std::cell::Cell;
@@ -226,8 +228,8 @@ fn layout(py: Python<'_>) -> PyErr {
 }
 
 thread_local! {
-    /// How long the Rust kernel ran in this thread's last `collision_times` call of more than
-    /// [`INLINE_UP_TO`] pairs, in seconds.
+    /// How long the Rust kernel ran in this thread's last `collision_times` (or
+    /// `path_collision_times`) call of more than [`INLINE_UP_TO`] pairs, in seconds.
     static LAST_KERNEL_SECONDS: Cell<f64> = const { Cell::new(f64::NAN) };
 }
 
@@ -251,8 +253,8 @@ fn timed(
     result.map_err(|e| from_core(py, e))
 }
 
-/// Seconds the Rust kernel took inside this thread's last :func:`collision_times` call on
-/// more than 1024 pairs (NaN before any).
+/// Seconds the Rust kernel took inside this thread's last :func:`collision_times` (or
+/// :func:`path_collision_times`) call on more than 1024 pairs (NaN before any).
 ///
 /// What ``benchmarks/compare.py`` subtracts from the call's own time to measure what the
 /// binding adds, in the same call (separate runs on shared cores differ by more than that).
@@ -722,8 +724,8 @@ fn index_i64(i: usize) -> i64 {
     i64::try_from(i).unwrap_or(i64::MAX)
 }
 
-/// ballcollide's compiled core: collision times of balls slowing under friction, and real
-/// roots of polynomials of degree ≤ 4. The ``ballcollide`` package re-exports it.
+/// ballcollide's compiled core: collision times of balls slowing under friction and of balls
+/// on paths of constant-acceleration segments, and real roots of polynomials of degree ≤ 4. The ``ballcollide`` package re-exports it.
 #[pymodule(name = "_core")]
 fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
@@ -734,6 +736,9 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(collision_time, m)?,
         wrap_pyfunction!(collision_times, m)?,
         wrap_pyfunction!(positions_at, m)?,
+        wrap_pyfunction!(paths::path_collision_times, m)?,
+        wrap_pyfunction!(paths::path_collision_time, m)?,
+        wrap_pyfunction!(paths::path_positions_at, m)?,
         wrap_pyfunction!(real_roots, m)?,
         wrap_pyfunction!(pairwise_collision_times, m)?,
         wrap_pyfunction!(earliest_collision, m)?,

@@ -1,9 +1,12 @@
 //! The batch of path pairs: the single query's answers, bit for bit, whatever the threads,
-//! with A broadcast or not; errors naming the argument, the pair and the segment.
+//! with A broadcast or not; errors naming the argument, the pair and the segment. The batch
+//! of positions: `Path::position_at`'s, likewise.
 
 use std::num::NonZeroUsize;
 
-use ballcollide::batch::{PathPairs, PathRows, PerPair, Threads, path_collision_times};
+use ballcollide::batch::{
+    PathPairs, PathRows, PerPair, Threads, path_collision_times, path_positions_at,
+};
 use ballcollide::path::Path;
 use ballcollide::{CollisionOptions, path_collision_time};
 
@@ -173,4 +176,74 @@ fn errors_name_the_argument_the_pair_and_the_segment() {
     };
     let err = path_collision_times(&short, &mut out, Threads::All).unwrap_err();
     assert_eq!(err.argument(), "pos_b");
+}
+
+fn check_positions<const D: usize>(seed: u64) {
+    let mut rng = Rng(seed);
+    let n = 3000;
+    let paths = Rows::<D>::random(&mut rng, n, 4);
+    let times: Vec<f64> = (0..n).map(|_| rng.uniform(-1.0, 8.0)).collect();
+    let mut one = vec![[0.0; D]; n];
+    let mut all = vec![[0.0; D]; n];
+    let side = paths.side();
+    let t = PerPair::Each(&times);
+    path_positions_at(&side, t, &mut one, Threads::AtMost(NonZeroUsize::MIN)).unwrap();
+    path_positions_at(&side, t, &mut all, Threads::All).unwrap();
+    for i in 0..n {
+        let want: [f64; D] = paths.path(i).position_at(times[i]).into();
+        assert_eq!(one[i].map(f64::to_bits), want.map(f64::to_bits), "path {i}");
+        assert_eq!(all[i].map(f64::to_bits), want.map(f64::to_bits), "path {i}");
+    }
+    // One path at every time.
+    let first = PathRows {
+        start: &paths.start[..paths.k],
+        pos: &paths.pos[..paths.k],
+        vel: &paths.vel[..paths.k],
+        acc: &paths.acc[..paths.k],
+        segments: paths.k,
+    };
+    path_positions_at(&first, t, &mut all, Threads::All).unwrap();
+    let path = paths.path(0);
+    for (i, x) in all.iter().enumerate() {
+        let want: [f64; D] = path.position_at(times[i]).into();
+        assert_eq!(x.map(f64::to_bits), want.map(f64::to_bits), "time {i}");
+    }
+}
+
+#[test]
+fn the_batch_of_positions_is_the_paths_bit_for_bit() {
+    check_positions::<2>(19);
+    check_positions::<3>(20);
+}
+
+#[test]
+fn position_errors_name_the_argument_the_path_and_the_segment() {
+    let mut rng = Rng(6);
+    let mut paths = Rows::<3>::random(&mut rng, 10, 3);
+    let mut out = [[0.0; 3]; 10];
+    paths.start[5 * 3] = 0.0;
+    paths.acc[5 * 3][2] = f64::INFINITY;
+    let err = path_positions_at(&paths.side(), PerPair::All(1.0), &mut out, Threads::All);
+    assert_eq!(
+        err.unwrap_err().to_string(),
+        "acc[5, 0]: must be finite, got inf"
+    );
+    paths.acc[5 * 3][2] = 0.0;
+    let mut times = [1.0; 10];
+    times[8] = f64::NAN;
+    let err = path_positions_at(&paths.side(), PerPair::Each(&times), &mut out, Threads::All);
+    assert_eq!(
+        err.unwrap_err().to_string(),
+        "t[8]: must be finite, got NaN"
+    );
+    let err = path_positions_at(
+        &paths.side(),
+        PerPair::All(1.0),
+        &mut out[..4],
+        Threads::All,
+    );
+    assert_eq!(
+        err.unwrap_err().to_string(),
+        "start: has 10 rows, expected 4"
+    );
 }

@@ -14,6 +14,9 @@ and any real number ``float()`` accepts, but not a bool, where a number goes):
 - :func:`collision_time`: one pair;
 - :func:`collision_times`: N pairs at once, on all cores, with the GIL released;
 - :func:`positions_at`: where N balls are at a time ``t`` (a stopped ball stays put);
+- :func:`path_collision_times`, :func:`path_collision_time`, :func:`path_positions_at`: balls
+  on paths of constant-acceleration segments in 2-D or 3-D (a billiard ball sliding on a
+  curve, then rolling, then at rest; a ball in the air), the same questions;
 - :func:`real_roots`: real roots of N polynomials of degree 1 to 4, like ``numpy.roots``;
 - :func:`pairwise_collision_times`, :func:`earliest_collision`, :func:`first_contacts`: a
   scene of N balls (which pairs touch, which touch first), with a broad phase that prunes
@@ -21,7 +24,8 @@ and any real number ``float()`` accepts, but not a bool, where a number goes):
 
 Bad input (NaN or infinity, negative friction, ``radius ≤ 0``, wrong shapes or lengths)
 raises :class:`InputError`, a ``ValueError`` naming the argument and, for batches, the first
-bad index (``.argument``, ``.index``, ``.reason``); an argument that is not made of real
+bad index (``.argument``, ``.index``, ``.reason``, and ``.segment`` for a path's segment); an
+argument that is not made of real
 numbers raises ``TypeError``.
 
 The functions are those of the compiled ``_core`` module, re-exported: it reads and checks
@@ -43,6 +47,9 @@ from ._core import (
     earliest_collision,
     first_contacts,
     pairwise_collision_times,
+    path_collision_time,
+    path_collision_times,
+    path_positions_at,
     positions_at,
     real_roots,
 )
@@ -55,6 +62,9 @@ __all__ = [
     "earliest_collision",
     "first_contacts",
     "pairwise_collision_times",
+    "path_collision_time",
+    "path_collision_times",
+    "path_positions_at",
     "positions_at",
     "real_roots",
 ]

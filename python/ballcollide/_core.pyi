@@ -12,6 +12,8 @@ _Number = SupportsFloat | SupportsIndex
 # One number for every pair (ball), or one per pair: shape (N,).
 _PerPair = _Number | npt.ArrayLike
 _F64Array = npt.NDArray[np.float64]
+# One path: (start (K,), pos (K, D), vel (K, D), acc (K, D)).
+_Path = tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike] | list[npt.ArrayLike]
 _I64Array = npt.NDArray[np.int64]
 
 __all__ = [
@@ -23,6 +25,9 @@ __all__ = [
     "earliest_collision",
     "first_contacts",
     "pairwise_collision_times",
+    "path_collision_time",
+    "path_collision_times",
+    "path_positions_at",
     "positions_at",
     "real_roots",
 ]
@@ -32,6 +37,7 @@ __version__: Final[str]
 class InputError(ValueError):
     argument: str
     index: int | None
+    segment: int | None
     reason: str
 
 def collision_time(
@@ -63,6 +69,38 @@ def positions_at(
     pos: npt.ArrayLike,
     vel: npt.ArrayLike,
     friction: _PerPair,
+    t: _PerPair,
+    *,
+    num_threads: SupportsIndex | None = None,
+    out: _F64Array | None = None,
+) -> _F64Array: ...
+def path_collision_times(
+    start_a: npt.ArrayLike,
+    pos_a: npt.ArrayLike,
+    vel_a: npt.ArrayLike,
+    acc_a: npt.ArrayLike,
+    start_b: npt.ArrayLike,
+    pos_b: npt.ArrayLike,
+    vel_b: npt.ArrayLike,
+    acc_b: npt.ArrayLike,
+    radius: _PerPair,
+    *,
+    t_max: _PerPair = ...,
+    num_threads: SupportsIndex | None = None,
+    out: _F64Array | None = None,
+) -> _F64Array: ...
+def path_collision_time(
+    path_a: _Path,
+    path_b: _Path,
+    radius: _Number,
+    *,
+    t_max: _Number = ...,
+) -> float: ...
+def path_positions_at(
+    start: npt.ArrayLike,
+    pos: npt.ArrayLike,
+    vel: npt.ArrayLike,
+    acc: npt.ArrayLike,
     t: _PerPair,
     *,
     num_threads: SupportsIndex | None = None,

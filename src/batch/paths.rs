@@ -1,5 +1,5 @@
 //! Many pairs of paths at once: [`path_collision_times`] over rows, in parallel, into a
-//! caller's buffer.
+//! caller's buffer; and where many paths are at given times ([`path_positions_at`]).
 //!
 //! Each side of a batch is `N` paths of `K` segments in rows ([`PathRows`]: the layout of the
 //! `(N, K)` and `(N, K, D)` arrays numpy hands over), or a single path broadcast against every
@@ -11,8 +11,8 @@
 
 use super::{PerPair, Threads, check_len, run_chunks};
 use crate::collision::path_contact::first_path_contact;
-use crate::error::{InputError, InputErrorKind, check_horizon, check_radius};
-use crate::path::{Names, Segment, segments_from_rows};
+use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
+use crate::path::{Names, Segment, locate, segments_from_rows};
 
 /// One side of a batch of path pairs: `N` paths of `segments` rows each, row `k` of path `i`
 /// at `i·segments + k` of every slice.
@@ -126,24 +126,8 @@ pub fn path_collision_times<const D: usize>(
     out: &mut [f64],
     threads: Threads,
 ) -> Result<(), InputError> {
-    let n = out.len();
-    check_side(&pairs.a, &NAMES[0], n)?;
-    check_side(&pairs.b, &NAMES[1], n)?;
-    pairs.radius.check_len("radius", n)?;
-    pairs.t_max.check_len("t_max", n)?;
-    pairs.radius.check_shared("radius", check_radius)?;
-    pairs.t_max.check_shared("t_max", check_horizon)?;
-    // A broadcast path is a shared value: checked first, even in an empty batch.
+    check_path_pairs(pairs, out.len())?;
     let broadcast = [pairs.a.len() == 1, pairs.b.len() == 1];
-    let mut shared = Vec::new();
-    for (side, names, one) in [
-        (&pairs.a, &NAMES[0], broadcast[0]),
-        (&pairs.b, &NAMES[1], broadcast[1]),
-    ] {
-        if one {
-            read_path(side, 0, names, &mut shared).map_err(|e| e.in_pair(0))?;
-        }
-    }
     run_chunks(out, threads, |offset, chunk| {
         // One buffer per side and task, reused for every pair (a broadcast side is read once).
         let (mut a, mut b) = (Vec::new(), Vec::new());
@@ -160,6 +144,114 @@ pub fn path_collision_times<const D: usize>(
         Ok(())
     })
 }
+
+/// The checks of [`path_collision_times`] that need no pair: each side's rows, its number of
+/// paths 1 or `n`, `radius` and `t_max` of length `n` if per pair, shared values valid (a
+/// broadcast path among them). The
+/// Python binding runs them before it looks at a caller's `out` array.
+pub(crate) fn check_path_pairs<const D: usize>(
+    pairs: &PathPairs<'_, D>,
+    n: usize,
+) -> Result<(), InputError> {
+    check_side(&pairs.a, &NAMES[0], n)?;
+    check_side(&pairs.b, &NAMES[1], n)?;
+    pairs.radius.check_len("radius", n)?;
+    pairs.t_max.check_len("t_max", n)?;
+    pairs.radius.check_shared("radius", check_radius)?;
+    pairs.t_max.check_shared("t_max", check_horizon)?;
+    // A broadcast path is a shared value: checked here, even in an empty batch.
+    let mut shared = Vec::new();
+    for (side, names) in [(&pairs.a, &NAMES[0]), (&pairs.b, &NAMES[1])] {
+        if side.len() == 1 {
+            read_path(side, 0, names, &mut shared).map_err(|e| e.in_pair(0))?;
+        }
+    }
+    Ok(())
+}
+
+/// The argument names of [`path_positions_at`]'s rows in errors.
+const NAMES_ONE: Names = Names {
+    segments: "start",
+    start: "start",
+    position: "pos",
+    velocity: "vel",
+    acceleration: "acc",
+};
+
+/// The centre of path `i` of `paths` (or of its only path) at time `t[i]`, written to `out[i]`:
+/// what [`Path::position_at`](crate::Path::position_at) gives for that path; times before a
+/// path's first start give its first position.
+///
+/// # Errors
+/// The first invalid item's error (lowest index), naming the argument, and for a path's
+/// values the item and the segment (``vel[3, 1]: must be finite, got NaN``): a NaN or
+/// infinite time; the paths must number 1 or `out.len()`, `t` have `out.len()` values if per
+/// item. On error, `out` holds unspecified values.
+///
+/// ```
+/// use ballcollide::batch::{PathRows, PerPair, Threads, path_positions_at};
+///
+/// // One path at three times (broadcast): 1 m/s along x, then at rest from t = 2 s.
+/// let path = PathRows {
+///     start: &[0.0, 2.0],
+///     pos: &[[0.0, 0.0], [2.0, 0.0]],
+///     vel: &[[1.0, 0.0], [0.0, 0.0]],
+///     acc: &[[0.0, 0.0], [0.0, 0.0]],
+///     segments: 2,
+/// };
+/// let mut out = [[0.0; 2]; 3];
+/// path_positions_at(&path, PerPair::Each(&[-1.0, 0.5, 9.0]), &mut out, Threads::All)?;
+/// assert_eq!(out, [[0.0, 0.0], [0.5, 0.0], [2.0, 0.0]]);
+///
+/// let err = path_positions_at(&path, PerPair::All(f64::NAN), &mut out, Threads::All);
+/// assert_eq!(err.unwrap_err().to_string(), "t: must be finite, got NaN");
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+pub fn path_positions_at<const D: usize>(
+    paths: &PathRows<'_, D>,
+    t: PerPair<'_>,
+    out: &mut [[f64; D]],
+    threads: Threads,
+) -> Result<(), InputError> {
+    check_path_positions(paths, t, out.len())?;
+    run_chunks(out, threads, |offset, chunk| {
+        let mut segments = Vec::new();
+        let broadcast = paths.len() == 1;
+        if broadcast {
+            read_path(paths, 0, &NAMES_ONE, &mut segments).map_err(|e| e.in_pair(0))?;
+        }
+        for (k, slot) in chunk.iter_mut().enumerate() {
+            let i = offset + k;
+            if !broadcast {
+                read_path(paths, i, &NAMES_ONE, &mut segments).map_err(|e| e.in_pair(i))?;
+            }
+            let time = finite("t", t.get(i)).map_err(|e| e.at(i))?;
+            let (segment, time) = locate(&segments, time);
+            *slot = segment.position_at(time).into();
+        }
+        Ok(())
+    })
+}
+
+/// The checks of [`path_positions_at`] that need no item: the rows, 1 or `n` paths, `t` of
+/// length `n` if per item and finite if shared. The Python binding runs them before it looks
+/// at a caller's `out` array.
+pub(crate) fn check_path_positions<const D: usize>(
+    paths: &PathRows<'_, D>,
+    t: PerPair<'_>,
+    n: usize,
+) -> Result<(), InputError> {
+    check_side(paths, &NAMES_ONE, n)?;
+    t.check_len("t", n)?;
+    t.check_shared("t", finite)?;
+    // A broadcast path is a shared value: checked here, even with no time to answer.
+    if paths.len() == 1 {
+        read_path(paths, 0, &NAMES_ONE, &mut Vec::new()).map_err(|e| e.in_pair(0))?;
+    }
+    Ok(())
+}
+
+/// Pair `i`'s answer, its paths read into the buffers (A's already there if broadcast).
 
 /// Pair `i`'s answer, its paths read into the buffers (a broadcast side's already there).
 fn pair_time<const D: usize>(

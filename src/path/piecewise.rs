@@ -191,12 +191,19 @@ impl<const D: usize> Path<D> {
     /// and as the largest finite time if `+∞` (so that a path ending at rest reports its resting
     /// point there rather than `0·∞`).
     fn locate(&self, t: f64) -> (&Segment<D>, f64) {
-        let t = t.max(self.first_start()).min(f64::MAX);
-        // The starts never decrease, so the segments begun by `t` are a prefix, and it holds
-        // at least the first segment, which begins at the first start ≤ `t`.
-        let begun = self.segments.partition_point(|segment| segment.start <= t);
-        (&self.segments[begun - 1], t)
+        locate(&self.segments, t)
     }
+}
+
+/// `Path::locate` on the segments of a valid path (at least one, starts in order): what the
+/// batch of positions uses on the rows it has read, without building a `Path`.
+pub(crate) fn locate<const D: usize>(segments: &[Segment<D>], t: f64) -> (&Segment<D>, f64) {
+    let first = segments.first().map_or(f64::NEG_INFINITY, |s| s.start);
+    let t = t.max(first).min(f64::MAX);
+    // The starts never decrease, so the segments begun by `t` are a prefix, and it holds
+    // at least the first segment, which begins at the first start ≤ `t`.
+    let begun = segments.partition_point(|segment| segment.start <= t);
+    (&segments[begun.saturating_sub(1)], t)
 }
 
 /// Checks that `segments` make a path: at least one, starts finite and never decreasing,

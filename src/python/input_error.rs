@@ -14,11 +14,16 @@ create_exception!(
      \n\
      - ``argument``: the argument's name, e.g. ``\"friction_b\"``;\n\
      - ``index``: the first offending element (the pair, ball or row) as an int, or\n\
-       ``None`` for a scalar argument or a whole array's shape or length;\n\
+       ``None`` for a scalar argument, a whole array's shape or length, or the one path of\n\
+       :func:`path_collision_time`;\n\
+     - ``segment``: for a path's values (the ``start``, ``pos``, ``vel`` and ``acc``\n\
+       arguments of the path functions), the offending segment as an int, else ``None``;\n\
      - ``reason``: what is wrong, e.g. ``\"friction must be ≥ 0, got -0.5\"``.\n\
      \n\
-     ``str(e)`` is ``f\"{argument}[{index}]: {reason}\"``, or ``f\"{argument}: {reason}\"``\n\
-     without an index.\n\
+     ``str(e)`` is ``f\"{argument}[{index}]: {reason}\"``, ``f\"{argument}[{index},\n\
+     {segment}]: {reason}\"`` for pair (or path) ``index``'s segment ``segment``,\n\
+     ``f\"{argument}[{segment}]: {reason}\"`` for a segment of a single path, or\n\
+     ``f\"{argument}: {reason}\"`` without either.\n\
      \n\
      >>> import ballcollide as bc\n\
      >>> try:\n\
@@ -26,7 +31,12 @@ create_exception!(
      ...                        [0.1, 0.1, -0.5], 0.5)\n\
      ... except bc.InputError as e:\n\
      ...     print(e.argument, e.index, e.reason, sep=\" | \")\n\
-     friction_b | 2 | friction must be ≥ 0, got -0.5\n"
+     friction_b | 2 | friction must be ≥ 0, got -0.5\n\
+     >>> try:\n\
+     ...     bc.path_positions_at([[0, 2, 1]], [[[0, 0]] * 3], [[[1, 0]] * 3], [[[0, 0]] * 3], 0)\n\
+     ... except bc.InputError as e:\n\
+     ...     print(e, e.index, e.segment, sep=\" | \")\n\
+     start[0, 2]: starts must not decrease, got 1 after 2 | 0 | 2\n"
 );
 
 /// An [`InputError`] about `argument` (at `index`, if any), with its attributes set.
@@ -36,15 +46,28 @@ pub(super) fn input_error(
     index: Option<usize>,
     reason: &str,
 ) -> PyErr {
-    let message = match index {
-        Some(i) => format!("{argument}[{i}]: {reason}"),
-        None => format!("{argument}: {reason}"),
+    located_error(py, argument, [index, None], reason)
+}
+
+/// An [`InputError`] about `argument` at `[index, segment]` (either or both may be absent: a
+/// segment of a single path has no index), with its attributes set.
+pub(super) fn located_error(
+    py: Python<'_>,
+    argument: &str,
+    [index, segment]: [Option<usize>; 2],
+    reason: &str,
+) -> PyErr {
+    let message = match (index, segment) {
+        (Some(i), Some(k)) => format!("{argument}[{i}, {k}]: {reason}"),
+        (Some(i), None) | (None, Some(i)) => format!("{argument}[{i}]: {reason}"),
+        (None, None) => format!("{argument}: {reason}"),
     };
     let err = InputError::new_err(message);
     let value = err.value(py);
     let set = value
         .setattr(pyo3::intern!(py, "argument"), argument)
         .and_then(|()| value.setattr(pyo3::intern!(py, "index"), index))
+        .and_then(|()| value.setattr(pyo3::intern!(py, "segment"), segment))
         .and_then(|()| value.setattr(pyo3::intern!(py, "reason"), reason));
     match set {
         Ok(()) => err,
@@ -54,5 +77,10 @@ pub(super) fn input_error(
 
 /// The core's [`crate::InputError`] as Python's: the same message, and its parts.
 pub(super) fn from_core(py: Python<'_>, e: crate::InputError) -> PyErr {
-    input_error(py, e.argument(), e.index(), &e.kind().to_string())
+    located_error(
+        py,
+        e.argument(),
+        [e.index(), e.segment()],
+        &e.kind().to_string(),
+    )
 }

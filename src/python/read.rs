@@ -63,9 +63,9 @@ impl<'py> Floats<'py> {
         }
     }
 
-    /// The values as `(x, y)` rows.
-    pub(super) fn rows(&self) -> &[[f64; 2]] {
-        self.values().as_chunks::<2>().0
+    /// The values as rows of `D` numbers (`(x, y)` or `(x, y, z)`).
+    pub(super) fn rows<const D: usize>(&self) -> &[[f64; D]] {
+        self.values().as_chunks::<D>().0
     }
 }
 
@@ -485,6 +485,16 @@ impl<'py, D: Dimension> Out<'py, D> {
 fn address_range(values: &[f64]) -> std::ops::Range<usize> {
     let r = values.as_ptr_range();
     r.start as usize..r.end as usize
+}
+
+/// An array of real numbers of any shape, and its shape (the caller checks it).
+pub(super) fn shaped<'py>(
+    name: &str,
+    obj: &Bound<'py, PyAny>,
+) -> PyResult<(Floats<'py>, Vec<usize>)> {
+    let real = real_array(name, obj)?;
+    let shape = real.array.shape().to_vec();
+    Ok((floats(&real)?, shape))
 }
 
 /// Polynomial coefficients: a 1-D or 2-D array of real numbers, and its shape.

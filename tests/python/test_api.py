@@ -649,6 +649,9 @@ def test_version_and_public_api() -> None:
         "earliest_collision",
         "first_contacts",
         "pairwise_collision_times",
+        "path_collision_time",
+        "path_collision_times",
+        "path_positions_at",
         "positions_at",
         "real_roots",
     }
