@@ -14,7 +14,13 @@ mod strategies;
 use proptest::prelude::*;
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(400))]
+    // A fixed seed: the same cases on every run, so that CI is repeatable; the fuzz target
+    // draws new ones (docs/fuzzing.md).
+    #![proptest_config(ProptestConfig {
+        cases: 400,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(22),
+        ..ProptestConfig::default()
+    })]
 
     #[test]
     fn the_scene_equals_the_brute_force_pairs(

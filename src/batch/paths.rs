@@ -251,8 +251,6 @@ pub(crate) fn check_path_positions<const D: usize>(
     Ok(())
 }
 
-/// Pair `i`'s answer, its paths read into the buffers (A's already there if broadcast).
-
 /// Pair `i`'s answer, its paths read into the buffers (a broadcast side's already there).
 fn pair_time<const D: usize>(
     pairs: &PathPairs<'_, D>,
