@@ -56,8 +56,14 @@ def test_the_pair_search_keeps_its_invariants(case: Pair, k: int, m: int) -> Non
     th = horizon if horizon == INF else scaled_exactly(horizon, -m)
     want = cut if cut == INF else scaled_exactly(cut, -m)
     want_free = free if free == INF else scaled_exactly(free, -m)
+    # Units of time are promised within 2^±30, for pairs whose non-zero magnitudes are within
+    # 2^±400 of each other (docs/contract.md §5; tests/support/invariants.rs does the same).
+    sizes = [abs(x) for x in (a.px, a.py, a.vx, a.vy, a.mu, b.px, b.py, b.vx, b.vy, b.mu, r)]
+    sizes = [x for x in sizes if x > 0.0]
     if (
-        ta is not None
+        abs(m) <= 30
+        and max(sizes) <= min(sizes) * 2.0**400
+        and ta is not None
         and tb is not None
         and th is not None
         and want is not None
