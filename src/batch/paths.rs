@@ -126,24 +126,20 @@ pub fn path_collision_times<const D: usize>(
     out: &mut [f64],
     threads: Threads,
 ) -> Result<(), InputError> {
-    check_path_pairs(pairs, out.len())?;
-    let broadcast = [pairs.a.len() == 1, pairs.b.len() == 1];
+    let shared = check_path_pairs(pairs, out.len())?;
     run_chunks(out, threads, |offset, chunk| {
-        // One buffer per side and task, reused for every pair (a broadcast side is read once).
-        let (mut a, mut b) = (Vec::new(), Vec::new());
-        if broadcast[0] {
-            read_path(&pairs.a, 0, &NAMES[0], &mut a).map_err(|e| e.in_pair(0))?;
-        }
-        if broadcast[1] {
-            read_path(&pairs.b, 0, &NAMES[1], &mut b).map_err(|e| e.in_pair(0))?;
-        }
+        // One buffer per side and task, reused for every pair.
+        let mut buffers = (Vec::new(), Vec::new());
         for (k, slot) in chunk.iter_mut().enumerate() {
-            let i = offset + k;
-            *slot = pair_time(pairs, i, broadcast, [&mut a, &mut b])?;
+            *slot = pair_time(pairs, offset + k, &shared, &mut buffers)?;
         }
         Ok(())
     })
 }
+
+/// The broadcast paths of a batch of path pairs (A's, B's), read and checked once: `Some` for
+/// a side that holds one path.
+pub(crate) type SharedPaths<const D: usize> = [Option<Vec<Segment<D>>>; 2];
 
 /// The checks of [`path_collision_times`] that need no pair: each side's rows, its number of
 /// paths 1 or `n`, `radius` and `t_max` of length `n` if per pair, shared values valid (a
@@ -152,7 +148,7 @@ pub fn path_collision_times<const D: usize>(
 pub(crate) fn check_path_pairs<const D: usize>(
     pairs: &PathPairs<'_, D>,
     n: usize,
-) -> Result<(), InputError> {
+) -> Result<SharedPaths<D>, InputError> {
     check_side(&pairs.a, &NAMES[0], n)?;
     check_side(&pairs.b, &NAMES[1], n)?;
     pairs.radius.check_len("radius", n)?;
@@ -160,13 +156,23 @@ pub(crate) fn check_path_pairs<const D: usize>(
     pairs.radius.check_shared("radius", check_radius)?;
     pairs.t_max.check_shared("t_max", check_horizon)?;
     // A broadcast path is a shared value: checked here, even in an empty batch.
-    let mut shared = Vec::new();
-    for (side, names) in [(&pairs.a, &NAMES[0]), (&pairs.b, &NAMES[1])] {
-        if side.len() == 1 {
-            read_path(side, 0, names, &mut shared).map_err(|e| e.in_pair(0))?;
-        }
+    Ok([
+        shared_path(&pairs.a, &NAMES[0])?,
+        shared_path(&pairs.b, &NAMES[1])?,
+    ])
+}
+
+/// A side's only path, read and checked (errors at pair 0), if it holds one path.
+fn shared_path<const D: usize>(
+    side: &PathRows<'_, D>,
+    names: &Names,
+) -> Result<Option<Vec<Segment<D>>>, InputError> {
+    if side.len() != 1 {
+        return Ok(None);
     }
-    Ok(())
+    let mut segments = Vec::new();
+    read_path(side, 0, names, &mut segments).map_err(|e| e.in_pair(0))?;
+    Ok(Some(segments))
 }
 
 /// The argument names of [`path_positions_at`]'s rows in errors.
@@ -213,20 +219,20 @@ pub fn path_positions_at<const D: usize>(
     out: &mut [[f64; D]],
     threads: Threads,
 ) -> Result<(), InputError> {
-    check_path_positions(paths, t, out.len())?;
+    let shared = check_path_positions(paths, t, out.len())?;
     run_chunks(out, threads, |offset, chunk| {
-        let mut segments = Vec::new();
-        let broadcast = paths.len() == 1;
-        if broadcast {
-            read_path(paths, 0, &NAMES_ONE, &mut segments).map_err(|e| e.in_pair(0))?;
-        }
+        let mut buffer = Vec::new();
         for (k, slot) in chunk.iter_mut().enumerate() {
             let i = offset + k;
-            if !broadcast {
-                read_path(paths, i, &NAMES_ONE, &mut segments).map_err(|e| e.in_pair(i))?;
-            }
+            let segments = match &shared {
+                Some(path) => path.as_slice(),
+                None => {
+                    read_path(paths, i, &NAMES_ONE, &mut buffer).map_err(|e| e.in_pair(i))?;
+                    buffer.as_slice()
+                }
+            };
             let time = finite("t", t.get(i)).map_err(|e| e.at(i))?;
-            let (segment, time) = locate(&segments, time);
+            let (segment, time) = locate(segments, time);
             *slot = segment.position_at(time).into();
         }
         Ok(())
@@ -240,30 +246,36 @@ pub(crate) fn check_path_positions<const D: usize>(
     paths: &PathRows<'_, D>,
     t: PerPair<'_>,
     n: usize,
-) -> Result<(), InputError> {
+) -> Result<Option<Vec<Segment<D>>>, InputError> {
     check_side(paths, &NAMES_ONE, n)?;
     t.check_len("t", n)?;
     t.check_shared("t", finite)?;
     // A broadcast path is a shared value: checked here, even with no time to answer.
-    if paths.len() == 1 {
-        read_path(paths, 0, &NAMES_ONE, &mut Vec::new()).map_err(|e| e.in_pair(0))?;
-    }
-    Ok(())
+    shared_path(paths, &NAMES_ONE)
 }
 
-/// Pair `i`'s answer, its paths read into the buffers (a broadcast side's already there).
+/// Pair `i`'s answer: its paths are the shared ones where a side is broadcast, else read
+/// into that side's buffer.
 fn pair_time<const D: usize>(
     pairs: &PathPairs<'_, D>,
     i: usize,
-    [broadcast_a, broadcast_b]: [bool; 2],
-    [a, b]: [&mut Vec<Segment<D>>; 2],
+    shared: &SharedPaths<D>,
+    (buffer_a, buffer_b): &mut (Vec<Segment<D>>, Vec<Segment<D>>),
 ) -> Result<f64, InputError> {
-    if !broadcast_a {
-        read_path(&pairs.a, i, &NAMES[0], a).map_err(|e| e.in_pair(i))?;
-    }
-    if !broadcast_b {
-        read_path(&pairs.b, i, &NAMES[1], b).map_err(|e| e.in_pair(i))?;
-    }
+    let a = match &shared[0] {
+        Some(path) => path.as_slice(),
+        None => {
+            read_path(&pairs.a, i, &NAMES[0], buffer_a).map_err(|e| e.in_pair(i))?;
+            buffer_a.as_slice()
+        }
+    };
+    let b = match &shared[1] {
+        Some(path) => path.as_slice(),
+        None => {
+            read_path(&pairs.b, i, &NAMES[1], buffer_b).map_err(|e| e.in_pair(i))?;
+            buffer_b.as_slice()
+        }
+    };
     let radius = check_radius("radius", pairs.radius.get(i)).map_err(|e| e.at(i))?;
     let t_max = check_horizon("t_max", pairs.t_max.get(i)).map_err(|e| e.at(i))?;
     Ok(first_path_contact(a, b, [radius, 0.0], t_max).unwrap_or(f64::INFINITY))

@@ -13,7 +13,10 @@
 //! The batch's lanes and the scalar search divide by the same unit, computed by the same
 //! function, so they see the same numbers.
 
+use nalgebra::SVector;
+
 use super::prefilter::PairInput;
+use crate::coefficients::Gap;
 use crate::motion::Ball;
 
 /// The unit of a pair whose largest length (in magnitude) is `largest`: multiplying by
@@ -56,6 +59,22 @@ impl LengthUnit {
     #[inline(always)]
     pub(crate) fn friction(self, mu: f64) -> f64 {
         self.apply(mu) + 0.0
+    }
+}
+
+impl<const D: usize> Gap<D> {
+    /// The same motion with every field (all lengths, in a window's time units; the offset
+    /// and the radius at least) multiplied by `unit`: exact where nothing overflows or
+    /// underflows.
+    #[inline(always)]
+    pub(crate) fn in_unit(&self, unit: LengthUnit) -> Self {
+        let u = |x: SVector<f64, D>| x.map(|c| unit.apply(c));
+        Self {
+            offset: u(self.offset),
+            velocity: u(self.velocity),
+            acceleration: u(self.acceleration),
+            radius: unit.apply(self.radius),
+        }
     }
 }
 

@@ -64,21 +64,19 @@ pub(crate) fn natural_time<const D: usize>(gap: &Gap<D>) -> f64 {
 /// `[0, LONG · T]`; the caller searches each and asks for the next from where it ended
 /// ([`next_piece`]).
 pub(crate) fn first_piece<const D: usize>(gap: &Gap<D>, length: f64) -> f64 {
-    (LONG * natural_time(gap)).max(least_piece()).min(length)
+    (LONG * natural_time(gap)).max(LEAST_PIECE).min(length)
 }
 
 /// The shortest piece: the smallest normal time, so that a time scale that rounds to 0
 /// (lengths whose squares underflow: beyond the range where the search is exact) cannot stall
 /// the pieces, which then double up to the window's end (at most about 2,100 of them).
-fn least_piece() -> f64 {
-    f64::MIN_POSITIVE
-}
+const LEAST_PIECE: f64 = f64::MIN_POSITIVE;
 
 /// The end of the piece that starts at `start` (where the gap is `gap`, re-expanded there),
 /// in a window of `length`: `LONG` of the gap's time scales on, at least twice as far from the
 /// window's start, and at most the window's end.
 pub(crate) fn next_piece<const D: usize>(gap: &Gap<D>, start: f64, length: f64) -> f64 {
-    let step = (LONG * natural_time(gap)).max(start).max(least_piece());
+    let step = (LONG * natural_time(gap)).max(start).max(LEAST_PIECE);
     (start + step).min(length)
 }
 

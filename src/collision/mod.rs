@@ -48,7 +48,7 @@ pub(crate) mod prefilter;
 pub(crate) mod straight;
 mod window_box;
 
-use crate::coefficients::Gap;
+use crate::coefficients::{Gap, gap_value_of};
 use crate::error::{InputError, check_horizon, check_radius};
 use crate::motion::Ball;
 use crate::poly::scaling::{exponent, pow2};
@@ -258,13 +258,7 @@ fn first_contact_in_unit(
 /// the larger of the distance and the radius.
 pub(crate) fn apart_at_start<const D: usize>(gap: &Gap<D>) -> bool {
     let unit = LengthUnit::of(largest([gap.offset.amax(), gap.radius]));
-    let start = Gap {
-        offset: gap.offset.map(|x| unit.apply(x)),
-        velocity: SVector::zeros(),
-        acceleration: SVector::zeros(),
-        radius: unit.apply(gap.radius),
-    };
-    start.value(0.0) > 0.0
+    gap_value_of(&gap.offset.map(|x| unit.apply(x)), unit.apply(gap.radius)) > 0.0
 }
 
 /// A window's motion in time units of the window (every field a length: the offset, the
@@ -272,19 +266,12 @@ pub(crate) fn apart_at_start<const D: usize>(gap: &Gap<D>) -> bool {
 /// own largest field: the same numbers up to an exact power of two, so that the window
 /// search, whose every decision is homogeneous in lengths, takes the same steps.
 fn in_own_unit<const D: usize>(gap: &Gap<D>) -> Gap<D> {
-    let unit = LengthUnit::of(largest([
+    gap.in_unit(LengthUnit::of(largest([
         gap.offset.amax(),
         gap.velocity.amax(),
         gap.acceleration.amax(),
         gap.radius,
-    ]));
-    let u = |x: SVector<f64, D>| x.map(|c| unit.apply(c));
-    Gap {
-        offset: u(gap.offset),
-        velocity: u(gap.velocity),
-        acceleration: u(gap.acceleration),
-        radius: unit.apply(gap.radius),
-    }
+    ])))
 }
 
 /// Whether balls touching or overlapping at the start are moving into each other: the first
@@ -294,15 +281,12 @@ pub(crate) fn approaching<const D: usize>(gap: &Gap<D>) -> bool {
     // The signs are those of products of lengths alone (the radius plays no part), so they
     // are taken in the unit of the motion's own largest length: balls whose centres are far
     // closer than their radii are long (overlapping deeply) do not lose the signs to underflow.
-    let (d, v, f) = (gap.offset, gap.velocity, gap.acceleration);
-    let unit = LengthUnit::of(largest([d.amax(), v.amax(), f.amax()]));
-    let u = |x: nalgebra::SVector<f64, D>| x.map(|c| unit.apply(c));
-    let gap = Gap {
-        offset: u(d),
-        velocity: u(v),
-        acceleration: u(f),
-        radius: gap.radius,
-    };
+    let size = largest([
+        gap.offset.amax(),
+        gap.velocity.amax(),
+        gap.acceleration.amax(),
+    ]);
+    let gap = gap.in_unit(LengthUnit::of(size));
     let slope = gap.half_slope(0.0);
     let curvature = gap.half_curvature(0.0);
     // g‴/6 = d′·d″ (g⁗ = 6|d″|² is never negative). `|` and `&` rather than `||` and `&&`:

@@ -17,6 +17,22 @@ use crate::path::Segment;
 /// roundings (`ε = 2⁻⁵³`) made in forming the box and in the search's own arithmetic.
 const MARGIN: f64 = 1.0 / ((1u64 << 40) as f64);
 
+/// The range `(lo, hi)` of `p + v·s + ½·a·s²` over `s ∈ [0, length]` (its values at the ends
+/// and at its vertex, if inside), and a bound on the magnitudes that form it (for the margin).
+#[inline(always)]
+fn axis_range(p: f64, v: f64, a: f64, length: f64) -> (f64, f64, f64) {
+    let end = p + (v + 0.5 * a * length) * length;
+    let (mut lo, mut hi) = (p.min(end), p.max(end));
+    // The vertex, where the motion along the axis turns, if it comes inside the span.
+    let turn = -v / a;
+    if turn > 0.0 && turn < length {
+        let vertex = p - 0.5 * v * (v / a);
+        lo = lo.min(vertex);
+        hi = hi.max(vertex);
+    }
+    (lo, hi, p.abs() + (v.abs() + a.abs() * length) * length)
+}
+
 /// Whether `g > 0` is proven on `[0, length]` (time since the window's start) by the box the
 /// separation sweeps. `false` means "not proven".
 #[inline]
@@ -25,15 +41,7 @@ pub(crate) fn apart_on_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool
     let mut size = gap.radius;
     for i in 0..D {
         let (p, v, a) = (gap.offset[i], gap.velocity[i], gap.acceleration[i]);
-        let end = p + (v + 0.5 * a * length) * length;
-        let (mut lo, mut hi) = (p.min(end), p.max(end));
-        // The vertex, where the axis' motion turns, if it comes inside the window.
-        let turn = -v / a;
-        if turn > 0.0 && turn < length {
-            let vertex = p - 0.5 * v * (v / a);
-            lo = lo.min(vertex);
-            hi = hi.max(vertex);
-        }
+        let (lo, hi, magnitude) = axis_range(p, v, a, length);
         let nearest = if lo > 0.0 {
             lo
         } else if hi < 0.0 {
@@ -42,7 +50,7 @@ pub(crate) fn apart_on_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool
             0.0
         };
         nearest2 += nearest * nearest;
-        size += p.abs() + (v.abs() + a.abs() * length) * length;
+        size += magnitude;
     }
     let reach = gap.radius + MARGIN * size;
     // NaN (an overflowing window) fails the comparison: not proven.
@@ -66,16 +74,9 @@ fn path_box<const D: usize>(segments: &[Segment<D>]) -> ([f64; D], [f64; D], f64
             let (p, v, a) = (s.position[i], s.velocity[i], s.acceleration[i]);
             let (mut l, mut h) = (p, p);
             if length.is_finite() {
-                let end = p + (v + 0.5 * a * length) * length;
-                l = l.min(end);
-                h = h.max(end);
-                let turn = -v / a;
-                if turn > 0.0 && turn < length {
-                    let vertex = p - 0.5 * v * (v / a);
-                    l = l.min(vertex);
-                    h = h.max(vertex);
-                }
-                size += p.abs() + (v.abs() + a.abs() * length) * length;
+                let magnitude;
+                (l, h, magnitude) = axis_range(p, v, a, length);
+                size += magnitude;
             } else {
                 // For ever: towards wherever the acceleration, or else the velocity, points.
                 let drift = if a != 0.0 { a } else { v };
