@@ -23,7 +23,7 @@ use ballcollide::batch::{Pairs, PerPair, collision_times};
 mod thread_cpu_time;
 #[path = "../tests/support/timing_example.rs"]
 mod timing_example;
-use timing_example::{Reader, threads, time_calls};
+use timing_example::{Args, Reader, report, time_calls};
 
 /// The pairs of one file, in the batch layout.
 struct Data {
@@ -54,21 +54,13 @@ fn read(path: &str) -> Result<Data, String> {
 }
 
 fn run() -> Result<String, String> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let path = args
-        .first()
-        .ok_or("usage: kernel_timing FILE [THREADS] [REPEATS] [fresh]")?;
-    let threads = threads(args.get(1).map(String::as_str))?;
-    let repeats: usize = match args.get(2) {
-        Some(s) => s.parse().map_err(|e| format!("REPEATS: {e}"))?,
-        None => 15,
-    };
-    let fresh = match args.get(3).map(String::as_str) {
+    let args = Args::read("usage: kernel_timing FILE [THREADS] [REPEATS] [fresh]")?;
+    let fresh = match args.rest.first().map(String::as_str) {
         None => false,
         Some("fresh") => true,
         Some(other) => return Err(format!("expected `fresh`, got {other:?}")),
     };
-    let d = read(path)?;
+    let d = read(&args.path)?;
     let pairs = Pairs {
         pos_a: &d.pos_a,
         vel_a: &d.vel_a,
@@ -79,21 +71,12 @@ fn run() -> Result<String, String> {
         radius: PerPair::All(d.radius),
         t_max: PerPair::All(f64::INFINITY),
     };
-    let (_, line) = time_calls(d.pos_a.len(), repeats, fresh, |out| {
-        collision_times(&pairs, out, threads)
+    let (_, line) = time_calls(d.pos_a.len(), args.repeats, fresh, |out| {
+        collision_times(&pairs, out, args.threads)
     })?;
     Ok(line)
 }
 
 fn main() -> ExitCode {
-    match run() {
-        Ok(line) => {
-            println!("{line}");
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("kernel_timing: {e}");
-            ExitCode::FAILURE
-        }
-    }
+    report("kernel_timing", run())
 }

@@ -25,7 +25,7 @@ use ballcollide::batch::{PathPairs, PathRows, PerPair, path_collision_times};
 mod thread_cpu_time;
 #[path = "../tests/support/timing_example.rs"]
 mod timing_example;
-use timing_example::{Reader, threads, time_calls};
+use timing_example::{Args, Reader, report, time_calls};
 
 /// One side's rows, owned.
 struct Side {
@@ -84,26 +84,18 @@ fn read(path: &str) -> Result<Data, String> {
 }
 
 fn run() -> Result<String, String> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let path = args
-        .first()
-        .ok_or("usage: path_timing FILE [THREADS] [REPEATS] [OUT]")?;
-    let threads = threads(args.get(1).map(String::as_str))?;
-    let repeats: usize = match args.get(2) {
-        Some(s) => s.parse().map_err(|e| format!("REPEATS: {e}"))?,
-        None => 15,
-    };
-    let d = read(path)?;
+    let args = Args::read("usage: path_timing FILE [THREADS] [REPEATS] [OUT]")?;
+    let d = read(&args.path)?;
     let pairs = PathPairs {
         a: d.a.rows(),
         b: d.b.rows(),
         radius: PerPair::All(d.radius),
         t_max: PerPair::All(f64::INFINITY),
     };
-    let (out, line) = time_calls(d.n, repeats, false, |out| {
-        path_collision_times(&pairs, out, threads)
+    let (out, line) = time_calls(d.n, args.repeats, false, |out| {
+        path_collision_times(&pairs, out, args.threads)
     })?;
-    if let Some(file) = args.get(3) {
+    if let Some(file) = args.rest.first() {
         let bytes: Vec<u8> = out.iter().flat_map(|t| t.to_le_bytes()).collect();
         std::fs::write(file, bytes).map_err(|e| format!("{file}: {e}"))?;
     }
@@ -111,14 +103,5 @@ fn run() -> Result<String, String> {
 }
 
 fn main() -> ExitCode {
-    match run() {
-        Ok(line) => {
-            println!("{line}");
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("path_timing: {e}");
-            ExitCode::FAILURE
-        }
-    }
+    report("path_timing", run())
 }

@@ -1,11 +1,13 @@
 //! What the timing examples (`examples/kernel_timing.rs`, `examples/path_timing.rs`) share:
 //! reading the raw little-endian files that `benchmarks/compare.py` writes ([`Reader`]), the
-//! THREADS argument ([`threads`]), and timing repeated batch calls ([`time_calls`]).
+//! arguments FILE [THREADS] [REPEATS] ([`Args`], [`threads`]), timing repeated batch calls
+//! ([`time_calls`]), and printing the result or the error ([`report`]).
 //!
 //! Included by path next to `thread_cpu_time.rs`, which it uses as `crate::thread_cpu_time`:
 //! `#[path = "../tests/support/timing_example.rs"] mod timing_example;`.
 
 use std::num::NonZeroUsize;
+use std::process::ExitCode;
 use std::time::Instant;
 
 use ballcollide::InputError;
@@ -62,6 +64,48 @@ impl<'a> Reader<'a> {
         match self.bytes.len() {
             0 => Ok(()),
             left => Err(format!("{path}: {left} bytes left over")),
+        }
+    }
+}
+
+/// The arguments every timing example starts with: FILE, [THREADS], [REPEATS] (default 15),
+/// and whatever follows them.
+pub struct Args {
+    pub path: String,
+    pub threads: Threads,
+    pub repeats: usize,
+    pub rest: Vec<String>,
+}
+
+impl Args {
+    /// The command line's arguments; `usage` is the error when FILE is missing.
+    pub fn read(usage: &str) -> Result<Self, String> {
+        let mut args = std::env::args().skip(1);
+        let path = args.next().ok_or_else(|| usage.to_string())?;
+        let threads = threads(args.next().as_deref())?;
+        let repeats = match args.next() {
+            Some(s) => s.parse().map_err(|e| format!("REPEATS: {e}"))?,
+            None => 15,
+        };
+        Ok(Self {
+            path,
+            threads,
+            repeats,
+            rest: args.collect(),
+        })
+    }
+}
+
+/// A timing example's exit: its line printed, or `name: error` on standard error.
+pub fn report(name: &str, result: Result<String, String>) -> ExitCode {
+    match result {
+        Ok(line) => {
+            println!("{line}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("{name}: {e}");
+            ExitCode::FAILURE
         }
     }
 }
