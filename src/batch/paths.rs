@@ -10,7 +10,8 @@
 //! identical, and so are the answers for any number of threads.
 
 use super::{PerPair, Threads, check_len, run_chunks};
-use crate::collision::path_contact::first_path_contact;
+use crate::collision::path_bounds::PathBounds;
+use crate::collision::path_contact::first_bounded_contact;
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::path::{Names, Segment, locate, segments_from_rows};
 
@@ -137,9 +138,9 @@ pub fn path_collision_times<const D: usize>(
     })
 }
 
-/// The broadcast paths of a batch of path pairs (A's, B's), read and checked once: `Some` for
-/// a side that holds one path.
-pub(crate) type SharedPaths<const D: usize> = [Option<Vec<Segment<D>>>; 2];
+/// The broadcast paths of a batch of path pairs (A's, B's), read and checked once, with their
+/// bounds: `Some` for a side that holds one path.
+pub(crate) type SharedPaths<const D: usize> = [Option<(Vec<Segment<D>>, PathBounds<D>)>; 2];
 
 /// The checks of [`path_collision_times`] that need no pair: each side's rows, its number of
 /// paths 1 or `n`, `radius` and `t_max` of length `n` if per pair, shared values valid (a
@@ -156,9 +157,15 @@ pub(crate) fn check_path_pairs<const D: usize>(
     pairs.radius.check_shared("radius", check_radius)?;
     pairs.t_max.check_shared("t_max", check_horizon)?;
     // A broadcast path is a shared value: checked here, even in an empty batch.
+    let bounded = |path: Option<Vec<Segment<D>>>| {
+        path.map(|segments| {
+            let bounds = PathBounds::of(&segments);
+            (segments, bounds)
+        })
+    };
     Ok([
-        shared_path(&pairs.a, &NAMES[0])?,
-        shared_path(&pairs.b, &NAMES[1])?,
+        bounded(shared_path(&pairs.a, &NAMES[0])?),
+        bounded(shared_path(&pairs.b, &NAMES[1])?),
     ])
 }
 
@@ -263,22 +270,23 @@ fn pair_time<const D: usize>(
     (buffer_a, buffer_b): &mut (Vec<Segment<D>>, Vec<Segment<D>>),
 ) -> Result<f64, InputError> {
     let a = match &shared[0] {
-        Some(path) => path.as_slice(),
+        Some((path, bounds)) => (path.as_slice(), *bounds),
         None => {
             read_path(&pairs.a, i, &NAMES[0], buffer_a).map_err(|e| e.in_pair(i))?;
-            buffer_a.as_slice()
+            (buffer_a.as_slice(), PathBounds::of(buffer_a))
         }
     };
     let b = match &shared[1] {
-        Some(path) => path.as_slice(),
+        Some((path, bounds)) => (path.as_slice(), *bounds),
         None => {
             read_path(&pairs.b, i, &NAMES[1], buffer_b).map_err(|e| e.in_pair(i))?;
-            buffer_b.as_slice()
+            (buffer_b.as_slice(), PathBounds::of(buffer_b))
         }
     };
     let radius = check_radius("radius", pairs.radius.get(i)).map_err(|e| e.at(i))?;
     let t_max = check_horizon("t_max", pairs.t_max.get(i)).map_err(|e| e.at(i))?;
-    Ok(first_path_contact(a, b, [radius, 0.0], t_max).unwrap_or(f64::INFINITY))
+    let contact = first_bounded_contact((a.0, &a.1), (b.0, &b.1), [radius, 0.0], t_max);
+    Ok(contact.unwrap_or(f64::INFINITY))
 }
 
 /// Path `i` of `side`, checked, into `segments` (its errors at the segment's index).

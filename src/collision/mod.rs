@@ -43,6 +43,7 @@ mod exclusion;
 pub(crate) mod length_unit;
 pub(crate) mod long_window;
 pub(crate) mod moving_entry;
+pub(crate) mod path_bounds;
 pub(crate) mod path_contact;
 pub(crate) mod prefilter;
 pub(crate) mod straight;

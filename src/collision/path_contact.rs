@@ -10,8 +10,9 @@
 //! full accuracy; and every length is first divided by the pair's unit of length
 //! ([`length_unit`](super::length_unit)), so that the answer does not depend on it.
 
-use super::length_unit::{LengthUnit, largest};
-use super::window_box::{apart_on_window, paths_apart};
+use super::length_unit::LengthUnit;
+use super::path_bounds::PathBounds;
+use super::window_box::apart_on_window;
 use super::{
     CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_length, search_window,
 };
@@ -72,14 +73,30 @@ pub(crate) fn first_path_contact<const D: usize>(
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
-    let unit = pair_unit(a, b, radii);
-    let radius = unit.apply(radii[0]) + unit.apply(radii[1]);
+    first_bounded_contact(
+        (a, &PathBounds::of(a)),
+        (b, &PathBounds::of(b)),
+        radii,
+        t_max,
+    )
+}
+
+/// [`first_path_contact`] with each path's bounds given (a batch computes a broadcast path's
+/// once).
+#[inline]
+pub(crate) fn first_bounded_contact<const D: usize>(
+    (a, bounds_a): (&[Segment<D>], &PathBounds<D>),
+    (b, bounds_b): (&[Segment<D>], &PathBounds<D>),
+    radii: [f64; 2],
+    t_max: f64,
+) -> Option<f64> {
     // Paths whose boxes keep apart need no window: a proof (its margin far above the
-    // search's rounding), so its answer is the search's, in any unit. On the caller's numbers
-    // (no copy); a radius sum that overflows proves nothing.
-    if paths_apart(a, b, radii[0] + radii[1]) {
+    // search's rounding), so its answer is the search's, in any unit.
+    if bounds_a.apart(bounds_b, radii[0] + radii[1]) {
         return None;
     }
+    let unit = bounds_a.pair_unit(bounds_b, radii);
+    let radius = unit.apply(radii[0]) + unit.apply(radii[1]);
     // `+ 0.0` makes a first time of −0 a +0: `max` leaves the sign of equal zeros to the
     // order of its operands, and the answer must not depend on which path is A.
     let mut start = a.first()?.start.max(b.first()?.start) + 0.0;
@@ -147,18 +164,6 @@ fn active<const D: usize>(segments: &[Segment<D>], from: usize, t: f64) -> usize
 /// When segment `k` ends: the next one's start, `+∞` for the last.
 fn end_of<const D: usize>(segments: &[Segment<D>], k: usize) -> f64 {
     segments.get(k + 1).map_or(f64::INFINITY, |next| next.start)
-}
-
-/// The unit of length of a pair of paths: from the largest position, velocity or acceleration
-/// component of any segment, and the radii.
-fn pair_unit<const D: usize>(a: &[Segment<D>], b: &[Segment<D>], radii: [f64; 2]) -> LengthUnit {
-    let mut m = largest(radii);
-    for s in a.iter().chain(b) {
-        for i in 0..D {
-            m = largest([m, s.position[i], s.velocity[i], s.acceleration[i]]);
-        }
-    }
-    LengthUnit::of(m)
 }
 
 /// A segment in the pair's unit of length.

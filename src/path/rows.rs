@@ -81,10 +81,13 @@ pub(crate) fn segments_from_rows<const D: usize>(
     // again below, slowly, to name the first offending value.
     let mut previous = f64::NEG_INFINITY;
     let mut plain = true;
-    for k in 0..start.len() {
-        let s = start[k];
+    segments.reserve(start.len());
+    let n = start.len().min(pos.len()).min(vel.len()).min(acc.len());
+    let (starts, pos, vel, acc) = (&start[..n], &pos[..n], &vel[..n], &acc[..n]);
+    for k in 0..n {
+        let s = starts[k];
         if s == f64::INFINITY {
-            plain &= start[k..].iter().all(|&x| x == f64::INFINITY);
+            plain &= starts[k..].iter().all(|&x| x == f64::INFINITY);
             break;
         }
         let mut zero = 0.0 * s;

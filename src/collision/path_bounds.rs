@@ -1,0 +1,175 @@
+//! The whole-path screen: the box a ball's centre stays in along its whole path, and the
+//! proof that two such boxes keep the balls apart ([`PathBounds::apart`]), whatever their
+//! timing.
+//!
+//! A path's bounds are a property of the path alone, so a batch computes them once per path
+//! (once for a path broadcast against many) and every pair of paths compares two of them:
+//! a few comparisons that settle about half the pairs of balls on a pool table before any
+//! window is formed. The same pass notes the path's largest magnitude, from which the pair's
+//! unit of length comes ([`length_unit`](super::length_unit)) for the pairs that go on.
+
+use super::length_unit::{LengthUnit, largest};
+use crate::path::Segment;
+
+/// Relative size of the margin, `2⁻⁴⁰ ≈ 9e-13` of the magnitudes involved: far above the few
+/// roundings (`ε = 2⁻⁵³`) made in forming the boxes.
+const MARGIN: f64 = 1.0 / ((1u64 << 40) as f64);
+
+/// What the screens need of one valid path: the box its centre stays in from its first start
+/// on, a bound on the magnitudes that formed the box (for the margin), and the largest
+/// magnitude of any of its segments' components (for the pair's unit of length).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PathBounds<const D: usize> {
+    lo: [f64; D],
+    hi: [f64; D],
+    size: f64,
+    largest: f64,
+}
+
+/// The smaller of two numbers, as one select (the inputs here are never NaN where it
+/// matters: a NaN from an overflow makes `size` infinite, which proves nothing).
+#[inline(always)]
+fn lesser(x: f64, y: f64) -> f64 {
+    if x < y { x } else { y }
+}
+
+/// The larger of two numbers, as one select.
+#[inline(always)]
+fn greater(x: f64, y: f64) -> f64 {
+    if x > y { x } else { y }
+}
+
+impl<const D: usize> PathBounds<D> {
+    /// The bounds of a valid path (checked segments, [`Path::segments`](crate::Path::segments)).
+    ///
+    /// Per segment and axis, the coordinate `p + v·s + ½·a·s²` over the segment's span
+    /// `[0, L]` lies within its Bernstein control values `p`, `p + ½·v·L`, `p + v·L + ½·a·L²`
+    /// (the hull of a quadratic's control polygon: no division, no branch; for a roll that
+    /// ends at rest the middle value is the stopping point itself, so the box is tight). The
+    /// last segment lasts for ever: its side is unbounded wherever it drifts (towards its
+    /// acceleration, or else its velocity).
+    #[inline]
+    pub(crate) fn of(segments: &[Segment<D>]) -> Self {
+        let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
+        let (mut size, mut most) = (0.0, [0.0; D]);
+        let ends = segments.iter().skip(1).map(|next| next.start);
+        for (s, end) in segments.iter().zip(ends.chain([f64::INFINITY])) {
+            let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
+            for i in 0..D {
+                most[i] = greater(
+                    greater(most[i], p[i].abs()),
+                    greater(v[i].abs(), a[i].abs()),
+                );
+            }
+            let length = end - s.start;
+            if length <= 0.0 {
+                continue; // empty: never active
+            }
+            if length < f64::INFINITY {
+                for i in 0..D {
+                    let middle = p[i] + 0.5 * v[i] * length;
+                    let end = p[i] + (v[i] + 0.5 * a[i] * length) * length;
+                    size += p[i].abs() + (v[i].abs() + a[i].abs() * length) * length;
+                    lo[i] = lesser(lo[i], lesser(lesser(p[i], middle), end));
+                    hi[i] = greater(hi[i], greater(greater(p[i], middle), end));
+                }
+            } else {
+                for i in 0..D {
+                    let (p, v, a) = (p[i], v[i], a[i]);
+                    size += p.abs();
+                    let drift = if a != 0.0 { a } else { v };
+                    let down = drift < 0.0 || (a > 0.0 && v < 0.0);
+                    let up = drift > 0.0 || (a < 0.0 && v > 0.0);
+                    lo[i] = lesser(lo[i], if down { f64::NEG_INFINITY } else { p });
+                    hi[i] = greater(hi[i], if up { f64::INFINITY } else { p });
+                }
+            }
+        }
+        let most = most.iter().fold(0.0, |m: f64, &x| greater(m, x));
+        Self {
+            lo,
+            hi,
+            size,
+            largest: most,
+        }
+    }
+
+    /// Whether balls on the two paths provably never come within `radius` of each other: the
+    /// boxes, grown by the radius and the margin, are disjoint on some axis. On the caller's
+    /// numbers (the comparison needs no unit); a radius sum that overflows proves nothing.
+    #[inline]
+    pub(crate) fn apart(&self, other: &Self, radius: f64) -> bool {
+        let reach = radius + MARGIN * (self.size + other.size + radius);
+        (0..D).any(|i| (self.lo[i] - other.hi[i] > reach) | (other.lo[i] - self.hi[i] > reach))
+    }
+
+    /// The unit of length of a pair of paths with these bounds and contact `radii`: from the
+    /// largest component of any segment of either, and the radii.
+    #[inline]
+    pub(crate) fn pair_unit(&self, other: &Self, radii: [f64; 2]) -> LengthUnit {
+        LengthUnit::of(largest([self.largest, other.largest, radii[0], radii[1]]))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector2 as V;
+
+    fn apart(a: &[Segment<2>], b: &[Segment<2>], radius: f64) -> bool {
+        PathBounds::of(a).apart(&PathBounds::of(b), radius)
+    }
+
+    #[test]
+    fn paths_far_apart_are_apart_and_a_drifting_one_is_not() {
+        let at = |x: f64, v: f64, a: f64| {
+            Segment::new(0.0, V::new(x, 0.0), V::new(v, 0.0), V::new(a, 0.0))
+        };
+        // A rolls from 0 towards +x and stops at 1 (v = 1, a = −0.5 for 2 s); B rests at 3.
+        let a = [at(0.0, 1.0, -0.5), Segment::at_rest(2.0, V::new(1.0, 0.0))];
+        let b = [Segment::at_rest(0.0, V::new(3.0, 0.0))];
+        assert!(apart(&a, &b, 1.5));
+        assert!(apart(&b, &a, 1.5));
+        // The roll's box ends exactly at its stopping point: 1.9 from B is not 2.1 apart.
+        assert!(!apart(&a, &b, 2.1));
+        // A frictionless B drifting towards A is not.
+        assert!(!apart(&a, &[at(3.0, -0.1, 0.0)], 1.5));
+        // Nor one accelerating towards A though moving away.
+        assert!(!apart(&a, &[at(3.0, 1.0, -0.01)], 1.5));
+        assert!(apart(&a, &[at(3.0, 1.0, 0.0)], 1.5));
+    }
+
+    #[test]
+    fn a_segment_that_turns_back_covers_its_turning_point() {
+        // A moves towards B, turns at x = 1 (v = 2, a = −2, for 2 s: back at 0) and rests.
+        let a = [
+            Segment::new(0.0, V::zeros(), V::new(2.0, 0.0), V::new(-2.0, 0.0)),
+            Segment::at_rest(2.0, V::zeros()),
+        ];
+        let b = [Segment::at_rest(0.0, V::new(1.6, 0.0))];
+        assert!(!apart(&a, &b, 0.5)); // it comes within 0.6: the box must reach x = 1
+        assert!(apart(&a, &[Segment::at_rest(0.0, V::new(-0.6, 0.0))], 0.5));
+    }
+
+    #[test]
+    fn empty_segments_are_skipped_but_count_for_the_unit() {
+        let a = [
+            Segment::new(0.0, V::new(0.0, 0.0), V::zeros(), V::zeros()),
+            Segment::new(1.0, V::new(1e9, 0.0), V::zeros(), V::zeros()), // empty
+            Segment::at_rest(1.0, V::new(0.0, 0.0)),
+        ];
+        let bounds = PathBounds::of(&a);
+        assert_eq!((bounds.lo, bounds.hi), ([0.0, 0.0], [0.0, 0.0]));
+        assert_eq!(bounds.largest, 1e9);
+    }
+
+    #[test]
+    fn an_overflowing_box_proves_nothing() {
+        let a = [
+            Segment::new(0.0, V::zeros(), V::new(1e300, 0.0), V::new(1e300, 0.0)),
+            Segment::at_rest(1e10, V::zeros()),
+        ];
+        let b = [Segment::at_rest(0.0, V::new(-5.0, 0.0))];
+        assert!(!apart(&a, &b, 1.0));
+    }
+}
