@@ -13,8 +13,13 @@ use ballcollide::poly::scaling::scale;
 mod exact;
 #[path = "../../tests/support/invariants.rs"]
 pub mod invariants;
+#[path = "../../tests/support/path_invariants.rs"]
+pub mod path_invariants;
+#[path = "../../tests/support/path_table.rs"]
+mod path_table;
 
 use invariants::{BallInput, PairCase, SceneCase, Shared};
+use path_invariants::{PathCase, SegmentInput};
 
 /// Inputs that start with this are read literally (see [`Raw`]) instead of decoded: the form of
 /// the regression corpus, which stays the same input whatever the decoders become.
@@ -102,6 +107,35 @@ impl<'a> Raw<'a> {
             },
             self.i32()?,
         ))
+    }
+
+    fn path(&mut self) -> Option<Vec<SegmentInput>> {
+        let n = self.count(64)?;
+        (0..n)
+            .map(|_| {
+                let mut s = [0.0; 10];
+                for x in &mut s {
+                    *x = self.f64()?;
+                }
+                Some(s)
+            })
+            .collect()
+    }
+
+    /// A path query: four bytes (non-zero: 3-D), path A (the number of segments, each as
+    /// start and three components of position, velocity, acceleration), path B, radius,
+    /// t_max, k.
+    pub fn path_case(mut self) -> Option<(PathCase, i32)> {
+        let three_d = self.take::<4>()? != [0; 4];
+        let (a, b) = (self.path()?, self.path()?);
+        let case = PathCase {
+            a,
+            b,
+            radius: self.f64()?,
+            t_max: self.f64()?,
+            three_d,
+        };
+        Some((case, self.i32()?))
     }
 
     /// A polynomial: the number of coefficients, the coefficients, k, m.
@@ -292,4 +326,61 @@ pub fn poly_case(u: &mut Unstructured) -> Result<(Vec<f64>, i32, i32)> {
         u.int_in_range(-1100..=1100)?,
         u.int_in_range(-300..=300)?,
     ))
+}
+
+/// A path of 1 to 6 segments whose numbers are scaled by `2^s`: starts from a first one
+/// (0, small, or any) by durations that are small, table-like or any size (now and then
+/// one that goes back in time), positions and velocities like [`ball`]'s, accelerations like
+/// frictions of either sign; one path in eight has one value no path may hold (NaN, ±∞), so
+/// that the checks of invalid paths are fuzzed too.
+fn path(u: &mut Unstructured, s: i32) -> Result<Vec<SegmentInput>> {
+    let n = u.int_in_range(1..=6)?;
+    let mut start = match u.arbitrary::<u8>()? % 4 {
+        0 | 1 => 0.0,
+        2 => small(u)?,
+        _ => wide(u)?,
+    };
+    let mut segments = Vec::with_capacity(n);
+    for k in 0..n {
+        if k > 0 {
+            start += match u.arbitrary::<u8>()? % 16 {
+                0 => -small(u)?.abs(),
+                1 | 2 => 0.0,
+                3 | 4 => wide(u)?.abs(),
+                5..=9 => table(u)?.abs(),
+                _ => small(u)?.abs(),
+            };
+        }
+        let mut row = [0.0; 10];
+        row[0] = start;
+        for x in &mut row[1..7] {
+            *x = length(u, s)?;
+        }
+        for x in &mut row[7..] {
+            let a = friction(u, s)?;
+            *x = if u.arbitrary()? { -a } else { a };
+        }
+        segments.push(row);
+    }
+    if u.ratio(1, 8)? {
+        let bad = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY][u.int_in_range(0..=2)?];
+        let (k, i) = (u.int_in_range(0..=n - 1)?, u.int_in_range(0..=9)?);
+        segments[k][i] = bad;
+    }
+    Ok(segments)
+}
+
+/// A query on two paths (sharing one scale, 2-D or 3-D) with the exponent of a length
+/// scaling.
+pub fn path_case(u: &mut Unstructured) -> Result<(PathCase, i32)> {
+    let s = case_scale(u)?;
+    let three_d = u.arbitrary()?;
+    let case = PathCase {
+        a: path(u, s)?,
+        b: path(u, s)?,
+        radius: radius(u, s)?,
+        t_max: t_max(u)?,
+        three_d,
+    };
+    Ok((case, u.int_in_range(-1100..=1100)?))
 }

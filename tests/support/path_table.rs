@@ -1,5 +1,5 @@
 //! [`PathTable`]: paths stored as the batch functions' rows (`N` paths of `K` segments,
-//! padded with `+∞` starts), built from [`Path`]s, for the benchmarks.
+//! padded with `+∞` starts), built from [`Path`]s, for the benchmarks and the path invariants.
 //!
 //! Included by path: `#[path = "../tests/support/path_table.rs"] mod path_table;`.
 #![allow(dead_code)]
