@@ -17,7 +17,8 @@
 //! `cargo bench --bench paths` (under 2 minutes: few samples, short runs); `-- pool_table` etc.
 //! selects a group. One-thread groups (`…_1_thread`) time the thread's CPU time
 //! ([`ThreadCpuTime`]), the others wall time. First, for each set, the hits and how the pairs
-//! divide are printed (see [`describe`]).
+//! divide are printed (see [`describe`]); with `--features stage-counts`, also how many pairs
+//! and windows each stage of the library's search settles (`collision::stage_counts`).
 
 use std::hint::black_box;
 use std::num::NonZeroUsize;
@@ -26,6 +27,7 @@ use std::time::Duration;
 
 use ballcollide::Ball;
 use ballcollide::batch::{PathPairs, PerPair, Threads, collision_times, path_collision_times};
+use ballcollide::collision::stage_counts;
 use ballcollide::path::Path2;
 use criterion::measurement::Measurement;
 use criterion::{
@@ -155,7 +157,9 @@ fn window_starts(set: &PathSet, i: usize) -> Vec<f64> {
 /// apart (and, of those, any hit — there must be none), and the windows a search from `t = 0`
 /// meets up to the contact (or to the last start).
 fn describe(name: &str, set: &PathSet) {
+    stage_counts::take();
     let times = set.times();
+    let stages = stage_counts::take();
     let n = times.len();
     let (mut at_zero, mut first, mut later, mut apart, mut apart_hits) = (0, 0, 0, 0, 0);
     let (mut windows, mut windows_no_contact) = (0, 0);
@@ -190,6 +194,25 @@ fn describe(name: &str, set: &PathSet) {
         pct(apart),
         windows as f64 / n as f64,
     );
+    if stages.path_pairs > 0 {
+        let of = |k: u64, n: u64| 100.0 * k as f64 / n as f64;
+        let left = stages.path_pairs - stages.bounds_apart;
+        eprintln!(
+            "{name}: stages (feature stage-counts): {} pairs; path bounds apart: {} ({:.1} %); \
+             the {left} left: {} windows ({:.2} a pair), {} ({:.1} %) proven apart by the \
+             window box, {} ({:.1} %) searched; {} contacts",
+            stages.path_pairs,
+            stages.bounds_apart,
+            of(stages.bounds_apart, stages.path_pairs),
+            stages.windows,
+            stages.windows as f64 / left.max(1) as f64,
+            stages.windows_box_apart,
+            of(stages.windows_box_apart, stages.windows),
+            stages.windows_searched,
+            of(stages.windows_searched, stages.windows),
+            stages.contacts,
+        );
+    }
 }
 
 /// The group's short-run settings: few samples, so that the whole bench stays under 2 min; on

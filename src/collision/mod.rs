@@ -1,4 +1,33 @@
-//! When two balls first touch: [`collision_time`].
+//! When two balls first touch: [`collision_time`] (friction balls) and
+//! [`path_collision_time`] (balls on paths of constant-acceleration segments).
+//!
+//! ## The map
+//!
+//! Every query goes through the same stages, in this order; each stage is one file and one
+//! name, and the scalar queries, the batches (`crate::batch`) and the scene
+//! (`crate::scene`) call the same function for it, so that all give the same bits.
+//!
+//! | stage | file | what it proves or does | who calls it |
+//! |---|---|---|---|
+//! | unit of length | `length_unit.rs` | divides every length of a pair by one power of two (exact), so that no answer depends on the unit | every query; batch lanes (`normalise_lanes`) |
+//! | **friction balls** | | | |
+//! | prefilter | `prefilter.rs` | the balls' straight runs to rest stay apart: never a contact | `collision_time`, scene, batch lanes |
+//! | crossing | `crossing.rs` | moving balls whose runs cross are never there at the same time | `collision_time`, scene, batch lanes |
+//! | straight | `straight.rs` | one ball at rest: the contact in closed form | `collision_time`, scene, batch lanes |
+//! | moving entry | `moving_entry.rs` | both moving, a plain crossing in the first window: the contact by fixed Newton steps | `collision_time`, scene, batch lanes |
+//! | after stop | `after_stop.rs` | after the first stop, the mover against a ball at rest: closed form | `collision_time`, scene, batch lanes |
+//! | **paths** | | | |
+//! | path bounds | `path_bounds.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch) |
+//! | path contact | `path_contact.rs` | the window loop: windows between segment starts of either path, each formed from the two active segments in time since their own starts | `path_collision_time`, `path_collision_times` |
+//! | (counts) | `stage_counts.rs` | how many pairs and windows each path stage settles (cargo feature `stage-counts`) | the benchmarks |
+//! | window box | `window_box.rs` | the box the separation sweeps over one window keeps out of the contact distance | path windows; pieces of long windows |
+//! | **every window that is left** | | | |
+//! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
+//! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window` |
+//! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `search_window` |
+//! | entry | `entry.rs` | the first + → − sign change on the pieces left: critical points, bracketed Newton | `search_window` |
+//!
+//! ## Friction balls
 //!
 //! The time axis splits at the two stop times into at most three windows; on each, both
 //! motions are polynomial and the gap `g(t) = |x_A(t) − x_B(t)|² − radius²` is a quartic
@@ -27,6 +56,12 @@
 //! The quartic is never divided by its leading coefficient, so equal or nearly equal friction
 //! vectors (where it vanishes or nearly so) need no special case.
 //!
+//! ## Paths
+//!
+//! A path query first compares the two paths' bounds (`path_bounds`); the pairs left are
+//! searched window by window (`path_contact`): each window's separation box (`window_box`)
+//! settles most windows, and the rest go to the same window search as the friction balls'.
+//!
 //! ## Semantics (SPEC)
 //! - touching or overlapping at `t = 0` is a collision at `0` only if the balls approach
 //!   (`d·d′ < 0`, or `d·d′ = 0` with the gap shrinking at second order, `|d′|² + d·d″ < 0`);
@@ -46,6 +81,7 @@ pub(crate) mod moving_entry;
 pub(crate) mod path_bounds;
 pub(crate) mod path_contact;
 pub(crate) mod prefilter;
+pub mod stage_counts;
 pub(crate) mod straight;
 mod window_box;
 

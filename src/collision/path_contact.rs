@@ -12,6 +12,7 @@
 
 use super::length_unit::LengthUnit;
 use super::path_bounds::PathBounds;
+use super::stage_counts::{Stage, count};
 use super::window_box::apart_on_window;
 use super::{
     CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_length, search_window,
@@ -92,7 +93,9 @@ pub(crate) fn first_bounded_contact<const D: usize>(
 ) -> Option<f64> {
     // Paths whose boxes keep apart need no window: a proof (its margin far above the
     // search's rounding), so its answer is the search's, in any unit.
+    count(Stage::PathPair);
     if bounds_a.apart(bounds_b, radii[0] + radii[1]) {
+        count(Stage::BoundsApart);
         return None;
     }
     let unit = bounds_a.pair_unit(bounds_b, radii);
@@ -117,17 +120,22 @@ pub(crate) fn first_bounded_contact<const D: usize>(
                 // approach; otherwise only a later re-entry counts.
                 let apart = apart_at_start(&gap);
                 if !apart && approaching(&gap) {
+                    count(Stage::Contact);
                     return Some(start);
                 }
                 apart
             }
         };
         // Most windows of balls on paths are proven apart by the box the separation sweeps.
+        count(Stage::Window);
         if apart_on_window(&gap, bounded_length(&gap, end - start)) {
+            count(Stage::WindowBoxApart);
             previous_positive = Some(true);
         } else {
+            count(Stage::WindowSearched);
             match search_window(&gap, end - start, before) {
                 WindowSearch::Entry(s) => {
+                    count(Stage::Contact);
                     let t = start + s;
                     return (t < t_max).then_some(t);
                 }

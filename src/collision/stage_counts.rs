@@ -1,0 +1,70 @@
+//! How many pairs and windows each stage of the path search settles: counters compiled in
+//! only with the cargo feature `stage-counts` (off by default, so that the search pays
+//! nothing for them), read by the benchmarks (`cargo bench --bench paths --features
+//! stage-counts`).
+//!
+//! ```
+//! use ballcollide::collision::stage_counts;
+//! let counts = stage_counts::take(); // all zero without the feature
+//! assert!(counts.path_pairs >= counts.bounds_apart);
+//! ```
+
+#[cfg(feature = "stage-counts")]
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// The counts since the last [`take`], over every thread.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StageCounts {
+    /// Pairs of paths searched (valid input).
+    pub path_pairs: u64,
+    /// Of those, the pairs whose whole-path bounds are apart (`path_bounds`): no window.
+    pub bounds_apart: u64,
+    /// Windows formed for the pairs left (`path_contact`).
+    pub windows: u64,
+    /// Windows that the separation box proves apart (`window_box`).
+    pub windows_box_apart: u64,
+    /// Windows handed to the window search (`search_window`).
+    pub windows_searched: u64,
+    /// Contacts found (at the first time or in a window; one at or past the horizon, reported
+    /// as none, included).
+    pub contacts: u64,
+}
+
+/// One counter per field of [`StageCounts`].
+#[derive(Clone, Copy)]
+pub(crate) enum Stage {
+    PathPair,
+    BoundsApart,
+    Window,
+    WindowBoxApart,
+    WindowSearched,
+    Contact,
+}
+
+#[cfg(feature = "stage-counts")]
+static COUNTS: [AtomicU64; 6] = [const { AtomicU64::new(0) }; 6];
+
+/// Counts one event of `stage` (nothing without the feature).
+#[inline(always)]
+pub(crate) fn count(stage: Stage) {
+    #[cfg(feature = "stage-counts")]
+    COUNTS[stage as usize].fetch_add(1, Ordering::Relaxed);
+    #[cfg(not(feature = "stage-counts"))]
+    let _ = stage;
+}
+
+/// The counts since the last call (all zero without the feature), and zero them.
+pub fn take() -> StageCounts {
+    #[cfg(feature = "stage-counts")]
+    let c: [u64; 6] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
+    #[cfg(not(feature = "stage-counts"))]
+    let c = [0u64; 6];
+    StageCounts {
+        path_pairs: c[Stage::PathPair as usize],
+        bounds_apart: c[Stage::BoundsApart as usize],
+        windows: c[Stage::Window as usize],
+        windows_box_apart: c[Stage::WindowBoxApart as usize],
+        windows_searched: c[Stage::WindowSearched as usize],
+        contacts: c[Stage::Contact as usize],
+    }
+}
