@@ -181,7 +181,7 @@ fn solve_chunk(pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) -> Result<(), 
 /// The widest x86-64 vector extensions that the batch has a copy of its loops for.
 #[cfg(target_arch = "x86_64")]
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum X86Level {
+pub(crate) enum X86Level {
     /// AVX-512 F, VL and DQ, with AVX2 and FMA.
     Avx512,
     /// AVX2 and FMA.
@@ -193,7 +193,7 @@ enum X86Level {
 #[cfg(target_arch = "x86_64")]
 impl X86Level {
     /// What this CPU supports (cached by the standard library after the first call).
-    fn detect() -> Self {
+    pub(crate) fn detect() -> Self {
         use std::arch::is_x86_feature_detected as has;
         let avx2 = has!("avx2") && has!("fma");
         if avx2 && has!("avx512f") && has!("avx512vl") && has!("avx512dq") {

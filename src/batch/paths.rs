@@ -9,6 +9,8 @@
 //! [`path_collision_time`](crate::path_collision_time), so batch and single answers are
 //! identical, and so are the answers for any number of threads.
 
+#[cfg(target_arch = "x86_64")]
+use super::X86Level;
 use super::{PerPair, Threads, check_len, run_chunks};
 use crate::collision::path_bounds::PathBounds;
 use crate::collision::path_contact::first_bounded_contact;
@@ -129,13 +131,71 @@ pub fn path_collision_times<const D: usize>(
 ) -> Result<(), InputError> {
     let shared = check_path_pairs(pairs, out.len())?;
     run_chunks(out, threads, |offset, chunk| {
-        // One buffer per side and task, reused for every pair.
-        let mut buffers = (Vec::new(), Vec::new());
-        for (k, slot) in chunk.iter_mut().enumerate() {
-            *slot = pair_time(pairs, offset + k, &shared, &mut buffers)?;
-        }
-        Ok(())
+        path_chunk(pairs, offset, chunk, &shared)
     })
+}
+
+/// The answers of pairs `offset..` into `chunk`, in the widest copy of [`path_chunk_portable`]
+/// this CPU runs (the copies compute the same bits: only the instructions differ).
+fn path_chunk<const D: usize>(
+    pairs: &PathPairs<'_, D>,
+    offset: usize,
+    chunk: &mut [f64],
+    shared: &SharedPaths<D>,
+) -> Result<(), InputError> {
+    #[cfg(target_arch = "x86_64")]
+    match X86Level::detect() {
+        // SAFETY: the CPU supports the features each copy is compiled for, just detected.
+        X86Level::Avx512 => return unsafe { path_chunk_avx512(pairs, offset, chunk, shared) },
+        X86Level::Avx2 => return unsafe { path_chunk_avx2(pairs, offset, chunk, shared) },
+        X86Level::Baseline => {}
+    }
+    path_chunk_portable(pairs, offset, chunk, shared)
+}
+
+/// [`path_chunk_portable`] compiled with AVX2 and FMA enabled.
+///
+/// # Safety
+/// The CPU must support AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn path_chunk_avx2<const D: usize>(
+    pairs: &PathPairs<'_, D>,
+    offset: usize,
+    chunk: &mut [f64],
+    shared: &SharedPaths<D>,
+) -> Result<(), InputError> {
+    path_chunk_portable(pairs, offset, chunk, shared)
+}
+
+/// [`path_chunk_portable`] compiled with AVX-512 (F, VL, DQ), AVX2 and FMA enabled.
+///
+/// # Safety
+/// The CPU must support those features.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512dq")]
+unsafe fn path_chunk_avx512<const D: usize>(
+    pairs: &PathPairs<'_, D>,
+    offset: usize,
+    chunk: &mut [f64],
+    shared: &SharedPaths<D>,
+) -> Result<(), InputError> {
+    path_chunk_portable(pairs, offset, chunk, shared)
+}
+
+/// Every pair of the chunk in turn, with one buffer per side reused for every pair.
+#[inline(always)]
+fn path_chunk_portable<const D: usize>(
+    pairs: &PathPairs<'_, D>,
+    offset: usize,
+    chunk: &mut [f64],
+    shared: &SharedPaths<D>,
+) -> Result<(), InputError> {
+    let mut buffers = (Vec::new(), Vec::new());
+    for (k, slot) in chunk.iter_mut().enumerate() {
+        *slot = pair_time(pairs, offset + k, shared, &mut buffers)?;
+    }
+    Ok(())
 }
 
 /// The broadcast paths of a batch of path pairs (A's, B's), read and checked once, with their
@@ -263,6 +323,7 @@ pub(crate) fn check_path_positions<const D: usize>(
 
 /// Pair `i`'s answer: its paths are the shared ones where a side is broadcast, else read
 /// into that side's buffer.
+#[inline(always)]
 fn pair_time<const D: usize>(
     pairs: &PathPairs<'_, D>,
     i: usize,

@@ -48,12 +48,19 @@ impl<const D: usize> PathBounds<D> {
     /// ends at rest the middle value is the stopping point itself, so the box is tight). The
     /// last segment lasts for ever: its side is unbounded wherever it drifts (towards its
     /// acceleration, or else its velocity).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn of(segments: &[Segment<D>]) -> Self {
         let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
         let (mut size, mut most) = (0.0, [0.0; D]);
-        let ends = segments.iter().skip(1).map(|next| next.start);
-        for (s, end) in segments.iter().zip(ends.chain([f64::INFINITY])) {
+        let Some((last, finite)) = segments.split_last() else {
+            return Self {
+                lo,
+                hi,
+                size,
+                largest: 0.0,
+            };
+        };
+        for (k, s) in finite.iter().enumerate() {
             let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
             for i in 0..D {
                 most[i] = greater(
@@ -61,29 +68,29 @@ impl<const D: usize> PathBounds<D> {
                     greater(v[i].abs(), a[i].abs()),
                 );
             }
-            let length = end - s.start;
+            // `finite` is all but the last segment: segment `k + 1` is the next one.
+            let length = segments[k + 1].start - s.start;
             if length <= 0.0 {
                 continue; // empty: never active
             }
-            if length < f64::INFINITY {
-                for i in 0..D {
-                    let middle = p[i] + 0.5 * v[i] * length;
-                    let end = p[i] + (v[i] + 0.5 * a[i] * length) * length;
-                    size += p[i].abs() + (v[i].abs() + a[i].abs() * length) * length;
-                    lo[i] = lesser(lo[i], lesser(lesser(p[i], middle), end));
-                    hi[i] = greater(hi[i], greater(greater(p[i], middle), end));
-                }
-            } else {
-                for i in 0..D {
-                    let (p, v, a) = (p[i], v[i], a[i]);
-                    size += p.abs();
-                    let drift = if a != 0.0 { a } else { v };
-                    let down = drift < 0.0 || (a > 0.0 && v < 0.0);
-                    let up = drift > 0.0 || (a < 0.0 && v > 0.0);
-                    lo[i] = lesser(lo[i], if down { f64::NEG_INFINITY } else { p });
-                    hi[i] = greater(hi[i], if up { f64::INFINITY } else { p });
-                }
+            for i in 0..D {
+                let middle = p[i] + 0.5 * v[i] * length;
+                let end = p[i] + (v[i] + 0.5 * a[i] * length) * length;
+                size += p[i].abs() + (v[i].abs() + a[i].abs() * length) * length;
+                lo[i] = lesser(lo[i], lesser(lesser(p[i], middle), end));
+                hi[i] = greater(hi[i], greater(greater(p[i], middle), end));
             }
+        }
+        // The last segment lasts for ever.
+        for i in 0..D {
+            let (p, v, a) = (last.position[i], last.velocity[i], last.acceleration[i]);
+            most[i] = greater(greater(most[i], p.abs()), greater(v.abs(), a.abs()));
+            size += p.abs();
+            let drift = if a != 0.0 { a } else { v };
+            let down = drift < 0.0 || (a > 0.0 && v < 0.0);
+            let up = drift > 0.0 || (a < 0.0 && v > 0.0);
+            lo[i] = lesser(lo[i], if down { f64::NEG_INFINITY } else { p });
+            hi[i] = greater(hi[i], if up { f64::INFINITY } else { p });
         }
         let most = most.iter().fold(0.0, |m: f64, &x| greater(m, x));
         Self {

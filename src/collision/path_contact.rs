@@ -83,8 +83,8 @@ pub(crate) fn first_path_contact<const D: usize>(
 }
 
 /// [`first_path_contact`] with each path's bounds given (a batch computes a broadcast path's
-/// once).
-#[inline]
+/// once); inlined into each vector copy of the batch.
+#[inline(always)]
 pub(crate) fn first_bounded_contact<const D: usize>(
     (a, bounds_a): (&[Segment<D>], &PathBounds<D>),
     (b, bounds_b): (&[Segment<D>], &PathBounds<D>),

@@ -69,6 +69,7 @@ impl<const D: usize> Path<D> {
 
 /// The used segments of one path's rows (of equal lengths), checked, into `segments` (cleared
 /// first; a batch reuses one buffer for all its paths); errors use `names` and the row.
+#[inline(always)]
 pub(crate) fn segments_from_rows<const D: usize>(
     [start]: [&[f64]; 1],
     [pos, vel, acc]: [&[[f64; D]]; 3],
