@@ -388,3 +388,110 @@ fn check_side<const D: usize>(
         paths => check_len(names.start, paths, n),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_rng::Rng;
+
+    /// `n` random 2-D paths of up to 4 segments in rows of 4 (padded with `+∞` starts):
+    /// positions on a table, speeds and accelerations of a rolling or sliding ball, in random
+    /// directions, segments of random lengths (sometimes empty), the last often at rest.
+    fn random_rows(n: usize, seed: u64) -> (Vec<f64>, [Vec<[f64; 2]>; 3]) {
+        let mut rng = Rng(seed);
+        let (mut start, mut pos, mut vel, mut acc) = (vec![], vec![], vec![], vec![]);
+        for _ in 0..n {
+            let used = 1 + rng.below(4) as usize;
+            let mut t = 0.0;
+            for k in 0..4 {
+                let at_rest = k + 1 == used && rng.below(2) == 0;
+                let draw = |rng: &mut Rng, scale: f64| {
+                    if at_rest {
+                        [0.0; 2]
+                    } else {
+                        [rng.uniform(-scale, scale), rng.uniform(-scale, scale)]
+                    }
+                };
+                start.push(if k < used { t } else { f64::INFINITY });
+                pos.push([rng.uniform(0.0, 2.5), rng.uniform(0.0, 1.3)]);
+                vel.push(draw(&mut rng, 3.0));
+                acc.push(draw(&mut rng, 2.0));
+                t += if rng.below(8) == 0 {
+                    0.0
+                } else {
+                    rng.uniform(0.0, 2.0)
+                };
+            }
+        }
+        (start, [pos, vel, acc])
+    }
+
+    #[test]
+    fn every_vector_copy_agrees_with_the_portable_code_bit_for_bit() {
+        let n = 4_000;
+        let (start_a, [pos_a, vel_a, acc_a]) = random_rows(n, 1);
+        let (start_b, [pos_b, vel_b, acc_b]) = random_rows(n, 2);
+        let pairs = PathPairs {
+            a: PathRows {
+                start: &start_a,
+                pos: &pos_a,
+                vel: &vel_a,
+                acc: &acc_a,
+                segments: 4,
+            },
+            b: PathRows {
+                start: &start_b,
+                pos: &pos_b,
+                vel: &vel_b,
+                acc: &acc_b,
+                segments: 4,
+            },
+            radius: PerPair::All(0.3),
+            t_max: PerPair::All(f64::INFINITY),
+        };
+        let shared = check_path_pairs(&pairs, n).expect("valid");
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        let mut portable = vec![0.0; n];
+        assert_eq!(
+            path_chunk_portable(&pairs, 0, &mut portable, &shared),
+            Ok(())
+        );
+        let hits = portable.iter().filter(|t| t.is_finite()).count();
+        assert!(hits > 400, "{hits} hits: the set should exercise contacts");
+        // The single query's bits, pair by pair.
+        for i in (0..n).step_by(7) {
+            let path = |s: &PathRows<'_, 2>| {
+                let mut segments = Vec::new();
+                read_path(s, i, &NAMES[0], &mut segments).expect("valid");
+                segments
+            };
+            let single = first_path_contact_of(&path(&pairs.a), &path(&pairs.b), 0.3);
+            assert_eq!(single.to_bits(), portable[i].to_bits(), "pair {i}");
+        }
+        let mut copy = vec![0.0; n];
+        assert_eq!(path_chunk(&pairs, 0, &mut copy, &shared), Ok(()));
+        assert_eq!(bits(&portable), bits(&copy));
+        #[cfg(target_arch = "x86_64")]
+        {
+            let level = X86Level::detect();
+            if level != X86Level::Baseline {
+                // SAFETY: AVX2 and FMA are supported (both vector levels include them).
+                let done = unsafe { path_chunk_avx2(&pairs, 0, &mut copy, &shared) };
+                assert_eq!(done, Ok(()));
+                assert_eq!(bits(&portable), bits(&copy));
+            }
+            if level == X86Level::Avx512 {
+                // SAFETY: AVX-512 F, VL and DQ are supported, just detected.
+                let done = unsafe { path_chunk_avx512(&pairs, 0, &mut copy, &shared) };
+                assert_eq!(done, Ok(()));
+                assert_eq!(bits(&portable), bits(&copy));
+            }
+        }
+    }
+
+    /// The scalar search on two checked paths, `∞` for none.
+    fn first_path_contact_of(a: &[Segment<2>], b: &[Segment<2>], radius: f64) -> f64 {
+        crate::collision::path_contact::first_path_contact(a, b, [radius, 0.0], f64::INFINITY)
+            .unwrap_or(f64::INFINITY)
+    }
+}
