@@ -7,10 +7,6 @@
 mod exact;
 #[path = "support/invariants.rs"]
 mod invariants;
-#[path = "support/path_invariants.rs"]
-mod path_invariants;
-#[path = "support/path_table.rs"]
-mod path_table;
 #[path = "support/strategies.rs"]
 mod strategies;
 

@@ -12,6 +12,8 @@ mod exact;
 mod invariants;
 #[path = "support/path_invariants.rs"]
 mod path_invariants;
+#[path = "support/path_strategies.rs"]
+mod path_strategies;
 #[path = "support/path_table.rs"]
 mod path_table;
 #[path = "support/strategies.rs"]
@@ -29,7 +31,7 @@ proptest! {
     })]
 
     #[test]
-    fn paths_keep_their_invariants((case, k) in strategies::path_case()) {
+    fn paths_keep_their_invariants((case, k) in path_strategies::path_case()) {
         path_invariants::path(&case, k).map_err(TestCaseError::fail)?;
     }
 }

@@ -345,3 +345,52 @@ mod found_in_review {
         assert_eq!(Some(scene[1]), pair);
     }
 }
+
+/// A path from `(start, x, vx, ax)` rows along the x axis.
+fn path_x(rows: &[(f64, f64, f64, f64)]) -> ballcollide::Path2 {
+    let v = |x: f64| Vector2::new(x, 0.0);
+    let segments = rows
+        .iter()
+        .map(|&(s, x, vx, ax)| ballcollide::Segment2::new(s, v(x), v(vx), v(ax)))
+        .collect();
+    ballcollide::Path2::new(segments).expect("valid path")
+}
+
+#[test]
+fn box_screens_count_what_underflow_costs() {
+    // A subnormal acceleration (5·2⁻¹⁰⁷⁴) over a segment of 2³⁷ s carries A to 1.25·2⁻⁹⁹⁹;
+    // halving the acceleration in floats loses a fifth of that, which a margin relative to
+    // the magnitudes did not cover: the whole-path box was "apart" from B, which A reaches.
+    // Found by review, with the invariant "lengths scaled by 2^k change no bit".
+    let tiny = f64::from_bits(1); // 2⁻¹⁰⁷⁴
+    let l = 2f64.powi(37);
+    let x = 9.0 * 2f64.powi(-1001);
+    let answer = |k: i32| {
+        let s = 2f64.powi(k);
+        let a = path_x(&[(0.0, 0.0, 0.0, 5.0 * tiny * s), (l, 0.0, 0.0, 0.0)]);
+        let b = path_x(&[(0.0, x * s, 0.0, 0.0)]);
+        ballcollide::path_collision_time(&a, &b, x / 2.0 * s, &CollisionOptions::default())
+            .expect("valid input")
+    };
+    // ½·5·2⁻¹⁰⁷⁴·t² = 4.5·2⁻¹⁰⁰¹: t = √(1.8·2⁷³).
+    let want = (1.8f64).sqrt() * 2f64.powf(36.5);
+    let t = answer(0).expect("a contact");
+    assert!((t - want).abs() <= 1e-12 * want, "{t} vs {want}");
+    assert_eq!(answer(100).map(f64::to_bits), Some(t.to_bits()));
+}
+
+#[test]
+fn a_segment_that_is_never_active_plays_no_part() {
+    // A 1e300 m away in an empty segment (its start is the next one's) must not choose the
+    // pair's unit of length: B at 3e-20 m, approached at 1.1e-20 m/s, touches at radius 1e-20.
+    let b = path_x(&[(0.0, 3e-20, 0.0, 0.0)]);
+    let plain = path_x(&[(0.0, 0.0, 1.1e-20, 0.0)]);
+    let with_empty = path_x(&[(0.0, 1e300, 0.0, 0.0), (0.0, 0.0, 1.1e-20, 0.0)]);
+    let time = |a: &ballcollide::Path2| {
+        ballcollide::path_collision_time(a, &b, 1e-20, &CollisionOptions::default())
+            .expect("valid input")
+    };
+    let t = time(&plain).expect("a contact");
+    assert!((t - 2.0 / 1.1).abs() < 1e-15 * t, "{t}");
+    assert_eq!(time(&with_empty).map(f64::to_bits), Some(t.to_bits()));
+}

@@ -330,8 +330,9 @@ pub fn poly_case(u: &mut Unstructured) -> Result<(Vec<f64>, i32, i32)> {
 
 /// A path of 1 to 6 segments whose numbers are scaled by `2^s`: starts from a first one
 /// (0, small, or any) by durations that are small, table-like or any size (now and then
-/// one that goes back in time), positions and velocities like [`ball`]'s, accelerations like
-/// frictions of either sign; one path in eight has one value no path may hold (NaN, ±∞), so
+/// one that goes back in time; now and then 2²⁰…2⁴⁵ long), positions and velocities like
+/// [`ball`]'s, accelerations like frictions of either sign (now and then subnormal); one path
+/// in eight has one value no path may hold (NaN, ±∞), so
 /// that the checks of invalid paths are fuzzed too.
 fn path(u: &mut Unstructured, s: i32) -> Result<Vec<SegmentInput>> {
     let n = u.int_in_range(1..=6)?;
@@ -343,11 +344,13 @@ fn path(u: &mut Unstructured, s: i32) -> Result<Vec<SegmentInput>> {
     let mut segments = Vec::with_capacity(n);
     for k in 0..n {
         if k > 0 {
-            start += match u.arbitrary::<u8>()? % 16 {
+            start += match u.arbitrary::<u8>()? % 17 {
                 0 => -small(u)?.abs(),
                 1 | 2 => 0.0,
                 3 | 4 => wide(u)?.abs(),
                 5..=9 => table(u)?.abs(),
+                // Long segments, where an underflowing product costs most.
+                16 => scale(1.0, u.int_in_range(20..=45)?),
                 _ => small(u)?.abs(),
             };
         }
@@ -357,7 +360,12 @@ fn path(u: &mut Unstructured, s: i32) -> Result<Vec<SegmentInput>> {
             *x = length(u, s)?;
         }
         for x in &mut row[7..] {
-            let a = friction(u, s)?;
+            // Now and then a subnormal acceleration, `i·2⁻¹⁰⁷⁴`.
+            let a = if u.ratio(1, 8)? {
+                f64::from_bits(u.int_in_range(1..=63)?)
+            } else {
+                friction(u, s)?
+            };
             *x = if u.arbitrary()? { -a } else { a };
         }
         segments.push(row);

@@ -9,7 +9,7 @@
 //!
 //! | stage | file | what it proves or does | who calls it |
 //! |---|---|---|---|
-//! | unit of length | `length_unit.rs` | divides every length of a pair by one power of two (exact), so that no answer depends on the unit | every query; batch lanes (`normalise_lanes`) |
+//! | unit of length | `length_unit.rs` | divides every length of a pair by one power of two (exact), so that no answer depends on the unit | every friction-ball query, its batch lanes (`normalise_lanes`); every path window (the path bounds work on the caller's numbers, with a margin for underflow) |
 //! | **friction balls** | | | |
 //! | prefilter | `prefilter.rs` | the balls' straight runs to rest stay apart: never a contact | `collision_time`, scene, batch lanes |
 //! | crossing | `crossing.rs` | moving balls whose runs cross are never there at the same time | `collision_time`, scene, batch lanes |
@@ -23,8 +23,8 @@
 //! | window box | `window_box.rs` | the box the separation sweeps over one window keeps out of the contact distance | path windows; pieces of long windows |
 //! | **every window that is left** | | | |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
-//! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window` |
-//! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `search_window` |
+//! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
+//! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `entry` (for `search_window`), `crossing`, `moving_entry` |
 //! | entry | `entry.rs` | the first + → − sign change on the pieces left: critical points, bracketed Newton | `search_window` |
 //!
 //! ## Friction balls
@@ -97,6 +97,8 @@ use long_window::{first_piece, long_window, next_piece, plain_piece};
 use moving_entry::{WhileMoving, while_moving_one};
 use nalgebra::SVector;
 pub use path_contact::path_collision_time;
+#[doc(hidden)]
+pub use path_contact::path_collision_time_unscreened;
 use prefilter::{PairInput, never_touch};
 use window_box::apart_on_window;
 

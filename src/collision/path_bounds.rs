@@ -9,11 +9,8 @@
 //! unit of length comes ([`length_unit`](super::length_unit)) for the pairs that go on.
 
 use super::length_unit::{LengthUnit, largest};
+use super::window_box::{MARGIN, UNDERFLOW};
 use crate::path::Segment;
-
-/// Relative size of the margin, `2⁻⁴⁰ ≈ 9e-13` of the magnitudes involved: far above the few
-/// roundings (`ε = 2⁻⁵³`) made in forming the boxes.
-const MARGIN: f64 = 1.0 / ((1u64 << 40) as f64);
 
 /// What the screens need of one valid path: the box its centre stays in from its first start
 /// on, a bound on the magnitudes that formed the box (for the margin), and the largest
@@ -26,8 +23,9 @@ pub(crate) struct PathBounds<const D: usize> {
     largest: f64,
 }
 
-/// The smaller of two numbers, as one select (the inputs here are never NaN where it
-/// matters: a NaN from an overflow makes `size` infinite, which proves nothing).
+/// The smaller of two numbers, as one select. It may drop a NaN (`lesser(NaN, y)` is `y`):
+/// harmless here, because a box value is NaN only where a product overflowed, and then `size`
+/// is infinite or NaN too, so that [`PathBounds::apart`] proves nothing.
 #[inline(always)]
 fn lesser(x: f64, y: f64) -> f64 {
     if x < y { x } else { y }
@@ -62,21 +60,26 @@ impl<const D: usize> PathBounds<D> {
         };
         for (k, s) in finite.iter().enumerate() {
             let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
+            // `finite` is all but the last segment: segment `k + 1` is the next one.
+            let length = segments[k + 1].start - s.start;
+            if length <= 0.0 {
+                continue; // empty: never active, and no part of the unit either
+            }
             for i in 0..D {
                 most[i] = greater(
                     greater(most[i], p[i].abs()),
                     greater(v[i].abs(), a[i].abs()),
                 );
             }
-            // `finite` is all but the last segment: segment `k + 1` is the next one.
-            let length = segments[k + 1].start - s.start;
-            if length <= 0.0 {
-                continue; // empty: never active
-            }
+            // The margin covers relative roundings, and what underflowing products can cost
+            // ([`UNDERFLOW`]: at most `2⁻¹⁰⁷⁴·(1 + L)²` here, where nothing is divided).
+            let reach = 1.0 + length;
             for i in 0..D {
                 let middle = p[i] + 0.5 * v[i] * length;
                 let end = p[i] + (v[i] + 0.5 * a[i] * length) * length;
-                size += p[i].abs() + (v[i].abs() + a[i].abs() * length) * length;
+                size += p[i].abs()
+                    + (v[i].abs() + a[i].abs() * length) * length
+                    + UNDERFLOW * reach * reach;
                 lo[i] = lesser(lo[i], lesser(lesser(p[i], middle), end));
                 hi[i] = greater(hi[i], greater(greater(p[i], middle), end));
             }
@@ -159,7 +162,7 @@ mod tests {
     }
 
     #[test]
-    fn empty_segments_are_skipped_but_count_for_the_unit() {
+    fn empty_segments_are_skipped_even_for_the_unit() {
         let a = [
             Segment::new(0.0, V::new(0.0, 0.0), V::zeros(), V::zeros()),
             Segment::new(1.0, V::new(1e9, 0.0), V::zeros(), V::zeros()), // empty
@@ -167,7 +170,7 @@ mod tests {
         ];
         let bounds = PathBounds::of(&a);
         assert_eq!((bounds.lo, bounds.hi), ([0.0, 0.0], [0.0, 0.0]));
-        assert_eq!(bounds.largest, 1e9);
+        assert_eq!(bounds.largest, 0.0); // never active: no part of the unit
     }
 
     #[test]

@@ -82,10 +82,43 @@ pub(crate) fn first_path_contact<const D: usize>(
     )
 }
 
+/// [`path_collision_time`] without the stages that only prove balls apart (the path bounds
+/// and the window box): every window goes to the window search. Those stages are proofs, so
+/// the answers must be the same bits; the invariant tests and the fuzz target check it with
+/// this. Not part of the supported API.
+#[doc(hidden)]
+pub fn path_collision_time_unscreened<const D: usize>(
+    a: &Path<D>,
+    b: &Path<D>,
+    radius: f64,
+    options: &CollisionOptions,
+) -> Result<Option<f64>, InputError> {
+    let radius = check_radius("radius", radius)?;
+    let t_max = check_horizon("t_max", options.t_max)?;
+    let (a, b) = (a.segments(), b.segments());
+    Ok(first_screened_contact::<D, false>(
+        (a, &PathBounds::of(a)),
+        (b, &PathBounds::of(b)),
+        [radius, 0.0],
+        t_max,
+    ))
+}
+
 /// [`first_path_contact`] with each path's bounds given (a batch computes a broadcast path's
 /// once); inlined into each vector copy of the batch.
 #[inline(always)]
 pub(crate) fn first_bounded_contact<const D: usize>(
+    a: (&[Segment<D>], &PathBounds<D>),
+    b: (&[Segment<D>], &PathBounds<D>),
+    radii: [f64; 2],
+    t_max: f64,
+) -> Option<f64> {
+    first_screened_contact::<D, true>(a, b, radii, t_max)
+}
+
+/// The search, with the screens that prove balls apart (`SCREENS`) or without them.
+#[inline(always)]
+fn first_screened_contact<const D: usize, const SCREENS: bool>(
     (a, bounds_a): (&[Segment<D>], &PathBounds<D>),
     (b, bounds_b): (&[Segment<D>], &PathBounds<D>),
     radii: [f64; 2],
@@ -94,7 +127,7 @@ pub(crate) fn first_bounded_contact<const D: usize>(
     // Paths whose boxes keep apart need no window: a proof (its margin far above the
     // search's rounding), so its answer is the search's, in any unit.
     count(Stage::PathPair);
-    if bounds_a.apart(bounds_b, radii[0] + radii[1]) {
+    if SCREENS && bounds_a.apart(bounds_b, radii[0] + radii[1]) {
         count(Stage::BoundsApart);
         return None;
     }
@@ -128,7 +161,7 @@ pub(crate) fn first_bounded_contact<const D: usize>(
         };
         // Most windows of balls on paths are proven apart by the box the separation sweeps.
         count(Stage::Window);
-        if apart_on_window(&gap, bounded_length(&gap, end - start)) {
+        if SCREENS && apart_on_window(&gap, bounded_length(&gap, end - start)) {
             count(Stage::WindowBoxApart);
             previous_positive = Some(true);
         } else {

@@ -3,16 +3,18 @@
 //! nothing for them), read by the benchmarks (`cargo bench --bench paths --features
 //! stage-counts`).
 //!
-//! ```
-//! use ballcollide::collision::stage_counts;
-//! let counts = stage_counts::take(); // all zero without the feature
-//! assert!(counts.path_pairs >= counts.bounds_apart);
-//! ```
+//! See [`take`] for an example.
 
 #[cfg(feature = "stage-counts")]
 use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The counts since the last [`take`], over every thread.
+///
+/// ```
+/// use ballcollide::collision::stage_counts::StageCounts;
+/// let none = StageCounts::default();
+/// assert_eq!(none.path_pairs - none.bounds_apart, 0); // the pairs that went on to windows
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct StageCounts {
     /// Pairs of paths searched (valid input).
@@ -54,6 +56,26 @@ pub(crate) fn count(stage: Stage) {
 }
 
 /// The counts since the last call (all zero without the feature), and zero them.
+///
+/// ```
+/// use ballcollide::collision::stage_counts;
+/// use ballcollide::path::{Path2, Segment2};
+/// use ballcollide::{CollisionOptions, path_collision_time};
+/// use nalgebra::Vector2;
+///
+/// stage_counts::take();
+/// let a = Path2::new(vec![Segment2::at_rest(0.0, Vector2::zeros())])?;
+/// let b = Path2::new(vec![Segment2::at_rest(0.0, Vector2::new(5.0, 0.0))])?;
+/// path_collision_time(&a, &b, 1.0, &CollisionOptions::default())?;
+/// let counts = stage_counts::take();
+/// if cfg!(feature = "stage-counts") {
+///     // Two balls at rest 5 apart: the path bounds settle the pair.
+///     assert_eq!((counts.path_pairs, counts.bounds_apart, counts.windows), (1, 1, 0));
+/// } else {
+///     assert_eq!(counts, Default::default());
+/// }
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
 pub fn take() -> StageCounts {
     #[cfg(feature = "stage-counts")]
     let c: [u64; 6] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));

@@ -13,11 +13,24 @@
 use crate::coefficients::Gap;
 
 /// Relative size of the margin, `2⁻⁴⁰ ≈ 9e-13` of the magnitudes involved: far above the few
-/// roundings (`ε = 2⁻⁵³`) made in forming the box and in the search's own arithmetic.
-const MARGIN: f64 = 1.0 / ((1u64 << 40) as f64);
+/// roundings (`ε = 2⁻⁵³`) made in forming a box and in the search's own arithmetic.
+pub(crate) const MARGIN: f64 = 1.0 / ((1u64 << 40) as f64);
+
+/// The margin's absolute part, in units of the magnitudes that [`MARGIN`] multiplies: a
+/// quadratic's values over a span of length `L` computed in floats are off by more than
+/// relative roundings only where a product underflows, by at most `2⁻¹⁰⁷⁵` each, which the
+/// later products by `L` (and by the velocity, at the vertex) scale up: in all below
+/// `2⁻¹⁰⁷⁴·(1 + |v| + L)²`. Counting `UNDERFLOW·(1 + |v| + L)²` among the magnitudes puts
+/// `2⁻¹⁰³⁰·2⁻⁴⁰` of it in the margin, far above that.
+pub(crate) const UNDERFLOW: f64 = f64::from_bits(1 << 44); // 2⁻¹⁰³⁰, subnormal
+
+/// Below this, a computed square may have lost more than relative roundings to underflow (a
+/// few `2⁻¹⁰⁷⁵`): comparisons of squares keep this much apart.
+const SQUARE_SLACK: f64 = f64::from_bits(1 << 4); // 16·2⁻¹⁰⁷⁴
 
 /// The range `(lo, hi)` of `p + v·s + ½·a·s²` over `s ∈ [0, length]` (its values at the ends
-/// and at its vertex, if inside), and a bound on the magnitudes that form it (for the margin).
+/// and at its vertex, if inside), and a bound on the magnitudes that form it and on what
+/// underflow can cost them (for the margin).
 #[inline(always)]
 fn axis_range(p: f64, v: f64, a: f64, length: f64) -> (f64, f64, f64) {
     let end = p + (v + 0.5 * a * length) * length;
@@ -29,7 +42,9 @@ fn axis_range(p: f64, v: f64, a: f64, length: f64) -> (f64, f64, f64) {
         lo = lo.min(vertex);
         hi = hi.max(vertex);
     }
-    (lo, hi, p.abs() + (v.abs() + a.abs() * length) * length)
+    let magnitude = p.abs() + (v.abs() + a.abs() * length) * length;
+    let reach = 1.0 + v.abs() + length;
+    (lo, hi, magnitude + UNDERFLOW * reach * reach)
 }
 
 /// Whether `g > 0` is proven on `[0, length]` (time since the window's start) by the box the
@@ -53,7 +68,7 @@ pub(crate) fn apart_on_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool
     }
     let reach = gap.radius + MARGIN * size;
     // NaN (an overflowing window) fails the comparison: not proven.
-    nearest2 > reach * reach
+    nearest2 > reach * reach + SQUARE_SLACK
 }
 
 #[cfg(test)]
@@ -87,6 +102,12 @@ mod tests {
         assert!(!apart_on_window(&g, 3.0));
         // The same cut before the turn, at x ≈ 1.38: apart.
         assert!(apart_on_window(&g, 0.35));
+    }
+
+    #[test]
+    fn the_underflow_margins_are_the_powers_of_two_they_say() {
+        assert_eq!(UNDERFLOW, 2f64.powi(-1030));
+        assert_eq!(SQUARE_SLACK, 2f64.powi(-1070));
     }
 
     #[test]

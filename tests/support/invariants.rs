@@ -404,13 +404,14 @@ pub fn scene(case: &SceneCase, k: i32) -> Check {
         }
     }
     let balls: Vec<Ball> = case.balls.iter().map(ball).collect::<Result<_, _>>()?;
+    let search = if in_range {
+        PairSearch::BroadPhase
+    } else {
+        PairSearch::AllPairs
+    };
     let options = SceneOptions {
         t_max: case.t_max,
-        search: if in_range {
-            PairSearch::BroadPhase
-        } else {
-            PairSearch::AllPairs
-        },
+        search,
         ..SceneOptions::default()
     };
     let earliest = earliest_collision(&balls, &case.radii, &options)
@@ -451,7 +452,8 @@ pub fn scene(case: &SceneCase, k: i32) -> Check {
         radii: case.radii.clone(),
         t_max: flip_zeros(case.t_max),
     };
-    let m = matrix(&flipped, PairSearch::BroadPhase, 2)?;
+    // The same search as above: outside the contract's range, all pairs.
+    let m = matrix(&flipped, search, 2)?;
     if bits(&m) != bits(&brute) {
         return Err(format!(
             "−0.0 = +0.0: the scene's matrix changed, for {case:?}"
@@ -479,7 +481,7 @@ pub fn scene(case: &SceneCase, k: i32) -> Check {
         })
     })();
     if let Some(scaled) = scaled {
-        let m = matrix(&scaled, PairSearch::BroadPhase, 2)?;
+        let m = matrix(&scaled, search, 2)?;
         if bits(&m) != bits(&brute) {
             return Err(format!(
                 "lengths scaled by 2^{k}: the scene's matrix changed, for {case:?}"

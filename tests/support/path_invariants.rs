@@ -10,12 +10,14 @@
 //!   earlier, else none, for the case's horizon and for horizons just past the contact);
 //!   swapping A and B, flipping the sign of every zero and scaling every length (positions,
 //!   velocities, accelerations, radius) by `2^k` change no bit, whenever the scaled inputs are
-//!   exact; the batch gives the single query's bits, per pair and with A broadcast, on one
-//!   thread and on two.
+//!   exact; without the screens that prove balls apart, every window searched, the answer is
+//!   the same bits; the batch gives the single query's bits, per pair and with either side or
+//!   both broadcast, on one thread and on two.
 
 #![allow(dead_code)]
 
 use ballcollide::batch::{PathPairs, PerPair, Threads, path_collision_times};
+use ballcollide::collision::path_collision_time_unscreened;
 use ballcollide::path::Path;
 use ballcollide::{CollisionOptions, path_collision_time};
 use std::num::NonZeroUsize;
@@ -151,10 +153,17 @@ fn path_in<const D: usize>(case: &PathCase, k: i32) -> Check {
     let mut out = [f64::NAN];
     let batch = path_collision_times(&pairs, &mut out, Threads::All);
     if !(valid[0] && valid[1] && params_ok) {
-        return match batch {
-            Err(_) => Ok(()),
-            Ok(()) => Err(format!("invalid input accepted by the batch: {case:?}")),
-        };
+        if batch.is_ok() {
+            return Err(format!("invalid input accepted by the batch: {case:?}"));
+        }
+        // Valid paths with an invalid radius or horizon: the single query refuses it too.
+        if let (Ok(pa), Ok(pb)) = (path_of(&rows_a), path_of(&rows_b)) {
+            let single = path_collision_time(&pa, &pb, radius, &CollisionOptions { t_max });
+            if single.is_ok() {
+                return Err(format!("invalid radius or horizon accepted: {case:?}"));
+            }
+        }
+        return Ok(());
     }
     batch.map_err(|e| format!("valid batch rejected: {e}, for {case:?}"))?;
     let free = time_of::<D>(a, b, radius, f64::INFINITY)?;
@@ -177,7 +186,19 @@ fn path_in<const D: usize>(case: &PathCase, k: i32) -> Check {
     if out[0].to_bits() != cut.unwrap_or(f64::INFINITY).to_bits() {
         return Err(format!("batch {:e} ≠ single {cut:?}, for {case:?}", out[0]));
     }
-    let horizons = free.map_or(vec![t_max], |t| vec![t_max, t.next_up(), t + 1.0, 1e10]);
+    // The screens are proofs: without them, every window searched, the same bits.
+    let (pa, pb) = (path_of(&rows_a), path_of(&rows_b));
+    if let (Ok(pa), Ok(pb)) = (&pa, &pb) {
+        let unscreened =
+            path_collision_time_unscreened(pa, pb, radius, &CollisionOptions { t_max })
+                .map_err(|e| format!("valid query rejected without screens: {e}, for {case:?}"))?;
+        if !same(unscreened, cut) {
+            return Err(format!(
+                "the screens changed the answer: {cut:?}, without them {unscreened:?}, for {case:?}"
+            ));
+        }
+    }
+    let horizons = free.map_or(vec![t_max], |t| vec![t_max, t, t.next_up(), t + 1.0, 1e10]);
     // Horizons are ≥ 0 (absolute times before 0 are always earlier than any horizon).
     for h in horizons.into_iter().filter(|&h| h >= 0.0) {
         let got = time_of::<D>(a, b, radius, h)?;
@@ -224,25 +245,34 @@ fn path_in<const D: usize>(case: &PathCase, k: i32) -> Check {
             ));
         }
     }
-    // A broadcast against three copies of B, per-pair radii, on one thread and on two.
-    let copies = rows_b.pick(&[0, 0, 0]);
+    // Broadcasts: A against three copies of B, three copies of A against B, one against one;
+    // per-pair radii; on one thread and on two.
+    let (copies_a, copies_b) = (rows_a.pick(&[0, 0, 0]), rows_b.pick(&[0, 0, 0]));
     let radii = [radius; 3];
-    let pairs = PathPairs {
-        a: rows_a.side(),
-        b: copies.side(),
-        radius: PerPair::Each(&radii),
-        t_max: PerPair::All(t_max),
-    };
-    for threads in [1, 2] {
-        let mut out = [f64::NAN; 3];
-        let t = Threads::AtMost(NonZeroUsize::new(threads).unwrap_or(NonZeroUsize::MIN));
-        path_collision_times(&pairs, &mut out, t)
-            .map_err(|e| format!("valid broadcast batch rejected: {e}, for {case:?}"))?;
-        let want = cut.unwrap_or(f64::INFINITY).to_bits();
-        if out.iter().any(|x| x.to_bits() != want) {
-            return Err(format!(
-                "broadcast batch on {threads} thread(s) {out:?} ≠ single {cut:?}, for {case:?}"
-            ));
+    let sides = [
+        (rows_a.side(), copies_b.side(), 3),
+        (copies_a.side(), rows_b.side(), 3),
+        (rows_a.side(), rows_b.side(), 1),
+    ];
+    for (side_a, side_b, n) in sides {
+        let pairs = PathPairs {
+            a: side_a,
+            b: side_b,
+            radius: PerPair::Each(&radii[..n]),
+            t_max: PerPair::All(t_max),
+        };
+        for threads in [1, 2] {
+            let mut out = vec![f64::NAN; n];
+            let t = Threads::AtMost(NonZeroUsize::new(threads).unwrap_or(NonZeroUsize::MIN));
+            path_collision_times(&pairs, &mut out, t)
+                .map_err(|e| format!("valid broadcast batch rejected: {e}, for {case:?}"))?;
+            let want = cut.unwrap_or(f64::INFINITY).to_bits();
+            if out.iter().any(|x| x.to_bits() != want) {
+                return Err(format!(
+                    "broadcast batch ({n} pairs, {threads} thread(s)) {out:?} ≠ single {cut:?}, \
+                     for {case:?}"
+                ));
+            }
         }
     }
     Ok(())
