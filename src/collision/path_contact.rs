@@ -55,13 +55,20 @@ pub fn path_collision_time<const D: usize>(
     radius: f64,
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
-    let radius = check_radius("radius", radius)?;
-    let t_max = check_horizon("t_max", options.t_max)?;
+    let (radius, t_max) = checked(radius, options)?;
     Ok(first_path_contact(
         a.segments(),
         b.segments(),
         [radius, 0.0],
         t_max,
+    ))
+}
+
+/// A single query's radius and horizon, checked.
+fn checked(radius: f64, options: &CollisionOptions) -> Result<(f64, f64), InputError> {
+    Ok((
+        check_radius("radius", radius)?,
+        check_horizon("t_max", options.t_max)?,
     ))
 }
 
@@ -74,7 +81,17 @@ pub(crate) fn first_path_contact<const D: usize>(
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
-    first_bounded_contact(
+    first_contact_of::<D, true>(a, b, radii, t_max)
+}
+
+/// [`first_path_contact`], with or without the screens.
+fn first_contact_of<const D: usize, const SCREENS: bool>(
+    a: &[Segment<D>],
+    b: &[Segment<D>],
+    radii: [f64; 2],
+    t_max: f64,
+) -> Option<f64> {
+    first_screened_contact::<D, SCREENS>(
         (a, &PathBounds::of(a)),
         (b, &PathBounds::of(b)),
         radii,
@@ -93,12 +110,10 @@ pub fn path_collision_time_unscreened<const D: usize>(
     radius: f64,
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
-    let radius = check_radius("radius", radius)?;
-    let t_max = check_horizon("t_max", options.t_max)?;
-    let (a, b) = (a.segments(), b.segments());
-    Ok(first_screened_contact::<D, false>(
-        (a, &PathBounds::of(a)),
-        (b, &PathBounds::of(b)),
+    let (radius, t_max) = checked(radius, options)?;
+    Ok(first_contact_of::<D, false>(
+        a.segments(),
+        b.segments(),
         [radius, 0.0],
         t_max,
     ))
