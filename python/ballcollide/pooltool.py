@@ -1,0 +1,388 @@
+"""ballcollide as pooltool's ball–ball detector: its own simulations, exact contact times.
+
+`pooltool <https://github.com/ekiefl/pooltool>`_ (``pip install pooltool-billiards``) finds
+when two balls touch from a quartic of their current motion segments. That quartic breaks on
+ordinary shots: balls rolling side by side at the same velocity "collide" at once (its
+leading coefficients vanish), exactly touching balls that separate collide at ``t = 0``,
+overlapping balls collide whether or not they approach, and roots past a segment's end stand
+in for contacts. :func:`install` swaps in ballcollide: each ball's pooltool state becomes a
+path of constant-acceleration segments — sliding (friction ``−u_s·g·û`` against the slip
+``û``), rolling (``−u_r·g·v̂``), then at rest (a ball spinning in place does not move) — and
+each pair's first contact on those paths is found by :func:`ballcollide.path_collision_times`
+(balls that touch and separate do not collide; contact distance ``R₁ + R₂``, so balls of
+different sizes are right too; a pair pooltool's resolution left overlapping collides when
+its overlap would deepen past what it is, never "at once" while it separates). Everything else — transitions, cushions, pockets, collision
+resolution, the event loop — stays pooltool's own.
+
+The hook is pooltool's pair loop, ``pooltool.evolution.event_based.simulate.
+get_next_ball_ball_collision``, which :func:`pooltool.simulate` looks up at each event: the
+replacement, :func:`next_ball_ball_collision`, answers every pair missing from pooltool's
+collision cache (after an event: each involved ball against all others) in one batch call,
+and keeps the cache's keys, order and absolute times as pooltool's own loop does.
+
+Supported: pooltool-billiards 0.6.0 (:data:`SUPPORTED_VERSIONS`); :func:`install` raises on
+any other version. pooltool 0.6.0 installs only with ``--no-deps`` (it pins a development
+build of panda3d that no package index has): ``scripts/install-pooltool VENV`` in the
+repository installs it with the dependencies it needs. Importing ``ballcollide`` never imports
+pooltool; this module imports it only inside :func:`install` and the functions that take
+pooltool objects.
+
+>>> import pooltool as pt
+>>> import ballcollide.pooltool as bcp
+>>> with bcp.install():                      # or bcp.install() ... bcp.uninstall()
+...     system = pt.simulate(pt.System.example())
+>>> bcp.is_installed()
+False
+>>> sum(e.event_type == pt.EventType.BALL_BALL for e in system.events) > 0
+True
+"""
+
+from __future__ import annotations
+
+import types
+from collections.abc import Sequence
+from itertools import combinations
+from typing import Any, Callable, Optional
+
+import numpy as np
+import numpy.typing as npt
+
+from . import InputError, path_collision_times
+
+__all__ = [
+    "SUPPORTED_VERSIONS",
+    "Installation",
+    "ball_paths",
+    "collision_time",
+    "install",
+    "is_installed",
+    "next_ball_ball_collision",
+    "uninstall",
+]
+
+#: The pooltool-billiards versions :func:`install` accepts.
+SUPPORTED_VERSIONS: tuple[str, ...] = ("0.6.0",)
+
+# pooltool's motion-state labels (pooltool.constants in 0.6.0).
+_STATIONARY, _SPINNING, _SLIDING, _ROLLING, _POCKETED = 0, 1, 2, 3, 4
+_NOT_MOVING = (_STATIONARY, _SPINNING, _POCKETED)
+
+#: Segments per path: sliding, rolling, at rest (unused ones have zero length).
+SEGMENTS = 3
+
+_F64 = npt.NDArray[np.float64]
+
+# pooltool's own pair loop while ours is installed, else None.
+_original: Optional[Callable[..., Any]] = None
+
+
+def _simulate_module() -> types.ModuleType:
+    """pooltool's event-based simulation module, once its version is checked."""
+    try:
+        import pooltool
+        from pooltool.evolution.event_based import simulate
+    except ImportError as e:
+        raise ImportError(
+            f"ballcollide.pooltool needs pooltool-billiards {' or '.join(SUPPORTED_VERSIONS)} "
+            f"({e}); it installs only with --no-deps plus its dependencies: run "
+            "`scripts/install-pooltool VENV` from ballcollide's repository"
+        ) from e
+    version = getattr(pooltool, "__version__", "unknown")
+    if version not in SUPPORTED_VERSIONS:
+        raise RuntimeError(
+            f"ballcollide.pooltool supports pooltool-billiards "
+            f"{', '.join(SUPPORTED_VERSIONS)}, not {version}: its pair loop "
+            "(simulate.get_next_ball_ball_collision) may differ; install a supported version"
+        )
+    if not callable(getattr(simulate, "get_next_ball_ball_collision", None)):
+        raise RuntimeError(
+            f"pooltool {version} has no simulate.get_next_ball_ball_collision to replace"
+        )
+    return simulate
+
+
+class Installation:
+    """What :func:`install` returns: a context manager that undoes that install on exit.
+
+    Leaving the ``with`` block calls :func:`uninstall` only if this :func:`install` call is
+    the one that swapped the detector in (a nested ``with install():`` inside an installed
+    detector leaves it installed).
+
+    >>> import ballcollide.pooltool as bcp
+    >>> with bcp.install() as handle:
+    ...     bcp.is_installed(), handle.swapped
+    (True, True)
+    >>> bcp.is_installed()
+    False
+    """
+
+    def __init__(self, swapped: bool) -> None:
+        #: Whether this install() call replaced pooltool's own detector.
+        self.swapped = swapped
+
+    def __enter__(self) -> Installation:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        if self.swapped:
+            uninstall()
+
+
+def install() -> Installation:
+    """Make pooltool's simulations use ballcollide for ball–ball contact times.
+
+    Replaces ``pooltool.evolution.event_based.simulate.get_next_ball_ball_collision`` by
+    :func:`next_ball_ball_collision` until :func:`uninstall` (or the end of a ``with``
+    block). Installing twice is the same as once.
+
+    Raises
+    ------
+    ImportError
+        pooltool is not installed.
+    RuntimeError
+        pooltool's version is not one of :data:`SUPPORTED_VERSIONS`.
+
+    >>> import pooltool as pt
+    >>> import ballcollide.pooltool as bcp
+    >>> _ = bcp.install()
+    >>> pt.evolution.event_based.simulate.get_next_ball_ball_collision is (
+    ...     bcp.next_ball_ball_collision)
+    True
+    >>> bcp.uninstall()
+    """
+    global _original
+    simulate = _simulate_module()
+    if _original is not None:
+        return Installation(swapped=False)
+    _original = simulate.get_next_ball_ball_collision
+    simulate.get_next_ball_ball_collision = next_ball_ball_collision
+    return Installation(swapped=True)
+
+
+def uninstall() -> None:
+    """Give pooltool its own ball–ball detector back (nothing happens if none is installed).
+
+    Raises
+    ------
+    RuntimeError
+        Something else replaced pooltool's pair loop after :func:`install`: it is left as it
+        is rather than overwritten.
+
+    >>> import pooltool as pt
+    >>> import ballcollide.pooltool as bcp
+    >>> stock = pt.evolution.event_based.simulate.get_next_ball_ball_collision
+    >>> _ = bcp.install(); bcp.uninstall()
+    >>> pt.evolution.event_based.simulate.get_next_ball_ball_collision is stock
+    True
+    """
+    global _original
+    if _original is None:
+        return
+    from pooltool.evolution.event_based import simulate
+
+    if simulate.get_next_ball_ball_collision is not next_ball_ball_collision:
+        raise RuntimeError(
+            "pooltool's simulate.get_next_ball_ball_collision was replaced by something else "
+            "after ballcollide.pooltool.install(); not restoring over it"
+        )
+    simulate.get_next_ball_ball_collision = _original
+    _original = None
+
+
+def is_installed() -> bool:
+    """Whether :func:`install` is in force.
+
+    >>> import ballcollide.pooltool as bcp
+    >>> bcp.is_installed()
+    False
+    """
+    return _original is not None
+
+
+def ball_paths(balls: Sequence[Any]) -> tuple[_F64, _F64, _F64, _F64]:
+    """Each pooltool ball's path from its current state, in time from that state's time.
+
+    Returns ``(start (N, 3), pos (N, 3, 2), vel (N, 3, 2), acc (N, 3, 2))`` as
+    :func:`ballcollide.path_collision_times` takes them: the segments sliding, rolling and at
+    rest, on the table's plane (pooltool 0.6 moves balls in x and y only). A segment a ball
+    skips has zero length (a rolling ball's sliding segment, say); one that never ends
+    (``u_s = 0`` or ``u_r = 0``) is followed by ``+inf`` starts. Each ball's own ``R``,
+    ``u_s``, ``u_r`` and ``g`` are used; ``u_sp`` only decays the spin of a ball whose centre
+    is at rest, so it changes no path. Motion states are pooltool's labels, as its own
+    evolution reads them: a *sliding* ball slides for ``2|u|/(7·u_s·g)`` with
+    ``u = v + ω × (−R·ẑ)`` (none if ``u = 0``), a *rolling* one rolls for ``|v|/(u_r·g)``,
+    spinning, stationary and pocketed ones stay where they are.
+
+    >>> import pooltool as pt
+    >>> import ballcollide.pooltool as bcp
+    >>> ball = pt.Ball.create("cue", xy=(0.5, 0.5))
+    >>> ball.state.rvw[1] = (1.0, 0.0, 0.0)   # 1 m/s along x, rolling:
+    >>> ball.state.rvw[2] = (0.0, 1.0 / ball.params.R, 0.0)
+    >>> ball.state.s = 3
+    >>> start, pos, vel, acc = bcp.ball_paths([ball])
+    >>> start.round(6).tolist()                # no slide; rolls 1/(0.01·9.81) s, then rests
+    [[0.0, 0.0, 10.193680]]
+    >>> pos[0, 2].round(6).tolist()            # at rest |v|²/(2·u_r·g) further on
+    [5.596840, 0.5]
+    """
+    n = len(balls)
+    rvw = np.array([b.state.rvw for b in balls], dtype=np.float64).reshape(n, 3, 3)
+    state = np.array([b.state.s for b in balls], dtype=np.int64)
+    params = np.array(
+        [(b.params.R, b.params.u_s, b.params.u_r, b.params.g) for b in balls], dtype=np.float64
+    ).reshape(n, 4)
+    radius, u_s, u_r, g = params.T
+    r0, v0, w = rvw[:, 0, :2], rvw[:, 1, :2], rvw[:, 2]
+    sliding = state == _SLIDING
+    moving = sliding | (state == _ROLLING)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        # The contact point's velocity over the cloth, v + ω × (−R ẑ): constant in direction
+        # while the ball slides, friction against it.
+        slip = v0 + radius[:, None] * np.stack([-w[:, 1], w[:, 0]], axis=1)
+        slip_speed = np.hypot(slip[:, 0], slip[:, 1])
+        slides = sliding & (slip_speed > 0)
+        slide_for = np.where(slides, np.where(u_s > 0, 2 * slip_speed / (7 * u_s * g), np.inf), 0)
+        a1 = np.where(slides[:, None], -(u_s * g / slip_speed)[:, None] * slip, 0.0)
+        r1 = r0 + v0 * slide_for[:, None] + 0.5 * a1 * (slide_for**2)[:, None]
+        v1 = v0 + a1 * slide_for[:, None]
+        speed = np.hypot(v1[:, 0], v1[:, 1])
+        rolls = moving & (speed > 0)
+        roll_for = np.where(rolls, np.where(u_r > 0, speed / (u_r * g), np.inf), 0)
+        a2 = np.where(rolls[:, None], -(u_r * g / speed)[:, None] * v1, 0.0)
+        r2 = r1 + v1 * roll_for[:, None] + 0.5 * a2 * (roll_for**2)[:, None]
+        rest_at = np.where(np.isinf(slide_for), np.inf, slide_for + roll_for)
+    start = np.stack([np.zeros(n), slide_for, rest_at], axis=1)
+    pos = np.stack([r0, r1, r2], axis=1)
+    vel = np.stack([v0, v1, np.zeros_like(v0)], axis=1)
+    acc = np.stack([a1, a2, np.zeros_like(v0)], axis=1)
+    return start, pos, vel, acc
+
+
+def _pair_times(balls: Sequence[Any], first: Sequence[int], second: Sequence[int]) -> _F64:
+    """Contact times (from the balls' current time) of the pairs ``balls[first[p]]``,
+    ``balls[second[p]]``: ``inf`` where either is pocketed or neither moves, else one call
+    of :func:`ballcollide.path_collision_times` on the rest."""
+    times = np.full(len(first), np.inf)
+    state = [b.state.s for b in balls]
+    asked = [
+        p
+        for p, (i, j) in enumerate(zip(first, second))
+        if _POCKETED not in (state[i], state[j])
+        and not (state[i] in _NOT_MOVING and state[j] in _NOT_MOVING)
+    ]
+    if not asked:
+        return times
+    start, pos, vel, acc = ball_paths(balls)
+    ia = np.array([first[p] for p in asked])
+    ja = np.array([second[p] for p in asked])
+    radius = np.array([b.params.R for b in balls], dtype=np.float64)
+    contact = radius[ia] + radius[ja]
+    # A pair that pooltool's resolution left overlapping (it moves a contact's two balls
+    # apart, which in a cluster can push one into a third) touches at its present distance:
+    # at once if closing in, else when the overlap comes back to what it is now.
+    apart = pos[ja, 0] - pos[ia, 0]
+    dist = np.hypot(apart[:, 0], apart[:, 1])
+    contact = np.where((dist < contact) & (dist > 0), dist, contact)
+    try:
+        found = path_collision_times(
+            start[ia], pos[ia], vel[ia], acc[ia],
+            start[ja], pos[ja], vel[ja], acc[ja],
+            contact,
+        )  # fmt: skip
+    except InputError as e:
+        raise _ball_error(e, balls, ia, ja) from e
+    times[asked] = found
+    return times
+
+
+def _ball_error(
+    e: InputError, balls: Sequence[Any], ia: npt.NDArray[np.int64], ja: npt.NDArray[np.int64]
+) -> ValueError:
+    """A bad path's error, naming the pooltool balls instead of the batch's arrays."""
+    if e.index is None:
+        return ValueError(f"ballcollide.pooltool: {e}")
+    if e.argument.endswith("_a"):
+        ball = balls[int(ia[e.index])]
+    elif e.argument.endswith("_b"):
+        ball = balls[int(ja[e.index])]
+    else:
+        pair = (balls[int(ia[e.index])].id, balls[int(ja[e.index])].id)
+        return ValueError(f"ballcollide.pooltool: balls {pair}: {e.reason}")
+    return ValueError(
+        f"ballcollide.pooltool: ball {ball.id!r} (motion state {ball.state.s}, rvw "
+        f"{ball.state.rvw.tolist()}, params R={ball.params.R} u_s={ball.params.u_s} "
+        f"u_r={ball.params.u_r} g={ball.params.g}): {e.reason}"
+    )
+
+
+def collision_time(ball1: Any, ball2: Any) -> float:
+    """When two pooltool balls first touch, in time from their current state; ``inf`` if
+    they never do (as nothing else happens to them).
+
+    The answer :func:`next_ball_ball_collision` puts in pooltool's cache (less the current
+    time), for pooltool's ``solve.ball_ball_collision_time``'s question. Balls touching now
+    touch at ``0`` only if they approach. Balls overlapping now (pooltool's resolution of a
+    contact can push a ball a little into a third) touch at their present distance: at ``0``
+    if closing in, else when their overlap comes back to what it is now, or never.
+
+    >>> import pooltool as pt
+    >>> import ballcollide.pooltool as bcp
+    >>> a = pt.Ball.create("a", xy=(0.5, 0.5))
+    >>> b = pt.Ball.create("b", xy=(1.0, 0.5))
+    >>> a.state.rvw[1] = (1.0, 0.0, 0.0)       # sliding towards b with no spin
+    >>> a.state.s = 2
+    >>> round(bcp.collision_time(a, b), 6)     # after 0.5 − 2R of travel
+    0.483109
+    >>> bcp.collision_time(b, a) == bcp.collision_time(a, b)
+    True
+    """
+    return float(_pair_times([ball1, ball2], [0], [1])[0])
+
+
+def next_ball_ball_collision(shot: Any, collision_cache: Any) -> Any:
+    """pooltool's next ball–ball collision event, with ballcollide's contact times.
+
+    The drop-in for ``pooltool.evolution.event_based.simulate.get_next_ball_ball_collision``
+    (same arguments and result): every pair of ``shot.balls`` missing from the cache's
+    ball–ball times gets its absolute contact time ``shot.t + t`` (``inf`` for none), all in
+    one batch call, in pooltool's key order; the earliest cached pair is returned as a
+    ``ball_ball`` event (the first such pair on ties, as pooltool picks it), or a null event
+    at ``inf`` if there are no pairs.
+
+    >>> import pooltool as pt
+    >>> from pooltool.evolution.event_based.cache import CollisionCache
+    >>> import ballcollide.pooltool as bcp
+    >>> system = pt.System.example()
+    >>> system.strike(V0=1.0, phi=pt.aim.at_ball(system, "1"))
+    >>> pt.simulate(system, inplace=True, max_events=1)   # the cue strikes: cue ball slides
+    ... # doctest: +ELLIPSIS
+    <...>
+    >>> cache = CollisionCache.create()
+    >>> event = bcp.next_ball_ball_collision(system, cache)
+    >>> event.event_type == pt.EventType.BALL_BALL, sorted(event.ids)
+    (True, ['1', 'cue'])
+    >>> len(cache.times[pt.EventType.BALL_BALL])           # three balls: three pairs
+    3
+    """
+    from pooltool.events import EventType, ball_ball_collision, null_event
+
+    cache = collision_cache.times.setdefault(EventType.BALL_BALL, {})
+    balls = list(shot.balls.values())
+    first: list[int] = []
+    second: list[int] = []
+    for i, j in combinations(range(len(balls)), 2):
+        key = (balls[i].id, balls[j].id)
+        if key not in cache:
+            cache[key] = np.inf  # the key's place in pooltool's order; the time follows
+            first.append(i)
+            second.append(j)
+    if first:
+        times = _pair_times(balls, first, second)
+        for i, j, t in zip(first, second, times.tolist()):
+            cache[balls[i].id, balls[j].id] = shot.t + t
+    if not cache:
+        return null_event(np.inf)
+    pair = min(cache, key=cache.__getitem__)
+    return ball_ball_collision(
+        ball1=shot.balls[pair[0]], ball2=shot.balls[pair[1]], time=cache[pair]
+    )
