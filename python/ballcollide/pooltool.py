@@ -11,8 +11,9 @@ path of constant-acceleration segments — sliding (friction ``−u_s·g·û`` a
 each pair's first contact on those paths is found by :func:`ballcollide.path_collision_times`
 (balls that touch and separate do not collide; contact distance ``R₁ + R₂``, so balls of
 different sizes are right too; a pair pooltool's resolution left overlapping collides when
-its overlap would deepen past what it is, never "at once" while it separates). Everything else — transitions, cushions, pockets, collision
-resolution, the event loop — stays pooltool's own.
+its overlap would deepen past what it is, never "at once" while it separates). Everything
+else — transitions, cushions, pockets, collision resolution, the event loop — stays
+pooltool's own.
 
 The hook is pooltool's pair loop, ``pooltool.evolution.event_based.simulate.
 get_next_ball_ball_collision``, which :func:`pooltool.simulate` looks up at each event: the
@@ -39,10 +40,9 @@ True
 
 from __future__ import annotations
 
-import types
 from collections.abc import Sequence
 from itertools import combinations
-from typing import Any, Callable, Optional
+from typing import Any, Callable
 
 import numpy as np
 import numpy.typing as npt
@@ -73,10 +73,10 @@ SEGMENTS = 3
 _F64 = npt.NDArray[np.float64]
 
 # pooltool's own pair loop while ours is installed, else None.
-_original: Optional[Callable[..., Any]] = None
+_original: Callable[..., Any] | None = None
 
 
-def _simulate_module() -> types.ModuleType:
+def _simulate_module() -> Any:
     """pooltool's event-based simulation module, once its version is checked."""
     try:
         import pooltool
@@ -221,9 +221,9 @@ def ball_paths(balls: Sequence[Any]) -> tuple[_F64, _F64, _F64, _F64]:
     >>> ball.state.s = 3
     >>> start, pos, vel, acc = bcp.ball_paths([ball])
     >>> start.round(6).tolist()                # no slide; rolls 1/(0.01·9.81) s, then rests
-    [[0.0, 0.0, 10.193680]]
+    [[0.0, 0.0, 10.19368]]
     >>> pos[0, 2].round(6).tolist()            # at rest |v|²/(2·u_r·g) further on
-    [5.596840, 0.5]
+    [5.59684, 0.5]
     """
     n = len(balls)
     rvw = np.array([b.state.rvw for b in balls], dtype=np.float64).reshape(n, 3, 3)
@@ -329,10 +329,10 @@ def collision_time(ball1: Any, ball2: Any) -> float:
     >>> import ballcollide.pooltool as bcp
     >>> a = pt.Ball.create("a", xy=(0.5, 0.5))
     >>> b = pt.Ball.create("b", xy=(1.0, 0.5))
-    >>> a.state.rvw[1] = (1.0, 0.0, 0.0)       # sliding towards b with no spin
-    >>> a.state.s = 2
-    >>> round(bcp.collision_time(a, b), 6)     # after 0.5 − 2R of travel
-    0.483109
+    >>> a.state.rvw[1] = (1.0, 0.0, 0.0)       # sliding towards b with no spin (a stun
+    >>> a.state.s = 2                          # shot): slides 0.146 s, then rolls
+    >>> round(bcp.collision_time(a, b), 6)     # touches after 0.5 − 2R of travel
+    0.60538
     >>> bcp.collision_time(b, a) == bcp.collision_time(a, b)
     True
     """
@@ -352,17 +352,19 @@ def next_ball_ball_collision(shot: Any, collision_cache: Any) -> Any:
     >>> import pooltool as pt
     >>> from pooltool.evolution.event_based.cache import CollisionCache
     >>> import ballcollide.pooltool as bcp
-    >>> system = pt.System.example()
-    >>> system.strike(V0=1.0, phi=pt.aim.at_ball(system, "1"))
-    >>> pt.simulate(system, inplace=True, max_events=1)   # the cue strikes: cue ball slides
-    ... # doctest: +ELLIPSIS
-    <...>
+    >>> balls = {i: pt.Ball.create(i, xy=(0.5, y)) for i, y in [("cue", 0.5), ("1", 1.0),
+    ...                                                        ("2", 1.5)]}
+    >>> balls["cue"].state.rvw[1] = (0.0, 1.0, 0.0)   # towards 1, sliding
+    >>> balls["cue"].state.s = 2
+    >>> system = pt.System(cue=pt.Cue(cue_ball_id="cue"), table=pt.Table.default(),
+    ...                    balls=balls)
     >>> cache = CollisionCache.create()
     >>> event = bcp.next_ball_ball_collision(system, cache)
-    >>> event.event_type == pt.EventType.BALL_BALL, sorted(event.ids)
-    (True, ['1', 'cue'])
-    >>> len(cache.times[pt.EventType.BALL_BALL])           # three balls: three pairs
-    3
+    >>> event.event_type == pt.EventType.BALL_BALL, event.ids, round(event.time, 6)
+    (True, ('cue', '1'), 0.60538)
+    >>> # Each pair's contact as if nothing else happened, in absolute time:
+    >>> {k: round(t, 6) for k, t in cache.times[pt.EventType.BALL_BALL].items()}
+    {('cue', '1'): 0.60538, ('cue', '2'): 1.398689, ('1', '2'): inf}
     """
     from pooltool.events import EventType, ball_ball_collision, null_event
 

@@ -83,7 +83,7 @@ def test_each_event_is_stock_pooltools_from_the_same_state_wherever_stock_is_rig
         if same(ours, stock):
             agreed += 1
             continue
-        early, late = (ours, stock) if ours.time <= stock.time else (stock, ours)
+        early = ours if ours.time <= stock.time else stock
         assert early.event_type == BALL_BALL, (k, ours, stock)
         if early is stock and not verified(shot, stock):
             stock_wrong.append((k, stock.ids, stock.time - shot.t))
@@ -117,6 +117,8 @@ def test_balls_touch_at_every_ball_ball_event(game: str, seed: int) -> None:
             inside += left > TOUCH
         allowed = after.copy()
     assert contacts >= 5 and inside <= contacts // 2, (contacts, inside)
+
+
 @pytest.mark.parametrize(("game", "seed"), BREAKS)
 def test_no_ball_overlaps_another_between_events(game: str, seed: int) -> None:
     system = simulated(game, seed)
