@@ -40,8 +40,8 @@ True
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
-from itertools import combinations
 from typing import Any, Callable
 
 import numpy as np
@@ -71,6 +71,7 @@ _NOT_MOVING = (_STATIONARY, _SPINNING, _POCKETED)
 SEGMENTS = 3
 
 _F64 = npt.NDArray[np.float64]
+_Index = npt.NDArray[np.intp]
 
 # pooltool's own pair loop while ours is installed, else None.
 _original: Callable[..., Any] | None = None
@@ -232,49 +233,55 @@ def ball_paths(balls: Sequence[Any]) -> tuple[_F64, _F64, _F64, _F64]:
         [(b.params.R, b.params.u_s, b.params.u_r, b.params.g) for b in balls], dtype=np.float64
     ).reshape(n, 4)
     radius, u_s, u_r, g = params.T
+    start = np.zeros((n, SEGMENTS))
+    pos = np.empty((n, SEGMENTS, 2))
+    vel = np.zeros((n, SEGMENTS, 2))
+    acc = np.zeros((n, SEGMENTS, 2))
     r0, v0, w = rvw[:, 0, :2], rvw[:, 1, :2], rvw[:, 2]
-    sliding = state == _SLIDING
-    moving = sliding | (state == _ROLLING)
+    # The contact point's velocity over the cloth, v + ω × (−R ẑ): constant in direction
+    # while the ball slides, friction against it.
+    slip = v0 + radius[:, None] * np.stack([-w[:, 1], w[:, 0]], axis=1)
+    slip_speed = np.hypot(slip[:, 0], slip[:, 1])
+    slides = (state == _SLIDING) & (slip_speed > 0)
+    rolls = slides | (state == _ROLLING)
     with np.errstate(divide="ignore", invalid="ignore"):
-        # The contact point's velocity over the cloth, v + ω × (−R ẑ): constant in direction
-        # while the ball slides, friction against it.
-        slip = v0 + radius[:, None] * np.stack([-w[:, 1], w[:, 0]], axis=1)
-        slip_speed = np.hypot(slip[:, 0], slip[:, 1])
-        slides = sliding & (slip_speed > 0)
-        slide_for = np.where(slides, np.where(u_s > 0, 2 * slip_speed / (7 * u_s * g), np.inf), 0)
-        a1 = np.where(slides[:, None], -(u_s * g / slip_speed)[:, None] * slip, 0.0)
-        r1 = r0 + v0 * slide_for[:, None] + 0.5 * a1 * (slide_for**2)[:, None]
-        v1 = v0 + a1 * slide_for[:, None]
+        if slides.any():
+            k = slides.nonzero()[0]
+            tau = 2 * slip_speed[k] / (7 * u_s[k] * g[k])  # inf if u_s = 0
+            a = -(u_s[k] * g[k] / slip_speed[k])[:, None] * slip[k]
+            acc[k, 0] = a
+            start[k, 1] = tau
+            pos[k, 1] = r0[k] + v0[k] * tau[:, None] + 0.5 * a * (tau * tau)[:, None]
+            vel[k, 1] = v0[k] + a * tau[:, None]
+        vel[:, 0] = v0
+        pos[:, 0] = r0
+        vel[~slides, 1] = v0[~slides]
+        pos[~slides, 1] = r0[~slides]
+        v1 = vel[:, 1]
         speed = np.hypot(v1[:, 0], v1[:, 1])
-        rolls = moving & (speed > 0)
-        roll_for = np.where(rolls, np.where(u_r > 0, speed / (u_r * g), np.inf), 0)
-        a2 = np.where(rolls[:, None], -(u_r * g / speed)[:, None] * v1, 0.0)
-        r2 = r1 + v1 * roll_for[:, None] + 0.5 * a2 * (roll_for**2)[:, None]
-        rest_at = np.where(np.isinf(slide_for), np.inf, slide_for + roll_for)
-    start = np.stack([np.zeros(n), slide_for, rest_at], axis=1)
-    pos = np.stack([r0, r1, r2], axis=1)
-    vel = np.stack([v0, v1, np.zeros_like(v0)], axis=1)
-    acc = np.stack([a1, a2, np.zeros_like(v0)], axis=1)
+        rolls &= speed > 0
+        tau = np.where(rolls, speed / (u_r * g), 0.0)  # inf if u_r = 0
+        a = np.where(rolls[:, None], -(u_r * g / speed)[:, None] * v1, 0.0)
+        acc[:, 1] = a
+        pos[:, 2] = pos[:, 1] + v1 * tau[:, None] + 0.5 * a * (tau * tau)[:, None]
+        # A segment that never ends is followed by +inf starts only (no NaN).
+        start[:, 2] = np.where(np.isinf(start[:, 1]), np.inf, start[:, 1] + tau)
     return start, pos, vel, acc
 
 
-def _pair_times(balls: Sequence[Any], first: Sequence[int], second: Sequence[int]) -> _F64:
+def _pair_times(balls: Sequence[Any], first: _Index, second: _Index) -> _F64:
     """Contact times (from the balls' current time) of the pairs ``balls[first[p]]``,
     ``balls[second[p]]``: ``inf`` where either is pocketed or neither moves, else one call
     of :func:`ballcollide.path_collision_times` on the rest."""
     times = np.full(len(first), np.inf)
-    state = [b.state.s for b in balls]
-    asked = [
-        p
-        for p, (i, j) in enumerate(zip(first, second))
-        if _POCKETED not in (state[i], state[j])
-        and not (state[i] in _NOT_MOVING and state[j] in _NOT_MOVING)
-    ]
-    if not asked:
+    state = np.array([b.state.s for b in balls])
+    moving = (state == _SLIDING) | (state == _ROLLING)
+    on_table = state != _POCKETED
+    asked = (on_table[first] & on_table[second] & (moving[first] | moving[second])).nonzero()[0]
+    if not len(asked):
         return times
     start, pos, vel, acc = ball_paths(balls)
-    ia = np.array([first[p] for p in asked])
-    ja = np.array([second[p] for p in asked])
+    ia, ja = first[asked], second[asked]
     radius = np.array([b.params.R for b in balls], dtype=np.float64)
     contact = radius[ia] + radius[ja]
     # A pair that pooltool's resolution left overlapping (it moves a contact's two balls
@@ -284,20 +291,17 @@ def _pair_times(balls: Sequence[Any], first: Sequence[int], second: Sequence[int
     dist = np.hypot(apart[:, 0], apart[:, 1])
     contact = np.where((dist < contact) & (dist > 0), dist, contact)
     try:
-        found = path_collision_times(
+        times[asked] = path_collision_times(
             start[ia], pos[ia], vel[ia], acc[ia],
             start[ja], pos[ja], vel[ja], acc[ja],
             contact,
         )  # fmt: skip
     except InputError as e:
         raise _ball_error(e, balls, ia, ja) from e
-    times[asked] = found
     return times
 
 
-def _ball_error(
-    e: InputError, balls: Sequence[Any], ia: npt.NDArray[np.int64], ja: npt.NDArray[np.int64]
-) -> ValueError:
+def _ball_error(e: InputError, balls: Sequence[Any], ia: _Index, ja: _Index) -> ValueError:
     """A bad path's error, naming the pooltool balls instead of the batch's arrays."""
     if e.index is None:
         return ValueError(f"ballcollide.pooltool: {e}")
@@ -336,7 +340,14 @@ def collision_time(ball1: Any, ball2: Any) -> float:
     >>> bcp.collision_time(b, a) == bcp.collision_time(a, b)
     True
     """
-    return float(_pair_times([ball1, ball2], [0], [1])[0])
+    return float(_pair_times([ball1, ball2], np.array([0]), np.array([1]))[0])
+
+
+@functools.cache
+def _pairs(n: int) -> tuple[_Index, _Index]:
+    """The pairs ``i < j`` of ``n`` balls in pooltool's order (``itertools.combinations``)."""
+    first, second = np.triu_indices(n, 1)
+    return first, second
 
 
 def next_ball_ball_collision(shot: Any, collision_cache: Any) -> Any:
@@ -370,18 +381,14 @@ def next_ball_ball_collision(shot: Any, collision_cache: Any) -> Any:
 
     cache = collision_cache.times.setdefault(EventType.BALL_BALL, {})
     balls = list(shot.balls.values())
-    first: list[int] = []
-    second: list[int] = []
-    for i, j in combinations(range(len(balls)), 2):
-        key = (balls[i].id, balls[j].id)
-        if key not in cache:
-            cache[key] = np.inf  # the key's place in pooltool's order; the time follows
-            first.append(i)
-            second.append(j)
-    if first:
-        times = _pair_times(balls, first, second)
-        for i, j, t in zip(first, second, times.tolist()):
-            cache[balls[i].id, balls[j].id] = shot.t + t
+    ids = [b.id for b in balls]
+    first, second = _pairs(len(balls))
+    keys = [(ids[i], ids[j]) for i, j in zip(first.tolist(), second.tolist())]
+    missing = [p for p, key in enumerate(keys) if key not in cache]
+    if missing:
+        times = _pair_times(balls, first[missing], second[missing]) + shot.t
+        # In pooltool's key order, as its own loop fills the cache.
+        cache.update(zip((keys[p] for p in missing), times.tolist()))
     if not cache:
         return null_event(np.inf)
     pair = min(cache, key=cache.__getitem__)
