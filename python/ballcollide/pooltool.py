@@ -243,7 +243,8 @@ def ball_paths(balls: Sequence[Any]) -> tuple[_F64, _F64, _F64, _F64]:
     slip = v0 + radius[:, None] * np.stack([-w[:, 1], w[:, 0]], axis=1)
     slip_speed = np.hypot(slip[:, 0], slip[:, 1])
     slides = (state == _SLIDING) & (slip_speed > 0)
-    rolls = slides | (state == _ROLLING)
+    # A sliding ball without slip rolls at once, as pooltool evolves it.
+    rolls = (state == _SLIDING) | (state == _ROLLING)
     with np.errstate(divide="ignore", invalid="ignore"):
         if slides.any():
             k = slides.nonzero()[0]

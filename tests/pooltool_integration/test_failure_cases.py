@@ -156,3 +156,13 @@ def test_balls_of_different_sizes_touch_at_the_sum_of_their_radii() -> None:
     assert is_first_contact(a, b, t)
     assert abs(gap(a, b, t)[0]) <= TOUCH
     assert bcp.collision_time(b, a) == t
+
+
+def test_a_ball_labelled_sliding_without_slip_rolls_as_pooltool_evolves_it() -> None:
+    # pooltool issue #78's state: "sliding" with zero slip (its slide lasts 0 s).
+    a = ball("a", (1.0, 0.5))
+    b = rolling("b", (0.5, 0.5 + 0.5 * R), (1.0, 0.0))
+    b.state.s = SLIDING
+    t = bcp.collision_time(a, b)
+    assert is_first_contact(a, b, t)
+    assert abs(t - first_contact(a, b, horizon=1.0)) <= 1e-9
