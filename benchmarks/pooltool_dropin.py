@@ -10,7 +10,9 @@ ballcollide in one virtual environment)::
 
 For each game (9-ball, 8-ball) and seed, a break (:func:`break_shot`) is simulated
 ``--repeats`` times each way, alternating stock and ballcollide; the script prints the
-medians of ``pooltool.simulate()`` per break over all of them, the ratio, and the ball–ball
+medians of ``pooltool.simulate()`` per break and per event over all of them, the ratios
+(the two ways' runs of one break may part after a while, and then their events differ, so
+the time per event is the fairer measure), and the ball–ball
 detector's own time per call of pooltool's pair loop (``get_next_ball_ball_collision``, timed
 by wrapping it) and per pair it computes. The tests in ``tests/pooltool`` use the same
 breaks.
@@ -96,28 +98,30 @@ def main(argv: list[str] | None = None) -> int:
     import ballcollide.pooltool as bcp
 
     print(f"pooltool {pt.__version__}, {args.seeds} breaks per game, {args.repeats} repeats")
+    ways = ("stock", "ballcollide")
     for game in GAMES:
         systems = [break_shot(game, seed) for seed in range(args.seeds)]
         pt.simulate(systems[0])  # numba's compile (or cache load) out of the timings
         with bcp.install():
             pt.simulate(systems[0])
-        runs: dict[str, list[float]] = {"stock": [], "ballcollide": []}
-        calls: dict[str, list[tuple[float, int]]] = {"stock": [], "ballcollide": []}
-        events = {"stock": 0, "ballcollide": 0}
+        # Per break: the seconds of each run and its number of events, each way.
+        runs: dict[str, list[list[float]]] = {way: [[] for _ in systems] for way in ways}
+        events: dict[str, list[int]] = {way: [0] * len(systems) for way in ways}
         for _ in range(args.repeats):
-            for system in systems:
-                for way in ("stock", "ballcollide"):
+            for b, system in enumerate(systems):
+                for way in ways:
                     handle = bcp.install() if way == "ballcollide" else None
                     try:
                         start = time.perf_counter()
                         result = pt.simulate(system)
-                        runs[way].append(time.perf_counter() - start)
+                        runs[way][b].append(time.perf_counter() - start)
                     finally:
                         if handle is not None:
                             bcp.uninstall()
-                    events[way] += len(result.events)
+                    events[way][b] = len(result.events)
+        calls: dict[str, list[tuple[float, int]]] = {way: [] for way in ways}
         for system in systems:  # the detector alone, in separate runs (the wrapper costs)
-            for way in ("stock", "ballcollide"):
+            for way in ways:
                 handle = bcp.install() if way == "ballcollide" else None
                 try:
                     with timed_pair_loop(calls[way]):
@@ -125,21 +129,35 @@ def main(argv: list[str] | None = None) -> int:
                 finally:
                     if handle is not None:
                         bcp.uninstall()
-        print(f"\n{game}-ball breaks")
-        for way in ("stock", "ballcollide"):
+        median = {way: [statistics.median(r) for r in runs[way]] for way in ways}
+        print(f"\n{game}-ball breaks (events per break, stock / ballcollide:", end="")
+        print(" ".join(f" {e}/{f}" for e, f in zip(events["stock"], events["ballcollide"])) + ")")
+        for way in ways:
             per_call = [s for s, _ in calls[way]]
             computing = [s / n for s, n in calls[way] if n > 0]
             pairs = sum(n for _, n in calls[way])
+            total = sum(median[way]) / sum(events[way])
             print(
-                f"  {way:<11} simulate() median {statistics.median(runs[way]) * 1e3:7.2f} ms"
-                f" per break ({events[way] / len(runs[way]):.0f} events);"
+                f"  {way:<11} simulate() {statistics.median(median[way]) * 1e3:7.2f} ms per"
+                f" break (median), {total * 1e6:4.0f} µs per event (all breaks);"
                 f" pair loop {statistics.median(per_call) * 1e6:6.1f} µs per call"
                 f" ({len(per_call) / len(systems):.0f} calls, {pairs / len(systems):.0f} pairs"
                 f" computed per break), {statistics.median(computing) * 1e6:5.2f} µs per pair"
                 " when computing"
             )
-        ratio = statistics.median(runs["ballcollide"]) / statistics.median(runs["stock"])
-        print(f"  simulate() with ballcollide / stock: {ratio:.2f}")
+        same = [b for b in range(len(systems)) if events["stock"][b] == events["ballcollide"][b]]
+        ratios = [median["ballcollide"][b] / median["stock"][b] for b in same]
+        per_event = [
+            (median["ballcollide"][b] / events["ballcollide"][b])
+            / (median["stock"][b] / events["stock"][b])
+            for b in range(len(systems))
+        ]
+        if ratios:
+            print(
+                f"  ballcollide / stock, breaks with as many events both ways ({len(same)}):"
+                f" {statistics.median(ratios):.2f} per break (median)"
+            )
+        print(f"  ballcollide / stock per event, all breaks: {statistics.median(per_event):.2f}")
     return 0
 
 

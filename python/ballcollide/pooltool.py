@@ -41,6 +41,8 @@ True
 from __future__ import annotations
 
 import functools
+import math
+import weakref
 from collections.abc import Sequence
 from typing import Any, Callable
 
@@ -72,6 +74,7 @@ SEGMENTS = 3
 
 _F64 = npt.NDArray[np.float64]
 _Index = npt.NDArray[np.intp]
+_Rows = tuple[list[float], list[list[float]], list[list[float]], list[list[float]]]
 
 # pooltool's own pair loop while ours is installed, else None.
 _original: Callable[..., Any] | None = None
@@ -200,8 +203,59 @@ def is_installed() -> bool:
     return _original is not None
 
 
-def ball_paths(balls: Sequence[Any]) -> tuple[_F64, _F64, _F64, _F64]:
-    """Each pooltool ball's path from its current state, in time from that state's time.
+def _segments(ball: Any, t0: float) -> _Rows:
+    """One ball's path from its state at absolute time ``t0``: ``(starts (3), pos (3×2),
+    vel (3×2), acc (3×2))`` as nested lists (:func:`ball_paths` says what the segments
+    are). Plain floats: for the one or two balls an event changes, a numpy call costs more
+    than the arithmetic."""
+    (x, y, _), (vx, vy, _), (wx, wy, _) = ball.state.rvw.tolist()
+    state = ball.state.s
+    params = ball.params
+    inf = math.inf
+    starts = [t0, t0, t0]
+    pos = [[x, y], [x, y], [x, y]]
+    vel = [[vx, vy], [vx, vy], [0.0, 0.0]]
+    acc = [[0.0, 0.0], [0.0, 0.0], [0.0, 0.0]]
+    if state != _SLIDING and state != _ROLLING:
+        vel[0] = vel[1] = [0.0, 0.0]
+        return starts, pos, vel, acc
+    t = t0
+    if state == _SLIDING:
+        # The contact point's velocity over the cloth, v + ω × (−R ẑ): constant in
+        # direction while the ball slides, friction against it. Without slip the ball rolls
+        # at once, as pooltool evolves it.
+        ux, uy = vx - params.R * wy, vy + params.R * wx
+        slip = math.hypot(ux, uy)
+        if slip > 0:
+            k = params.u_s * params.g / slip
+            ax, ay = -k * ux, -k * uy
+            acc[0] = [ax, ay]
+            if params.u_s == 0:
+                starts[1] = starts[2] = inf
+                return starts, pos, vel, acc
+            tau = 2 * slip / (7 * params.u_s * params.g)
+            x, y = x + vx * tau + 0.5 * ax * tau * tau, y + vy * tau + 0.5 * ay * tau * tau
+            vx, vy = vx + ax * tau, vy + ay * tau
+            t = t0 + tau
+            starts[1] = starts[2] = t
+            pos[1] = pos[2] = [x, y]
+            vel[1] = [vx, vy]
+    speed = math.hypot(vx, vy)
+    if speed > 0:
+        k = params.u_r * params.g / speed
+        ax, ay = -k * vx, -k * vy
+        acc[1] = [ax, ay]
+        if params.u_r == 0:
+            starts[2] = inf
+            return starts, pos, vel, acc
+        tau = speed / (params.u_r * params.g)
+        starts[2] = t + tau
+        pos[2] = [x + vx * tau + 0.5 * ax * tau * tau, y + vy * tau + 0.5 * ay * tau * tau]
+    return starts, pos, vel, acc
+
+
+def ball_paths(balls: Sequence[Any], t0: float = 0.0) -> tuple[_F64, _F64, _F64, _F64]:
+    """Each pooltool ball's path from its current state, starting at time ``t0``.
 
     Returns ``(start (N, 3), pos (N, 3, 2), vel (N, 3, 2), acc (N, 3, 2))`` as
     :func:`ballcollide.path_collision_times` takes them: the segments sliding, rolling and at
@@ -211,8 +265,8 @@ def ball_paths(balls: Sequence[Any]) -> tuple[_F64, _F64, _F64, _F64]:
     ``u_s``, ``u_r`` and ``g`` are used; ``u_sp`` only decays the spin of a ball whose centre
     is at rest, so it changes no path. Motion states are pooltool's labels, as its own
     evolution reads them: a *sliding* ball slides for ``2|u|/(7·u_s·g)`` with
-    ``u = v + ω × (−R·ẑ)`` (none if ``u = 0``), a *rolling* one rolls for ``|v|/(u_r·g)``,
-    spinning, stationary and pocketed ones stay where they are.
+    ``u = v + ω × (−R·ẑ)`` (none if ``u = 0``), then rolls, a *rolling* one rolls for
+    ``|v|/(u_r·g)``, spinning, stationary and pocketed ones stay where they are.
 
     >>> import pooltool as pt
     >>> import ballcollide.pooltool as bcp
@@ -226,54 +280,57 @@ def ball_paths(balls: Sequence[Any]) -> tuple[_F64, _F64, _F64, _F64]:
     >>> pos[0, 2].round(6).tolist()            # at rest |v|²/(2·u_r·g) further on
     [5.59684, 0.5]
     """
-    n = len(balls)
-    rvw = np.array([b.state.rvw for b in balls], dtype=np.float64).reshape(n, 3, 3)
-    state = np.array([b.state.s for b in balls], dtype=np.int64)
-    params = np.array(
-        [(b.params.R, b.params.u_s, b.params.u_r, b.params.g) for b in balls], dtype=np.float64
-    ).reshape(n, 4)
-    radius, u_s, u_r, g = params.T
-    start = np.zeros((n, SEGMENTS))
-    pos = np.empty((n, SEGMENTS, 2))
-    vel = np.zeros((n, SEGMENTS, 2))
-    acc = np.zeros((n, SEGMENTS, 2))
-    r0, v0, w = rvw[:, 0, :2], rvw[:, 1, :2], rvw[:, 2]
-    # The contact point's velocity over the cloth, v + ω × (−R ẑ): constant in direction
-    # while the ball slides, friction against it.
-    slip = v0 + radius[:, None] * np.stack([-w[:, 1], w[:, 0]], axis=1)
-    slip_speed = np.hypot(slip[:, 0], slip[:, 1])
-    slides = (state == _SLIDING) & (slip_speed > 0)
-    # A sliding ball without slip rolls at once, as pooltool evolves it.
-    rolls = (state == _SLIDING) | (state == _ROLLING)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        if slides.any():
-            k = slides.nonzero()[0]
-            tau = 2 * slip_speed[k] / (7 * u_s[k] * g[k])  # inf if u_s = 0
-            a = -(u_s[k] * g[k] / slip_speed[k])[:, None] * slip[k]
-            acc[k, 0] = a
-            start[k, 1] = tau
-            pos[k, 1] = r0[k] + v0[k] * tau[:, None] + 0.5 * a * (tau * tau)[:, None]
-            vel[k, 1] = v0[k] + a * tau[:, None]
-        vel[:, 0] = v0
-        pos[:, 0] = r0
-        vel[~slides, 1] = v0[~slides]
-        pos[~slides, 1] = r0[~slides]
-        v1 = vel[:, 1]
-        speed = np.hypot(v1[:, 0], v1[:, 1])
-        rolls &= speed > 0
-        tau = np.where(rolls, speed / (u_r * g), 0.0)  # inf if u_r = 0
-        a = np.where(rolls[:, None], -(u_r * g / speed)[:, None] * v1, 0.0)
-        acc[:, 1] = a
-        pos[:, 2] = pos[:, 1] + v1 * tau[:, None] + 0.5 * a * (tau * tau)[:, None]
-        # A segment that never ends is followed by +inf starts only (no NaN).
-        start[:, 2] = np.where(np.isinf(start[:, 1]), np.inf, start[:, 1] + tau)
+    rows = [_segments(b, t0) for b in balls]
+    n = len(rows)
+    start = np.array([r[0] for r in rows], dtype=np.float64).reshape(n, SEGMENTS)
+    pos, vel, acc = (
+        np.array([r[f] for r in rows], dtype=np.float64).reshape(n, SEGMENTS, 2) for f in (1, 2, 3)
+    )
     return start, pos, vel, acc
 
 
-def _pair_times(balls: Sequence[Any], first: _Index, second: _Index) -> _F64:
-    """Contact times (from the balls' current time) of the pairs ``balls[first[p]]``,
-    ``balls[second[p]]``: ``inf`` where either is pocketed or neither moves, else one call
-    of :func:`ballcollide.path_collision_times` on the rest."""
+class _PathTable:
+    """The paths of a simulation's balls in absolute time, kept between calls of the pair
+    loop: a ball's path changes only at an event that involves it, and then pooltool drops
+    all of that ball's pairs from its cache, so a ball none of whose pairs is cached is the
+    one to rebuild (at the current time); the others' paths still hold."""
+
+    def __init__(self, ids: list[str]) -> None:
+        n = len(ids)
+        self.ids = ids
+        self.start = np.zeros((n, SEGMENTS))
+        self.pos = np.zeros((n, SEGMENTS, 2))
+        self.vel = np.zeros((n, SEGMENTS, 2))
+        self.acc = np.zeros((n, SEGMENTS, 2))
+
+    def rebuild(self, balls: Sequence[Any], which: Sequence[int], t0: float) -> None:
+        for i in which:
+            start, pos, vel, acc = _segments(balls[i], t0)
+            self.start[i], self.pos[i], self.vel[i], self.acc[i] = start, pos, vel, acc
+
+
+# Each collision cache's path table (by the cache's id: pooltool's caches are not
+# hashable), dropped when pooltool drops the cache.
+_tables: dict[int, _PathTable] = {}
+
+
+def _table_of(collision_cache: Any, ids: list[str]) -> tuple[_PathTable, bool]:
+    """The path table kept for ``collision_cache``, and whether it is new (for other balls:
+    a new one)."""
+    table = _tables.get(id(collision_cache))
+    if table is not None and table.ids == ids:
+        return table, False
+    if table is None:
+        weakref.finalize(collision_cache, _tables.pop, id(collision_cache), None)
+    table = _tables[id(collision_cache)] = _PathTable(ids)
+    return table, True
+
+
+def _pair_times(balls: Sequence[Any], table: _PathTable, first: _Index, second: _Index) -> _F64:
+    """Absolute contact times of the pairs ``balls[first[p]]``, ``balls[second[p]]`` on the
+    paths of ``table``, searched from the later of their starts: ``inf`` where either is
+    pocketed or neither moves, else one call of :func:`ballcollide.path_collision_times`
+    on the rest."""
     times = np.full(len(first), np.inf)
     state = np.array([b.state.s for b in balls])
     moving = (state == _SLIDING) | (state == _ROLLING)
@@ -281,20 +338,21 @@ def _pair_times(balls: Sequence[Any], first: _Index, second: _Index) -> _F64:
     asked = (on_table[first] & on_table[second] & (moving[first] | moving[second])).nonzero()[0]
     if not len(asked):
         return times
-    start, pos, vel, acc = ball_paths(balls)
     ia, ja = first[asked], second[asked]
     radius = np.array([b.params.R for b in balls], dtype=np.float64)
     contact = radius[ia] + radius[ja]
     # A pair that pooltool's resolution left overlapping (it moves a contact's two balls
     # apart, which in a cluster can push one into a third) touches at its present distance:
     # at once if closing in, else when the overlap comes back to what it is now.
-    apart = pos[ja, 0] - pos[ia, 0]
+    xy = np.array([b.state.rvw[0, :2] for b in balls], dtype=np.float64).reshape(-1, 2)
+    apart = xy[ja] - xy[ia]
     dist = np.hypot(apart[:, 0], apart[:, 1])
     contact = np.where((dist < contact) & (dist > 0), dist, contact)
+    t = table
     try:
         times[asked] = path_collision_times(
-            start[ia], pos[ia], vel[ia], acc[ia],
-            start[ja], pos[ja], vel[ja], acc[ja],
+            t.start[ia], t.pos[ia], t.vel[ia], t.acc[ia],
+            t.start[ja], t.pos[ja], t.vel[ja], t.acc[ja],
             contact,
         )  # fmt: skip
     except InputError as e:
@@ -341,7 +399,10 @@ def collision_time(ball1: Any, ball2: Any) -> float:
     >>> bcp.collision_time(b, a) == bcp.collision_time(a, b)
     True
     """
-    return float(_pair_times([ball1, ball2], np.array([0]), np.array([1]))[0])
+    balls = [ball1, ball2]
+    table = _PathTable([ball1.id, ball2.id])
+    table.rebuild(balls, (0, 1), 0.0)
+    return float(_pair_times(balls, table, np.array([0]), np.array([1]))[0])
 
 
 @functools.cache
@@ -356,8 +417,8 @@ def next_ball_ball_collision(shot: Any, collision_cache: Any) -> Any:
 
     The drop-in for ``pooltool.evolution.event_based.simulate.get_next_ball_ball_collision``
     (same arguments and result): every pair of ``shot.balls`` missing from the cache's
-    ball–ball times gets its absolute contact time ``shot.t + t`` (``inf`` for none), all in
-    one batch call, in pooltool's key order; the earliest cached pair is returned as a
+    ball–ball times gets its absolute contact time (``inf`` for none), all in one batch call,
+    in pooltool's key order; the earliest cached pair is returned as a
     ``ball_ball`` event (the first such pair on ties, as pooltool picks it), or a null event
     at ``inf`` if there are no pairs.
 
@@ -383,11 +444,20 @@ def next_ball_ball_collision(shot: Any, collision_cache: Any) -> Any:
     cache = collision_cache.times.setdefault(EventType.BALL_BALL, {})
     balls = list(shot.balls.values())
     ids = [b.id for b in balls]
-    first, second = _pairs(len(balls))
+    n = len(balls)
+    first, second = _pairs(n)
     keys = [(ids[i], ids[j]) for i, j in zip(first.tolist(), second.tolist())]
     missing = [p for p, key in enumerate(keys) if key not in cache]
     if missing:
-        times = _pair_times(balls, first[missing], second[missing]) + shot.t
+        table, new = _table_of(collision_cache, ids)
+        if new:
+            changed = range(n)
+        else:
+            pairs_left = np.bincount(first[missing], minlength=n)
+            pairs_left += np.bincount(second[missing], minlength=n)
+            changed = (pairs_left == n - 1).nonzero()[0].tolist()
+        table.rebuild(balls, changed, shot.t)
+        times = _pair_times(balls, table, first[missing], second[missing])
         # In pooltool's key order, as its own loop fills the cache.
         cache.update(zip((keys[p] for p in missing), times.tolist()))
     if not cache:
