@@ -203,6 +203,30 @@ def is_installed() -> bool:
     return _original is not None
 
 
+def _friction(
+    p: tuple[float, float],
+    v: tuple[float, float],
+    against: tuple[float, float],
+    mu: float,
+    g: float,
+    share: float,
+) -> tuple[list[float], float, list[float], list[float]] | None:
+    """A segment of friction ``−mu·g`` against the direction ``against`` from position ``p``
+    at velocity ``v``, lasting until ``v`` has lost ``share`` of ``|against|`` (for ever if
+    ``mu = 0``): ``(acceleration, duration, end position, end velocity)``; ``None`` if
+    ``against`` is zero."""
+    size = math.hypot(*against)
+    if size == 0:
+        return None
+    k = mu * g / size
+    a = [-k * against[0], -k * against[1]]
+    if mu == 0:
+        return a, math.inf, [math.nan, math.nan], [math.nan, math.nan]
+    tau = share * size / (mu * g)
+    end = [p[i] + v[i] * tau + 0.5 * a[i] * tau * tau for i in (0, 1)]
+    return a, tau, end, [v[0] + a[0] * tau, v[1] + a[1] * tau]
+
+
 def _segments(ball: Any, t0: float) -> _Rows:
     """One ball's path from its state at absolute time ``t0``: ``(starts (3), pos (3×2),
     vel (3×2), acc (3×2))`` as nested lists (:func:`ball_paths` says what the segments
@@ -222,35 +246,23 @@ def _segments(ball: Any, t0: float) -> _Rows:
     t = t0
     if state == _SLIDING:
         # The contact point's velocity over the cloth, v + ω × (−R ẑ): constant in
-        # direction while the ball slides, friction against it. Without slip the ball rolls
-        # at once, as pooltool evolves it.
-        ux, uy = vx - params.R * wy, vy + params.R * wx
-        slip = math.hypot(ux, uy)
-        if slip > 0:
-            k = params.u_s * params.g / slip
-            ax, ay = -k * ux, -k * uy
-            acc[0] = [ax, ay]
-            if params.u_s == 0:
+        # direction while the ball slides, friction against it, for 2|u|/(7·u_s·g). Without
+        # slip the ball rolls at once, as pooltool evolves it.
+        u = (vx - params.R * wy, vy + params.R * wx)
+        sliding = _friction((x, y), (vx, vy), u, params.u_s, params.g, 2 / 7)
+        if sliding is not None:
+            acc[0], tau, (x, y), (vx, vy) = sliding
+            if tau == inf:
                 starts[1] = starts[2] = inf
                 return starts, pos, vel, acc
-            tau = 2 * slip / (7 * params.u_s * params.g)
-            x, y = x + vx * tau + 0.5 * ax * tau * tau, y + vy * tau + 0.5 * ay * tau * tau
-            vx, vy = vx + ax * tau, vy + ay * tau
             t = t0 + tau
             starts[1] = starts[2] = t
             pos[1] = pos[2] = [x, y]
             vel[1] = [vx, vy]
-    speed = math.hypot(vx, vy)
-    if speed > 0:
-        k = params.u_r * params.g / speed
-        ax, ay = -k * vx, -k * vy
-        acc[1] = [ax, ay]
-        if params.u_r == 0:
-            starts[2] = inf
-            return starts, pos, vel, acc
-        tau = speed / (params.u_r * params.g)
-        starts[2] = t + tau
-        pos[2] = [x + vx * tau + 0.5 * ax * tau * tau, y + vy * tau + 0.5 * ay * tau * tau]
+    rolling = _friction((x, y), (vx, vy), (vx, vy), params.u_r, params.g, 1.0)
+    if rolling is not None:
+        acc[1], tau, pos[2], _ = rolling
+        starts[2] = inf if tau == inf else t + tau
     return starts, pos, vel, acc
 
 
