@@ -20,7 +20,9 @@ and any real number ``float()`` accepts, but not a bool, where a number goes):
 - :func:`real_roots`: real roots of N polynomials of degree 1 to 4, like ``numpy.roots``;
 - :func:`pairwise_collision_times`, :func:`earliest_collision`, :func:`first_contacts`: a
   scene of N balls (which pairs touch, which touch first), with a broad phase that prunes
-  the pairs that cannot meet.
+  the pairs that cannot meet;
+- :class:`CollisionSchedule`: an event calendar, the next collision (and wall contact) among N
+  balls on paths, kept up to date as an event-driven simulation changes a few paths at a time.
 
 Bad input (NaN or infinity, negative friction, ``radius ≤ 0``, wrong shapes or lengths)
 raises :class:`InputError`, a ``ValueError`` naming the argument and, for batches, the first
@@ -40,6 +42,8 @@ every argument itself. Their docstrings are the Rust doc comments of ``src/pytho
 from __future__ import annotations
 
 from ._core import (
+    CollisionSchedule,
+    Event,
     InputError,
     __version__,
     collision_time,
@@ -55,6 +59,8 @@ from ._core import (
 )
 
 __all__ = [
+    "CollisionSchedule",
+    "Event",
     "InputError",
     "__version__",
     "collision_time",

@@ -642,6 +642,8 @@ def test_version_and_public_api() -> None:
     assert re.fullmatch(r"\d+\.\d+\.\d+.*", bc.__version__)
     assert bc.__version__ == _core.__version__
     assert set(bc.__all__) == {
+        "CollisionSchedule",
+        "Event",
         "InputError",
         "__version__",
         "collision_time",
