@@ -53,6 +53,12 @@ pub enum InputErrorKind {
     },
     /// A ball index given twice in one update.
     RepeatedIndex(usize),
+    /// A number that must lie in `[0, 1]` (a coefficient of restitution).
+    NotInUnitInterval(f64),
+    /// A mass that is zero or negative.
+    NonPositiveMass(f64),
+    /// A simulation with no end: no end time, no event limit, and a ball that never stops.
+    Endless,
     /// A box whose low bound is not below its high bound on an axis.
     EmptyBox {
         /// The low bound.
@@ -237,6 +243,11 @@ impl fmt::Display for InputErrorKind {
                 write!(f, "ball index must be in 0..{len}, got {index}")
             }
             Self::RepeatedIndex(i) => write!(f, "ball {i} is given more than once"),
+            Self::NotInUnitInterval(x) => write!(f, "must be in [0, 1], got {}", Brief(x)),
+            Self::NonPositiveMass(x) => write!(f, "mass must be > 0, got {}", Brief(x)),
+            Self::Endless => {
+                f.write_str("a ball without friction never stops: give t_end or max_events")
+            }
             Self::EmptyBox { lo, hi } => write!(
                 f,
                 "the box's low bound must be below its high bound, got {} and {}",

@@ -481,3 +481,113 @@ fn grazing_passes_at_the_edge_of_the_boxes_are_brute_force() {
     // Both outcomes occur: the cases straddle the contact distance.
     assert!(contacts > 0 && contacts < cases, "{contacts} of {cases}");
 }
+
+/// Kinetic energy and momentum of a state.
+fn energy_momentum(balls: &[Ball], masses: &[f64]) -> (f64, Vector2<f64>) {
+    let mut e = 0.0;
+    let mut p = Vector2::zeros();
+    for (b, &m) in balls.iter().zip(masses) {
+        e += 0.5 * m * b.velocity().norm_squared();
+        p += b.velocity() * m;
+    }
+    (e, p)
+}
+
+/// A random scene in the unit box: balls on a grid, normal-ish velocities.
+fn box_scene(seed: u64, side: usize, friction: f64) -> (Vec<Ball>, Vec<f64>, Walls<2>) {
+    let mut rng = Rng(seed);
+    let n = side * side;
+    let r = 0.25 / side as f64;
+    let balls = (0..n)
+        .map(|k| {
+            let p = Vector2::new((k % side) as f64 + 0.5, (k / side) as f64 + 0.5) / side as f64;
+            let v = Vector2::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+            Ball::new(p, v, friction * rng.uniform(0.5, 1.5)).expect("valid")
+        })
+        .collect();
+    let walls = Walls::new([0.0, 0.0], [1.0, 1.0]).expect("a box");
+    (balls, vec![r; n], walls)
+}
+
+#[test]
+fn elastic_frictionless_balls_keep_their_energy_and_never_overlap() {
+    use ballcollide::schedule::{SimulationOptions, simulate};
+    for seed in [1u64, 2] {
+        let (balls, radii, walls) = box_scene(seed, 6, 0.0);
+        let n = balls.len();
+        let masses: Vec<f64> = (0..n).map(|i| 1.0 + (i % 3) as f64).collect();
+        let options = SimulationOptions {
+            mass: masses.clone(),
+            max_events: Some(2000),
+            ..Default::default()
+        };
+        let run = simulate(&balls, &radii, walls, &options).expect("valid");
+        assert_eq!(run.events.len(), 2000);
+        let (e0, _) = energy_momentum(&balls, &masses);
+        let (e1, _) = energy_momentum(&run.balls, &masses);
+        assert!((e1 - e0).abs() <= 1e-12 * e0, "{e0} → {e1}");
+        // No overlap at the end beyond rounding, and every ball inside the box.
+        for i in 0..n {
+            let p = run.balls[i].position();
+            assert!(p.x >= radii[i] * (1.0 - 1e-9) && p.x <= 1.0 - radii[i] * (1.0 - 1e-9));
+            for j in i + 1..n {
+                let d = (p - run.balls[j].position()).norm();
+                assert!(d >= (radii[i] + radii[j]) * (1.0 - 1e-9), "{i} {j} {d}");
+            }
+        }
+    }
+}
+
+#[test]
+fn momentum_is_kept_at_collisions_and_energy_never_rises() {
+    // The state after k events against the state after k − 1: a collision keeps the total
+    // momentum of frictionless balls (their velocities are constant between events); with
+    // friction or restitution below 1 the energy never rises; no overlap at any event.
+    use ballcollide::schedule::{SimulationOptions, simulate};
+    for (friction, e) in [(0.0, 1.0), (0.0, 0.7), (0.4, 1.0), (0.4, 0.5)] {
+        let (balls, radii, walls) = box_scene(5, 4, friction);
+        let n = balls.len();
+        let masses: Vec<f64> = (0..n).map(|i| 0.5 + (i % 4) as f64).collect();
+        let mut previous: Option<(f64, Vector2<f64>)> = None;
+        let mut collisions = 0;
+        for k in 1..=60 {
+            let options = SimulationOptions {
+                mass: masses.clone(),
+                restitution: e,
+                max_events: Some(k),
+                ..Default::default()
+            };
+            let run = simulate(&balls, &radii, walls, &options).expect("valid");
+            if run.events.len() < k {
+                break; // everything has stopped
+            }
+            let (energy, momentum) = energy_momentum(&run.balls, &masses);
+            if let Some((e_before, p_before)) = previous {
+                assert!(
+                    energy <= e_before * (1.0 + 1e-12),
+                    "energy rose at event {k}"
+                );
+                if e == 1.0 && friction == 0.0 {
+                    assert!((energy - e_before).abs() <= 1e-12 * e_before);
+                }
+                if run.events[k - 1].j.is_some() && friction == 0.0 {
+                    collisions += 1;
+                    assert!((momentum - p_before).norm() <= 1e-12 * (1.0 + p_before.norm()));
+                }
+            }
+            for i in 0..n {
+                for j in i + 1..n {
+                    let d = (run.balls[i].position() - run.balls[j].position()).norm();
+                    assert!(
+                        d >= (radii[i] + radii[j]) * (1.0 - 1e-9),
+                        "overlap at event {k}"
+                    );
+                }
+            }
+            previous = Some((energy, momentum));
+        }
+        if friction == 0.0 {
+            assert!(collisions > 5);
+        }
+    }
+}

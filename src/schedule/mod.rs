@@ -15,6 +15,7 @@
 //! | a ball's box | `reach.rs` | the box a ball covers over a span, with a rounding margin |
 //! | [`Walls`] | `walls.rs` | an axis-aligned box and a ball's first wall contact |
 //! | [`Event`] | `event.rs` | what the calendar reports |
+//! | [`simulate`] | `simulation.rs` | an event-driven simulation of friction balls in a box |
 //!
 //! ```
 //! use ballcollide::Ball;
@@ -36,8 +37,10 @@ mod event;
 mod grid;
 mod queue;
 mod reach;
+mod simulation;
 mod walls;
 
 pub use calendar::{CollisionSchedule, FrictionPath, HeapBytes, ScheduleOptions};
 pub use event::{Collision, Event, WallContact};
+pub use simulation::{LoggedEvent, Simulation, SimulationOptions, simulate};
 pub use walls::{Side, Walls};
