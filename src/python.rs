@@ -744,6 +744,7 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(pairwise_collision_times, m)?,
         wrap_pyfunction!(earliest_collision, m)?,
         wrap_pyfunction!(first_contacts, m)?,
+        wrap_pyfunction!(schedule::simulate, m)?,
     ];
     m.add_class::<schedule::CollisionSchedule>()?;
     m.add("Event", schedule::event_type(py)?)?;

@@ -22,7 +22,8 @@ and any real number ``float()`` accepts, but not a bool, where a number goes):
   scene of N balls (which pairs touch, which touch first), with a broad phase that prunes
   the pairs that cannot meet;
 - :class:`CollisionSchedule`: an event calendar, the next collision (and wall contact) among N
-  balls on paths, kept up to date as an event-driven simulation changes a few paths at a time.
+  balls on paths, kept up to date as an event-driven simulation changes a few paths at a time;
+- :func:`simulate`: an event-driven simulation of friction balls in a box, run natively on it.
 
 Bad input (NaN or infinity, negative friction, ``radius ≤ 0``, wrong shapes or lengths)
 raises :class:`InputError`, a ``ValueError`` naming the argument and, for batches, the first
@@ -56,6 +57,7 @@ from ._core import (
     path_positions_at,
     positions_at,
     real_roots,
+    simulate,
 )
 
 __all__ = [
@@ -73,4 +75,5 @@ __all__ = [
     "path_positions_at",
     "positions_at",
     "real_roots",
+    "simulate",
 ]

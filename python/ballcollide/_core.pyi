@@ -32,6 +32,7 @@ __all__ = [
     "path_positions_at",
     "positions_at",
     "real_roots",
+    "simulate",
 ]
 
 __version__: Final[str]
@@ -193,3 +194,15 @@ class CollisionSchedule:
         vel: npt.ArrayLike,
         friction: _PerPair,
     ) -> None: ...
+def simulate(
+    pos: npt.ArrayLike,
+    vel: npt.ArrayLike,
+    friction: _PerPair,
+    radius: _PerPair,
+    *,
+    box: _Box,
+    mass: _PerPair = ...,
+    restitution: float = 1.0,
+    t_end: _Number = ...,
+    max_events: SupportsIndex | None = None,
+) -> tuple[_F64Array, _I64Array, _I64Array, _F64Array, _F64Array]: ...

@@ -1,11 +1,12 @@
 //! The event calendar of the Python API: :class:`CollisionSchedule` (`crate::schedule`), in
-//! 2-D or 3-D, and the :class:`Event` it reports.
+//! 2-D or 3-D, the :class:`Event` it reports, and :func:`simulate` on it.
 //!
 //! Paths are read as one side of :func:`path_collision_times` ([`super::paths::side`]), friction
 //! balls as a scene's ([`crate::scene::balls`]); each path is checked by
 //! [`Path::from_rows`](crate::Path::from_rows), its errors located at the ball (or, in an
 //! update, at its position in the update) and the segment, as the batch functions do.
 
+use numpy::{PyArray1, PyArray2};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
@@ -21,7 +22,7 @@ use crate::error::{InputError, InputErrorKind};
 use crate::scene;
 use crate::schedule::{
     Collision, CollisionSchedule as Core, Event as CoreEvent, ScheduleOptions, Side as WallSide,
-    Walls,
+    SimulationOptions, Walls,
 };
 
 /// The argument names of a calendar's path arrays.
@@ -527,4 +528,128 @@ fn build<const D: usize>(
     let paths = paths_of::<D>(paths).map_err(|e| from_core(py, e))?;
     let options = ScheduleOptions { walls, t_max };
     Core::new(paths, radii, options).map_err(|e| from_core(py, e))
+}
+
+/// An event-driven simulation of smooth hard friction balls in a box, run in Rust on the
+/// calendar: ``(times, i, j, pos, vel)``.
+///
+/// Each ball moves as in :func:`collision_time` (slowed by its friction along its velocity
+/// until it stops; ``0`` for none). At each event, in :class:`CollisionSchedule`'s order,
+/// two touching balls exchange momentum along their line of centres with the given
+/// restitution and masses (the tangential components are kept), and a ball touching a wall
+/// has its velocity's normal component reflected; the balls involved go on from there. It
+/// runs until ``t_end``, ``max_events``, or until no event is left (every ball at rest).
+///
+/// Parameters
+/// ----------
+/// pos, vel
+///     Shape ``(N, 2)``: centres and velocities at time 0.
+/// friction, radius
+///     Numbers or shape ``(N,)``: friction decelerations (``≥ 0``) and radii (``> 0``).
+/// box
+///     ``(lo, hi)``: the box's low and high corners (two numbers each).
+/// mass
+///     A number or shape ``(N,)``: the masses (``> 0``).
+/// restitution
+///     The coefficient of restitution of ball–ball collisions, in ``[0, 1]``.
+/// t_end
+///     The end time (``inf``: until no event is left).
+/// max_events
+///     ``None``, or the number of events after which to stop.
+///
+/// Returns
+/// -------
+/// tuple
+///     ``times`` (float64, shape ``(E,)``), ``i`` and ``j`` (int64: the balls, ``j = -1``
+///     for a wall), and ``pos``, ``vel`` (shape ``(N, 2)``): the state at ``t_end`` if
+///     finite and reached, else at the last event (``max_events``) or when every ball is at
+///     rest.
+///
+/// Raises
+/// ------
+/// InputError
+///     As :meth:`CollisionSchedule.from_balls`; a mass ``≤ 0``, a restitution outside
+///     ``[0, 1]``; no ``t_end``, no ``max_events`` and a ball without friction (it would
+///     never end).
+///
+/// Notes
+/// -----
+/// The GIL is released while it runs.
+///
+/// Examples
+/// --------
+/// >>> import ballcollide as bc
+/// >>> # A ball at 1 m/s towards a resting one in a 4 m × 1 m box: they swap velocities.
+/// >>> times, i, j, pos, vel = bc.simulate([[0.5, 0.5], [2, 0.5]], [[1, 0], [0, 0]], 0.0, 0.25,
+/// ...                                     box=([0, 0], [4, 1]), t_end=3.0)
+/// >>> times, i, j
+/// (array([1.  , 2.75]), array([0, 1]), array([ 1, -1]))
+/// >>> pos
+/// array([[1.5, 0.5],
+///        [3.5, 0.5]])
+#[pyfunction]
+#[pyo3(
+    signature = (pos, vel, friction, radius, *, r#box, mass=Given(None), restitution=1.0,
+                 t_end=Given(None), max_events=None),
+    text_signature = "(pos, vel, friction, radius, *, box, mass=1.0, restitution=1.0, \
+                      t_end=1e999, max_events=None)"
+)]
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+pub(super) fn simulate<'py>(
+    py: Python<'py>,
+    pos: &Bound<'py, PyAny>,
+    vel: &Bound<'py, PyAny>,
+    friction: &Bound<'py, PyAny>,
+    radius: &Bound<'py, PyAny>,
+    r#box: &Bound<'py, PyAny>,
+    mass: Given<'py>,
+    restitution: f64,
+    t_end: Given<'py>,
+    max_events: Option<usize>,
+) -> PyResult<(
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<i64>>,
+    Bound<'py, PyArray1<i64>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<f64>>,
+)> {
+    let balls = balls(py, pos, vel, friction)?;
+    let n = balls.len();
+    let radii = radii(py, radius, n)?;
+    let walls = walls_of::<2>(py, Some(r#box))?
+        .ok_or_else(|| PyTypeError::new_err("box: expected a tuple (lo, hi), got None"))?;
+    let mass = match mass.param_or("mass", 1.0)?.per_pair() {
+        PerPair::All(m) => vec![m],
+        PerPair::Each(m) => m.to_vec(),
+    };
+    let options = SimulationOptions {
+        mass,
+        restitution,
+        t_end: t_end.number_or("t_end", f64::INFINITY)?,
+        max_events,
+    };
+    let run = py
+        .detach(|| crate::schedule::simulate(&balls, &radii, walls, &options))
+        .map_err(|e| from_core(py, e))?;
+    let times: Vec<f64> = run.events.iter().map(|e| e.time).collect();
+    let i: Vec<i64> = run.events.iter().map(|e| index_i64(e.i)).collect();
+    let j: Vec<i64> = run
+        .events
+        .iter()
+        .map(|e| e.j.map_or(-1, index_i64))
+        .collect();
+    let state = |f: fn(&crate::Ball) -> [f64; 2]| -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows: Vec<Vec<f64>> = run.balls.iter().map(|b| f(b).to_vec()).collect();
+        if rows.is_empty() {
+            return Ok(PyArray2::zeros(py, [0, 2], false));
+        }
+        PyArray2::from_vec2(py, &rows).map_err(|e| PyTypeError::new_err(e.to_string()))
+    };
+    Ok((
+        PyArray1::from_vec(py, times),
+        PyArray1::from_vec(py, i),
+        PyArray1::from_vec(py, j),
+        state(|b| b.position().into())?,
+        state(|b| b.velocity().into())?,
+    ))
 }

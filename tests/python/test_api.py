@@ -656,6 +656,7 @@ def test_version_and_public_api() -> None:
         "path_positions_at",
         "positions_at",
         "real_roots",
+        "simulate",
     }
 
 

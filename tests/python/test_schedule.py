@@ -326,3 +326,25 @@ def test_the_from_balls_docstring_example_runs() -> None:
     runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
     runner.run(test)
     assert runner.failures == 0 and runner.tries >= 2
+
+
+def test_the_first_events_are_python_billiards_ones() -> None:
+    # python-billiards 0.5.0 lives in the benchmark's own environment (benchmarks/
+    # event_calendar.py): BILLIARDS_PYTHON, or ./.venv-bench.
+    import os
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[2]
+    python = os.environ.get("BILLIARDS_PYTHON", str(root / ".venv-bench" / "bin" / "python"))
+    if not Path(python).exists():
+        pytest.skip("python-billiards is not installed (see benchmarks/event_calendar.py)")
+    sys.path.insert(0, str(root / "benchmarks"))
+    try:
+        import event_calendar
+    finally:
+        sys.path.pop(0)
+    for n in (16, 100):
+        _, ours = event_calendar.time_simulate(n, 200, 1)
+        _, theirs = event_calendar.time_billiards(python, n, 50, 1)
+        assert event_calendar.same_first_events(ours, theirs) == 50
