@@ -194,6 +194,7 @@ class CollisionSchedule:
         vel: npt.ArrayLike,
         friction: _PerPair,
     ) -> None: ...
+
 def simulate(
     pos: npt.ArrayLike,
     vel: npt.ArrayLike,
