@@ -226,14 +226,22 @@ fn radii(py: Python<'_>, radius: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<f6
         PerPair::All(r) => vec![r; n],
         PerPair::Each(r) => r.to_vec(),
     };
-    if values.len() != n {
-        let kind = InputErrorKind::LengthMismatch {
-            expected: n,
-            found: values.len(),
-        };
-        return Err(from_core(py, InputError::new("radius", kind)));
-    }
+    same_count(py, "radius", n, values.len())?;
     Ok(values)
+}
+
+/// An error naming `argument` unless it has `expected` rows.
+fn same_count(
+    py: Python<'_>,
+    argument: &'static str,
+    expected: usize,
+    found: usize,
+) -> PyResult<()> {
+    if found == expected {
+        return Ok(());
+    }
+    let kind = InputErrorKind::LengthMismatch { expected, found };
+    Err(from_core(py, InputError::new(argument, kind)))
 }
 
 /// Ball indices: an int or a sequence of ints, each in `0..n` (errors at their position).
@@ -435,13 +443,7 @@ impl CollisionSchedule {
             );
             return Err(input_error(py, "pos", None, &reason));
         }
-        if paths.paths != indices.len() {
-            let kind = InputErrorKind::LengthMismatch {
-                expected: indices.len(),
-                found: paths.paths,
-            };
-            return Err(from_core(py, InputError::new("start", kind)));
-        }
+        same_count(py, "start", indices.len(), paths.paths)?;
         let result = match &mut self.inner {
             Inner::Two(s) => paths_of(&paths).and_then(|p| s.update(&indices, p)),
             Inner::Three(s) => paths_of(&paths).and_then(|p| s.update(&indices, p)),
@@ -488,13 +490,7 @@ impl CollisionSchedule {
         let indices = self::indices(py, indices, n)?;
         let t = read::number("t", t)?;
         let balls = balls(py, pos, vel, friction)?;
-        if balls.len() != indices.len() {
-            let kind = InputErrorKind::LengthMismatch {
-                expected: indices.len(),
-                found: balls.len(),
-            };
-            return Err(from_core(py, InputError::new("pos", kind)));
-        }
+        same_count(py, "pos", indices.len(), balls.len())?;
         match &mut self.inner {
             Inner::Two(s) => s
                 .update_balls(&indices, t, &balls)
