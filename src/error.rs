@@ -30,6 +30,42 @@ pub enum InputErrorKind {
     },
     /// A path with no segment.
     NoSegments,
+    /// A time earlier than an event calendar's current time.
+    BeforeCurrentTime {
+        /// The time given.
+        time: f64,
+        /// The calendar's current time.
+        current: f64,
+    },
+    /// Paths of one update that start at different times.
+    StartsDiffer {
+        /// The first path's start.
+        first: f64,
+        /// This path's start.
+        start: f64,
+    },
+    /// A ball index beyond the number of balls.
+    IndexOutOfRange {
+        /// The index given.
+        index: i64,
+        /// The number of balls.
+        len: usize,
+    },
+    /// A ball index given twice in one update.
+    RepeatedIndex(usize),
+    /// A number that must lie in `[0, 1]` (a coefficient of restitution).
+    NotInUnitInterval(f64),
+    /// A mass that is zero or negative.
+    NonPositiveMass(f64),
+    /// A simulation with no end: no end time, no event limit, and a ball that never stops.
+    Endless,
+    /// A box whose low bound is not below its high bound on an axis.
+    EmptyBox {
+        /// The low bound.
+        lo: f64,
+        /// The high bound.
+        hi: f64,
+    },
 }
 
 /// An invalid input: which argument, at which index (for batch calls), and why.
@@ -191,6 +227,33 @@ impl fmt::Display for InputErrorKind {
                 Brief(previous)
             ),
             Self::NoSegments => f.write_str("a path needs at least one segment"),
+            Self::BeforeCurrentTime { time, current } => write!(
+                f,
+                "must not be before the calendar's time {}, got {}",
+                Brief(current),
+                Brief(time)
+            ),
+            Self::StartsDiffer { first, start } => write!(
+                f,
+                "an update's paths must all start at one time, got {} after {}",
+                Brief(start),
+                Brief(first)
+            ),
+            Self::IndexOutOfRange { index, len } => {
+                write!(f, "ball index must be in 0..{len}, got {index}")
+            }
+            Self::RepeatedIndex(i) => write!(f, "ball {i} is given more than once"),
+            Self::NotInUnitInterval(x) => write!(f, "must be in [0, 1], got {}", Brief(x)),
+            Self::NonPositiveMass(x) => write!(f, "mass must be > 0, got {}", Brief(x)),
+            Self::Endless => {
+                f.write_str("a ball without friction never stops: give t_end or max_events")
+            }
+            Self::EmptyBox { lo, hi } => write!(
+                f,
+                "the box's low bound must be below its high bound, got {} and {}",
+                Brief(lo),
+                Brief(hi)
+            ),
         }
     }
 }

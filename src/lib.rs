@@ -11,7 +11,8 @@
 //! - [`collision_time`] ([`collision`]): the first contact of two balls;
 //! - [`Path`] ([`path`]): general motion, paths of constant-acceleration segments in 2-D and 3-D;
 //! - [`poly`]: real-root solvers for polynomials of degree ≤ 4;
-//! - [`scene`]: many balls at once: earliest collisions, with a broad phase.
+//! - [`scene`]: many balls at once: earliest collisions, with a broad phase;
+//! - [`schedule`]: an event calendar: the next collision among N balls, kept up to date.
 //!
 //! ```
 //! use ballcollide::{Ball, collision_time};
@@ -34,6 +35,7 @@ pub mod poly;
 #[cfg(feature = "python")]
 mod python;
 pub mod scene;
+pub mod schedule;
 
 pub use coefficients::Gap;
 pub use collision::{CollisionOptions, collision_time, collision_time_with, path_collision_time};

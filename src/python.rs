@@ -19,6 +19,7 @@
 mod input_error;
 mod paths;
 mod read;
+mod schedule;
 
 use std::cell::Cell;
 use std::num::NonZeroUsize;
@@ -743,7 +744,10 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(pairwise_collision_times, m)?,
         wrap_pyfunction!(earliest_collision, m)?,
         wrap_pyfunction!(first_contacts, m)?,
+        wrap_pyfunction!(schedule::simulate, m)?,
     ];
+    m.add_class::<schedule::CollisionSchedule>()?;
+    m.add("Event", schedule::event_type(py)?)?;
     for f in public {
         // Their public home, as numpy's functions are `numpy`'s: reprs, pickles and doctest
         // find them there.

@@ -20,7 +20,10 @@ and any real number ``float()`` accepts, but not a bool, where a number goes):
 - :func:`real_roots`: real roots of N polynomials of degree 1 to 4, like ``numpy.roots``;
 - :func:`pairwise_collision_times`, :func:`earliest_collision`, :func:`first_contacts`: a
   scene of N balls (which pairs touch, which touch first), with a broad phase that prunes
-  the pairs that cannot meet.
+  the pairs that cannot meet;
+- :class:`CollisionSchedule`: an event calendar, the next collision (and wall contact) among N
+  balls on paths, kept up to date as an event-driven simulation changes a few paths at a time;
+- :func:`simulate`: an event-driven simulation of friction balls in a box, run natively on it.
 
 Bad input (NaN or infinity, negative friction, ``radius ≤ 0``, wrong shapes or lengths)
 raises :class:`InputError`, a ``ValueError`` naming the argument and, for batches, the first
@@ -40,6 +43,8 @@ every argument itself. Their docstrings are the Rust doc comments of ``src/pytho
 from __future__ import annotations
 
 from ._core import (
+    CollisionSchedule,
+    Event,
     InputError,
     __version__,
     collision_time,
@@ -52,9 +57,12 @@ from ._core import (
     path_positions_at,
     positions_at,
     real_roots,
+    simulate,
 )
 
 __all__ = [
+    "CollisionSchedule",
+    "Event",
     "InputError",
     "__version__",
     "collision_time",
@@ -67,4 +75,5 @@ __all__ = [
     "path_positions_at",
     "positions_at",
     "real_roots",
+    "simulate",
 ]

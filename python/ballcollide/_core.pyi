@@ -1,8 +1,8 @@
 # Types only. The docstrings of these functions and of InputError are the Rust doc comments
-# in src/python.rs and src/python/input_error.rs (what `help()` shows): the one place the
+# in src/python.rs and src/python/*.rs (what `help()` shows): the one place the
 # Python API is documented.
 
-from typing import Final, SupportsFloat, SupportsIndex
+from typing import Final, NamedTuple, SupportsFloat, SupportsIndex, final
 
 import numpy as np
 import numpy.typing as npt
@@ -17,6 +17,8 @@ _Path = tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike] | list
 _I64Array = npt.NDArray[np.int64]
 
 __all__ = [
+    "CollisionSchedule",
+    "Event",
     "InputError",
     "__version__",
     "_last_kernel_seconds",
@@ -30,6 +32,7 @@ __all__ = [
     "path_positions_at",
     "positions_at",
     "real_roots",
+    "simulate",
 ]
 
 __version__: Final[str]
@@ -134,3 +137,73 @@ def first_contacts(
     t_max: _Number = ...,
     num_threads: SupportsIndex | None = None,
 ) -> tuple[_F64Array, _I64Array]: ...
+
+# A box of walls: (lo, hi), each D numbers.
+_Box = tuple[npt.ArrayLike, npt.ArrayLike] | list[npt.ArrayLike]
+_Indices = SupportsIndex | npt.ArrayLike
+
+class Event(NamedTuple):
+    time: float
+    i: int
+    j: int
+    axis: int
+    side: int
+
+@final
+class CollisionSchedule:
+    def __new__(
+        cls,
+        start: npt.ArrayLike,
+        pos: npt.ArrayLike,
+        vel: npt.ArrayLike,
+        acc: npt.ArrayLike,
+        radius: _PerPair,
+        *,
+        box: _Box | None = None,
+        t_max: _Number = ...,
+    ) -> CollisionSchedule: ...
+    @staticmethod
+    def from_balls(
+        pos: npt.ArrayLike,
+        vel: npt.ArrayLike,
+        friction: _PerPair,
+        radius: _PerPair,
+        t: _Number = ...,
+        box: _Box | None = None,
+        *,
+        t_max: _Number = ...,
+    ) -> CollisionSchedule: ...
+    @property
+    def time(self) -> float: ...
+    def __len__(self) -> int: ...
+    def next_collision(self) -> tuple[float, int, int]: ...
+    def next_event(self) -> Event: ...
+    def update(
+        self,
+        indices: _Indices,
+        start: npt.ArrayLike,
+        pos: npt.ArrayLike,
+        vel: npt.ArrayLike,
+        acc: npt.ArrayLike,
+    ) -> None: ...
+    def update_balls(
+        self,
+        indices: _Indices,
+        t: _Number,
+        pos: npt.ArrayLike,
+        vel: npt.ArrayLike,
+        friction: _PerPair,
+    ) -> None: ...
+
+def simulate(
+    pos: npt.ArrayLike,
+    vel: npt.ArrayLike,
+    friction: _PerPair,
+    radius: _PerPair,
+    *,
+    box: _Box,
+    mass: _PerPair = ...,
+    restitution: float = 1.0,
+    t_end: _Number = ...,
+    max_events: SupportsIndex | None = None,
+) -> tuple[_F64Array, _I64Array, _I64Array, _F64Array, _F64Array]: ...

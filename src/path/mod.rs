@@ -37,7 +37,7 @@ mod piecewise;
 mod rows;
 mod segment;
 
-pub(crate) use piecewise::{Names, locate};
+pub(crate) use piecewise::{Names, locate, spans};
 pub use piecewise::{Path, Path2, Path3};
 pub(crate) use rows::segments_from_rows;
 pub use segment::{Segment, Segment2, Segment3};

@@ -31,7 +31,7 @@ const NAMES_ONE: Names = ["start", "pos", "vel", "acc"];
 /// How a side's arrays are shaped: `(N, K)` and `(N, K, D)` in a batch, `(K,)` and `(K, D)`
 /// for a single path.
 #[derive(Clone, Copy, PartialEq)]
-enum Layout {
+pub(super) enum Layout {
     Batch,
     Single,
 }
@@ -55,16 +55,16 @@ impl Layout {
 }
 
 /// One side's arrays, read and shaped: `paths` paths of `segments` rows of `dim` numbers.
-struct Side<'py> {
+pub(super) struct Side<'py> {
     arrays: [Floats<'py>; 4],
-    paths: usize,
-    segments: usize,
-    dim: usize,
+    pub(super) paths: usize,
+    pub(super) segments: usize,
+    pub(super) dim: usize,
 }
 
 impl Side<'_> {
     /// The rows the core reads (`D` must be `self.dim`).
-    fn rows<const D: usize>(&self) -> PathRows<'_, D> {
+    pub(super) fn rows<const D: usize>(&self) -> PathRows<'_, D> {
         let [start, pos, vel, acc] = &self.arrays;
         PathRows {
             start: start.values(),
@@ -83,7 +83,7 @@ impl Side<'_> {
 /// Reads a side's four arrays and checks their shapes: `start` of `layout`'s dimensions, and
 /// `pos`, `vel`, `acc` of `start`'s shape and one more dimension `D`, 2 or 3 (`dim` if given:
 /// side A's, which side B must share).
-fn side<'py>(
+pub(super) fn side<'py>(
     py: Python<'py>,
     names: Names,
     objects: [&Bound<'py, PyAny>; 4],

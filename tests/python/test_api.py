@@ -642,6 +642,8 @@ def test_version_and_public_api() -> None:
     assert re.fullmatch(r"\d+\.\d+\.\d+.*", bc.__version__)
     assert bc.__version__ == _core.__version__
     assert set(bc.__all__) == {
+        "CollisionSchedule",
+        "Event",
         "InputError",
         "__version__",
         "collision_time",
@@ -654,6 +656,7 @@ def test_version_and_public_api() -> None:
         "path_positions_at",
         "positions_at",
         "real_roots",
+        "simulate",
     }
 
 

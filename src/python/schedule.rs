@@ -1,0 +1,651 @@
+//! The event calendar of the Python API: :class:`CollisionSchedule` (`crate::schedule`), in
+//! 2-D or 3-D, the :class:`Event` it reports, and :func:`simulate` on it.
+//!
+//! Paths are read as one side of :func:`path_collision_times` ([`super::paths::side`]), friction
+//! balls as a scene's ([`crate::scene::balls`]); each path is checked by
+//! [`Path::from_rows`](crate::Path::from_rows), its errors located at the ball (or, in an
+//! update, at its position in the update) and the segment, as the batch functions do.
+
+use numpy::{PyArray1, PyArray2};
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{IntoPyDict, PyInt, PyList, PyTuple};
+
+use super::index_i64;
+use super::input_error::{from_core, input_error};
+use super::paths::{Layout, Side, side};
+use super::read::{self, Given, param, rows};
+use crate::Path;
+use crate::batch::PerPair;
+use crate::error::{InputError, InputErrorKind};
+use crate::scene;
+use crate::schedule::{
+    Collision, CollisionSchedule as Core, Event as CoreEvent, ScheduleOptions, Side as WallSide,
+    SimulationOptions, Walls,
+};
+
+/// The argument names of a calendar's path arrays.
+const NAMES: [&str; 4] = ["start", "pos", "vel", "acc"];
+
+/// A calendar in the dimension of its paths.
+#[derive(Clone, Debug)]
+enum Inner {
+    Two(Core<2>),
+    Three(Core<3>),
+}
+
+/// Runs `$body` with `$s` bound to the calendar, whatever its dimension.
+macro_rules! each_dim {
+    ($inner:expr, $s:ident => $body:expr) => {
+        match $inner {
+            Inner::Two($s) => $body,
+            Inner::Three($s) => $body,
+        }
+    };
+}
+
+/// An event calendar: the next collision among N balls on paths, kept up to date as the
+/// paths of a few balls change.
+///
+/// ``CollisionSchedule(start, pos, vel, acc, radius, *, box=None, t_max=inf)`` holds N balls
+/// on paths of constant-acceleration segments (the arrays of one side of
+/// :func:`path_collision_times`: ``start`` ``(N, K)``, ``pos``, ``vel``, ``acc``
+/// ``(N, K, D)``, ``D`` = 2 or 3, padding with ``+inf`` starts) and a current time, at first
+/// the earliest first start.
+///
+/// - :meth:`next_collision` is the earliest ``(t, i, j)``, ``i < j``, over all pairs whose
+///   first contact (:func:`path_collision_times` on paths ``i`` and ``j`` at contact
+///   distance ``radius[i] + radius[j]``, searched from the later of their first starts) is at
+///   or after the current time, ties to the lowest ``i``, then ``j``: bit for bit what
+///   recomputing every pair gives. A pair whose first contact came before the current time
+///   (an event the caller went past) is not reported again.
+/// - :meth:`update` gives some balls new paths, all from one time ``t ≥`` :attr:`time`, which
+///   becomes the current time; only their pairs are recomputed.
+/// - With ``box=(lo, hi)``, :meth:`next_event` also reports a ball's contact with the walls
+///   of that axis-aligned box (its centre reaching ``lo + r`` or ``hi − r`` moving towards the
+///   wall), as an :class:`Event`.
+///
+/// A refused call (a time before :attr:`time`, a bad path, an index out of range or repeated)
+/// raises :class:`InputError` and leaves the calendar exactly as it was.
+///
+/// Parameters
+/// ----------
+/// start, pos, vel, acc
+///     The paths, as one side of :func:`path_collision_times`.
+/// radius
+///     A number or shape ``(N,)``: each ball's radius (``> 0``).
+/// box
+///     ``None``, or ``(lo, hi)``: the box's low and high corners, each ``D`` numbers
+///     (``lo < hi`` on every axis).
+/// t_max
+///     Horizon: a contact at ``t ≥ t_max`` is none.
+///
+/// Raises
+/// ------
+/// InputError
+///     As :func:`path_collision_times` (``vel[3, 1]: must be finite, got NaN``), a radius of
+///     another length or not ``> 0`` (``radius[2]: ...``), a bad ``box``
+///     (``box[1]: the box's low bound must be below its high bound, got 1 and 1``).
+/// TypeError
+///     An argument that is not made of real numbers.
+///
+/// Examples
+/// --------
+/// >>> import numpy as np
+/// >>> import ballcollide as bc
+/// >>> # Three balls on a line: 0 moves at 1 m/s towards 1 (2 m away) and 2 (5 m away).
+/// >>> start = np.zeros((3, 1))
+/// >>> pos = [[[0.0, 0.0]], [[2.0, 0.0]], [[5.0, 0.0]]]
+/// >>> vel = [[[1.0, 0.0]], [[0.0, 0.0]], [[0.0, 0.0]]]
+/// >>> s = bc.CollisionSchedule(start, pos, vel, np.zeros((3, 1, 2)), 0.5)
+/// >>> s.next_collision()
+/// (1.0, 0, 1)
+/// >>> # Ball 0 stops there, ball 1 goes on at 1 m/s.
+/// >>> s.update([0, 1], [[1.0], [1.0]], [[[1.0, 0.0]], [[2.0, 0.0]]],
+/// ...          [[[0.0, 0.0]], [[1.0, 0.0]]], np.zeros((2, 1, 2)))
+/// >>> s.time, s.next_collision()
+/// (1.0, (3.0, 1, 2))
+#[pyclass(name = "CollisionSchedule", module = "ballcollide")]
+pub(super) struct CollisionSchedule {
+    inner: Inner,
+}
+
+/// An event of a :class:`CollisionSchedule`: ``(time, i, j, axis, side)``.
+///
+/// A collision of balls ``i < j``: ``axis = -1``, ``side = 0``. Ball ``i`` reaching a wall:
+/// ``j = -1``, ``axis`` the wall's axis (0 for x), ``side`` ``-1`` for the low wall and
+/// ``+1`` for the high one. No event: ``(inf, -1, -1, -1, 0)``.
+static EVENT: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
+
+/// The :class:`Event` named tuple type.
+pub(super) fn event_type(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
+    EVENT
+        .get_or_try_init(py, || {
+            let namedtuple = py.import("collections")?.getattr("namedtuple")?;
+            let fields = ["time", "i", "j", "axis", "side"];
+            let kwargs = [("module", "ballcollide")].into_py_dict(py)?;
+            let event = namedtuple.call(("Event", fields), Some(&kwargs))?;
+            event.setattr(
+                "__doc__",
+                "An event of a CollisionSchedule: (time, i, j, axis, side).\n\n\
+                 A collision of balls i < j: axis = -1, side = 0. Ball i reaching a wall: \
+                 j = -1, axis the wall's axis (0 for x), side -1 for the low wall and +1 for \
+                 the high one. No event: (inf, -1, -1, -1, 0).",
+            )?;
+            Ok::<_, PyErr>(event.unbind())
+        })
+        .map(|event| event.bind(py))
+}
+
+/// The event as the named tuple.
+fn event_tuple<'py>(py: Python<'py>, event: Option<CoreEvent>) -> PyResult<Bound<'py, PyAny>> {
+    let fields: (f64, i64, i64, i64, i64) = match event {
+        None => (f64::INFINITY, -1, -1, -1, 0),
+        Some(CoreEvent::Collision(c)) => (c.time, index_i64(c.i), index_i64(c.j), -1, 0),
+        Some(CoreEvent::Wall(w)) => {
+            let side = match w.side {
+                WallSide::Low => -1,
+                WallSide::High => 1,
+            };
+            (w.time, index_i64(w.ball), -1, index_i64(w.axis), side)
+        }
+    };
+    event_type(py)?.call1(fields)
+}
+
+fn collision_tuple(c: Option<Collision>) -> (f64, i64, i64) {
+    c.map_or((f64::INFINITY, -1, -1), |c| {
+        (c.time, index_i64(c.i), index_i64(c.j))
+    })
+}
+
+/// The paths of a side's arrays, each checked (errors at `[ball, segment]`).
+fn paths_of<const D: usize>(side: &Side<'_>) -> Result<Vec<Path<D>>, InputError> {
+    let rows = side.rows::<D>();
+    let k = side.segments;
+    (0..side.paths)
+        .map(|i| {
+            let r = i * k..(i + 1) * k;
+            Path::from_rows(
+                &rows.start[r.clone()],
+                &rows.pos[r.clone()],
+                &rows.vel[r.clone()],
+                &rows.acc[r],
+            )
+            .map_err(|e| e.in_pair(i))
+        })
+        .collect()
+}
+
+/// The walls of `box`: `None`, or a pair `(lo, hi)` of `dim` numbers each.
+fn walls_of<const D: usize>(
+    py: Python<'_>,
+    obj: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Option<Walls<D>>> {
+    let Some(obj) = obj.filter(|o| !o.is_none()) else {
+        return Ok(None);
+    };
+    let items: Option<Vec<Bound<'_, PyAny>>> = match (obj.cast::<PyTuple>(), obj.cast::<PyList>()) {
+        (Ok(t), _) => Some(t.iter().collect()),
+        (_, Ok(l)) => Some(l.iter().collect()),
+        _ => None,
+    };
+    let corner = |item: &Bound<'_, PyAny>| -> PyResult<[f64; D]> {
+        let (values, shape) = read::shaped("box", item)?;
+        match <[f64; D]>::try_from(values.values()) {
+            Ok(corner) if shape == [D] => Ok(corner),
+            _ => {
+                let reason = format!(
+                    "expected (lo, hi), each of {D} numbers like pos's last dimension, got shape {}",
+                    read::shape_text(&shape)
+                );
+                Err(input_error(py, "box", None, &reason))
+            }
+        }
+    };
+    match items.as_deref() {
+        Some([lo, hi]) => {
+            let walls = Walls::new(corner(lo)?, corner(hi)?).map_err(|e| from_core(py, e))?;
+            Ok(Some(walls))
+        }
+        Some(other) => {
+            let reason = format!("expected (lo, hi), got a sequence of {}", other.len());
+            Err(input_error(py, "box", None, &reason))
+        }
+        None => Err(PyTypeError::new_err(
+            "box: expected None or a tuple (lo, hi)",
+        )),
+    }
+}
+
+/// One radius per ball.
+fn radii(py: Python<'_>, radius: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<f64>> {
+    let radius = param("radius", radius)?;
+    let values = match radius.per_pair() {
+        PerPair::All(r) => vec![r; n],
+        PerPair::Each(r) => r.to_vec(),
+    };
+    same_count(py, "radius", n, values.len())?;
+    Ok(values)
+}
+
+/// An error naming `argument` unless it has `expected` rows.
+fn same_count(
+    py: Python<'_>,
+    argument: &'static str,
+    expected: usize,
+    found: usize,
+) -> PyResult<()> {
+    if found == expected {
+        return Ok(());
+    }
+    let kind = InputErrorKind::LengthMismatch { expected, found };
+    Err(from_core(py, InputError::new(argument, kind)))
+}
+
+/// Ball indices: an int or a sequence of ints, each in `0..n` (errors at their position).
+fn indices(py: Python<'_>, obj: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<usize>> {
+    let given: Vec<i64> = if obj.is_instance_of::<PyInt>() {
+        vec![obj.extract()?]
+    } else {
+        obj.extract().map_err(|_| {
+            PyTypeError::new_err("indices: expected a sequence of ints (ball indices)")
+        })?
+    };
+    given
+        .iter()
+        .enumerate()
+        .map(|(m, &i)| {
+            usize::try_from(i).ok().filter(|&i| i < n).ok_or_else(|| {
+                let kind = InputErrorKind::IndexOutOfRange { index: i, len: n };
+                from_core(py, InputError::new("indices", kind).at(m))
+            })
+        })
+        .collect()
+}
+
+/// Friction balls from a scene's arguments.
+fn balls(
+    py: Python<'_>,
+    pos: &Bound<'_, PyAny>,
+    vel: &Bound<'_, PyAny>,
+    friction: &Bound<'_, PyAny>,
+) -> PyResult<Vec<crate::Ball>> {
+    let pos = rows("pos", pos)?;
+    let vel = rows("vel", vel)?;
+    let friction = param("friction", friction)?;
+    scene::balls(pos.rows(), vel.rows(), friction.per_pair()).map_err(|e| from_core(py, e))
+}
+
+#[pymethods]
+impl CollisionSchedule {
+    #[new]
+    #[pyo3(
+        signature = (start, pos, vel, acc, radius, *, r#box=None, t_max=Given(None)),
+        text_signature = "(start, pos, vel, acc, radius, *, box=None, t_max=1e999)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        py: Python<'_>,
+        start: &Bound<'_, PyAny>,
+        pos: &Bound<'_, PyAny>,
+        vel: &Bound<'_, PyAny>,
+        acc: &Bound<'_, PyAny>,
+        radius: &Bound<'_, PyAny>,
+        r#box: Option<&Bound<'_, PyAny>>,
+        t_max: Given<'_>,
+    ) -> PyResult<Self> {
+        let paths = side(py, NAMES, [start, pos, vel, acc], Layout::Batch, None)?;
+        let radii = radii(py, radius, paths.paths)?;
+        let t_max = t_max.number_or("t_max", f64::INFINITY)?;
+        let inner = match paths.dim {
+            2 => Inner::Two(build(py, &paths, &radii, walls_of(py, r#box)?, t_max)?),
+            _ => Inner::Three(build(py, &paths, &radii, walls_of(py, r#box)?, t_max)?),
+        };
+        Ok(Self { inner })
+    }
+
+    /// A calendar of friction balls (the model of :func:`collision_time`: each slowed by its
+    /// friction along its velocity until it stops) given at time ``t``, in 2-D.
+    ///
+    /// Parameters
+    /// ----------
+    /// pos, vel
+    ///     Shape ``(N, 2)``: the balls' centres and velocities at ``t``.
+    /// friction, radius
+    ///     Numbers or shape ``(N,)``: friction decelerations (``≥ 0``) and radii (``> 0``).
+    /// t
+    ///     The time at which the balls are given (finite); it is the calendar's time.
+    /// box, t_max
+    ///     As for :class:`CollisionSchedule`.
+    ///
+    /// Raises
+    /// ------
+    /// InputError, TypeError
+    ///     As :func:`first_contacts` (``friction[0]: friction must be ≥ 0, got -0.1``), and a
+    ///     bad ``box`` or ``t``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import ballcollide as bc
+    /// >>> s = bc.CollisionSchedule.from_balls([[0, 0], [1, 0]], [[1, 0], [0, 0]], 0.0, 0.25, t=2.0)
+    /// >>> s.next_collision()
+    /// (2.5, 0, 1)
+    #[staticmethod]
+    #[pyo3(
+        signature = (pos, vel, friction, radius, t=Given(None), r#box=None, *, t_max=Given(None)),
+        text_signature = "(pos, vel, friction, radius, t=0.0, box=None, *, t_max=1e999)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn from_balls(
+        py: Python<'_>,
+        pos: &Bound<'_, PyAny>,
+        vel: &Bound<'_, PyAny>,
+        friction: &Bound<'_, PyAny>,
+        radius: &Bound<'_, PyAny>,
+        t: Given<'_>,
+        r#box: Option<&Bound<'_, PyAny>>,
+        t_max: Given<'_>,
+    ) -> PyResult<Self> {
+        let balls = balls(py, pos, vel, friction)?;
+        let radii = radii(py, radius, balls.len())?;
+        let t = t.number_or("t", 0.0)?;
+        let t_max = t_max.number_or("t_max", f64::INFINITY)?;
+        let options = ScheduleOptions {
+            walls: walls_of::<2>(py, r#box)?,
+            t_max,
+        };
+        let core = Core::from_balls(&balls, &radii, t, options).map_err(|e| from_core(py, e))?;
+        Ok(Self {
+            inner: Inner::Two(core),
+        })
+    }
+
+    /// The current time: the start of the last update (at first, the earliest first start,
+    /// or ``t`` of :meth:`from_balls`).
+    #[getter]
+    fn time(&self) -> f64 {
+        each_dim!(&self.inner, s => s.time())
+    }
+
+    /// The number of balls.
+    fn __len__(&self) -> usize {
+        each_dim!(&self.inner, s => s.len())
+    }
+
+    /// The earliest ball–ball collision from :attr:`time` on: ``(t, i, j)`` with ``i < j``,
+    /// or ``(inf, -1, -1)`` if there is none before ``t_max``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import ballcollide as bc
+    /// >>> bc.CollisionSchedule.from_balls([[0, 0], [5, 0]], [[0, 0], [0, 0]], 0.0, 1.0).next_collision()
+    /// (inf, -1, -1)
+    fn next_collision(&mut self) -> (f64, i64, i64) {
+        collision_tuple(each_dim!(&mut self.inner, s => s.next_collision()))
+    }
+
+    /// The earliest event from :attr:`time` on, a collision or (with a ``box``) a ball
+    /// reaching a wall, as an :class:`Event` ``(time, i, j, axis, side)``. At equal times the
+    /// lower ball comes first, and a ball's wall contact before its collisions.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import ballcollide as bc
+    /// >>> s = bc.CollisionSchedule.from_balls([[0.5, 0.5]], [[1, 0]], 0.0, 0.25, box=([0, 0], [1, 1]))
+    /// >>> s.next_event()
+    /// Event(time=0.25, i=0, j=-1, axis=0, side=1)
+    fn next_event<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let event = each_dim!(&mut self.inner, s => s.next_event());
+        event_tuple(py, event)
+    }
+
+    /// Gives balls ``indices`` new paths, all starting at one time ``t ≥`` :attr:`time`,
+    /// which becomes the current time.
+    ///
+    /// Parameters
+    /// ----------
+    /// indices
+    ///     An int or a sequence of ``M`` ints: the balls, each once.
+    /// start, pos, vel, acc
+    ///     The ``M`` new paths, as for :class:`CollisionSchedule` (``(M, K)`` and
+    ///     ``(M, K, D)``, the calendar's ``D``; ``K`` may differ from the calendar's); every
+    ///     path's first start is ``t``.
+    ///
+    /// Raises
+    /// ------
+    /// InputError
+    ///     And nothing changes: an index out of range or repeated (``indices[1]: ball 3 is
+    ///     given more than once``), paths of another number or dimension, a bad path
+    ///     (``vel[1, 0]: must be finite, got nan``), first starts that differ or are before
+    ///     :attr:`time` (``start[0, 0]: must not be before the calendar's time 2, got 1``).
+    fn update(
+        &mut self,
+        py: Python<'_>,
+        indices: &Bound<'_, PyAny>,
+        start: &Bound<'_, PyAny>,
+        pos: &Bound<'_, PyAny>,
+        vel: &Bound<'_, PyAny>,
+        acc: &Bound<'_, PyAny>,
+    ) -> PyResult<()> {
+        let n = self.__len__();
+        let indices = self::indices(py, indices, n)?;
+        let dim = match self.inner {
+            Inner::Two(_) => 2,
+            Inner::Three(_) => 3,
+        };
+        let paths = side(py, NAMES, [start, pos, vel, acc], Layout::Batch, None)?;
+        if paths.dim != dim {
+            let reason = format!(
+                "expected paths in the calendar's dimension {dim}, got {}",
+                paths.dim
+            );
+            return Err(input_error(py, "pos", None, &reason));
+        }
+        same_count(py, "start", indices.len(), paths.paths)?;
+        let result = match &mut self.inner {
+            Inner::Two(s) => paths_of(&paths).and_then(|p| s.update(&indices, p)),
+            Inner::Three(s) => paths_of(&paths).and_then(|p| s.update(&indices, p)),
+        };
+        result.map_err(|e| from_core(py, e))
+    }
+
+    /// Gives balls ``indices`` of a 2-D calendar new friction-ball paths from time ``t``
+    /// (``≥`` :attr:`time`, which it becomes), as :meth:`from_balls` builds them.
+    ///
+    /// Parameters
+    /// ----------
+    /// indices
+    ///     As in :meth:`update`.
+    /// t
+    ///     The time of the new states.
+    /// pos, vel, friction
+    ///     As in :meth:`from_balls`, for the ``M`` balls.
+    ///
+    /// Raises
+    /// ------
+    /// InputError
+    ///     As :meth:`update` and :meth:`from_balls` (``t: must not be before the
+    ///     calendar's time 2, got 1``); a 3-D calendar.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import ballcollide as bc
+    /// >>> s = bc.CollisionSchedule.from_balls([[0, 0], [1, 0]], [[1, 0], [0, 0]], 0.0, 0.25)
+    /// >>> t, i, j = s.next_collision()
+    /// >>> s.update_balls([i, j], t, [[0.5, 0], [1, 0]], [[0, 0], [1, 0]], 0.0)
+    /// >>> s.time, s.next_collision()
+    /// (0.5, (inf, -1, -1))
+    fn update_balls(
+        &mut self,
+        py: Python<'_>,
+        indices: &Bound<'_, PyAny>,
+        t: &Bound<'_, PyAny>,
+        pos: &Bound<'_, PyAny>,
+        vel: &Bound<'_, PyAny>,
+        friction: &Bound<'_, PyAny>,
+    ) -> PyResult<()> {
+        let n = self.__len__();
+        let indices = self::indices(py, indices, n)?;
+        let t = read::number("t", t)?;
+        let balls = balls(py, pos, vel, friction)?;
+        same_count(py, "pos", indices.len(), balls.len())?;
+        match &mut self.inner {
+            Inner::Two(s) => s
+                .update_balls(&indices, t, &balls)
+                .map_err(|e| from_core(py, e)),
+            Inner::Three(_) => Err(input_error(
+                py,
+                "pos",
+                None,
+                "friction balls are 2-D; this calendar is 3-D",
+            )),
+        }
+    }
+
+    fn __repr__(&self) -> String {
+        let (n, time, dim) = match &self.inner {
+            Inner::Two(s) => (s.len(), s.time(), 2),
+            Inner::Three(s) => (s.len(), s.time(), 3),
+        };
+        format!("CollisionSchedule({n} balls in {dim}-D, time={time})")
+    }
+}
+
+/// The calendar of `paths` in dimension `D`.
+fn build<const D: usize>(
+    py: Python<'_>,
+    paths: &Side<'_>,
+    radii: &[f64],
+    walls: Option<Walls<D>>,
+    t_max: f64,
+) -> PyResult<Core<D>> {
+    let paths = paths_of::<D>(paths).map_err(|e| from_core(py, e))?;
+    let options = ScheduleOptions { walls, t_max };
+    Core::new(paths, radii, options).map_err(|e| from_core(py, e))
+}
+
+/// An event-driven simulation of smooth hard friction balls in a box, run in Rust on the
+/// calendar: ``(times, i, j, pos, vel)``.
+///
+/// Each ball moves as in :func:`collision_time` (slowed by its friction along its velocity
+/// until it stops; ``0`` for none). At each event, in :class:`CollisionSchedule`'s order,
+/// two touching balls exchange momentum along their line of centres with the given
+/// restitution and masses (the tangential components are kept), and a ball touching a wall
+/// has its velocity's normal component reflected; the balls involved go on from there. It
+/// runs until ``t_end``, ``max_events``, or until no event is left (every ball at rest).
+///
+/// Parameters
+/// ----------
+/// pos, vel
+///     Shape ``(N, 2)``: centres and velocities at time 0.
+/// friction, radius
+///     Numbers or shape ``(N,)``: friction decelerations (``≥ 0``) and radii (``> 0``).
+/// box
+///     ``(lo, hi)``: the box's low and high corners (two numbers each).
+/// mass
+///     A number or shape ``(N,)``: the masses (``> 0``).
+/// restitution
+///     The coefficient of restitution of ball–ball collisions, in ``[0, 1]``.
+/// t_end
+///     The end time (``inf``: until no event is left).
+/// max_events
+///     ``None``, or the number of events after which to stop.
+///
+/// Returns
+/// -------
+/// tuple
+///     ``times`` (float64, shape ``(E,)``), ``i`` and ``j`` (int64: the balls, ``j = -1``
+///     for a wall), and ``pos``, ``vel`` (shape ``(N, 2)``): the state at ``t_end`` if
+///     finite and reached, else at the last event (``max_events``) or when every ball is at
+///     rest.
+///
+/// Raises
+/// ------
+/// InputError
+///     As :meth:`CollisionSchedule.from_balls`; a mass ``≤ 0``, a restitution outside
+///     ``[0, 1]``; no ``t_end``, no ``max_events`` and a ball without friction (it would
+///     never end).
+///
+/// Notes
+/// -----
+/// The GIL is released while it runs.
+///
+/// Examples
+/// --------
+/// >>> import ballcollide as bc
+/// >>> # A ball at 1 m/s towards a resting one in a 4 m × 1 m box: they swap velocities.
+/// >>> times, i, j, pos, vel = bc.simulate([[0.5, 0.5], [2, 0.5]], [[1, 0], [0, 0]], 0.0, 0.25,
+/// ...                                     box=([0, 0], [4, 1]), t_end=3.0)
+/// >>> times, i, j
+/// (array([1.  , 2.75]), array([0, 1]), array([ 1, -1]))
+/// >>> pos
+/// array([[1.5, 0.5],
+///        [3.5, 0.5]])
+#[pyfunction]
+#[pyo3(
+    signature = (pos, vel, friction, radius, *, r#box, mass=Given(None), restitution=1.0,
+                 t_end=Given(None), max_events=None),
+    text_signature = "(pos, vel, friction, radius, *, box, mass=1.0, restitution=1.0, \
+                      t_end=1e999, max_events=None)"
+)]
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+pub(super) fn simulate<'py>(
+    py: Python<'py>,
+    pos: &Bound<'py, PyAny>,
+    vel: &Bound<'py, PyAny>,
+    friction: &Bound<'py, PyAny>,
+    radius: &Bound<'py, PyAny>,
+    r#box: &Bound<'py, PyAny>,
+    mass: Given<'py>,
+    restitution: f64,
+    t_end: Given<'py>,
+    max_events: Option<usize>,
+) -> PyResult<(
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<i64>>,
+    Bound<'py, PyArray1<i64>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<f64>>,
+)> {
+    let balls = balls(py, pos, vel, friction)?;
+    let n = balls.len();
+    let radii = radii(py, radius, n)?;
+    let walls = walls_of::<2>(py, Some(r#box))?
+        .ok_or_else(|| PyTypeError::new_err("box: expected a tuple (lo, hi), got None"))?;
+    let mass = match mass.param_or("mass", 1.0)?.per_pair() {
+        PerPair::All(m) => vec![m],
+        PerPair::Each(m) => m.to_vec(),
+    };
+    let options = SimulationOptions {
+        mass,
+        restitution,
+        t_end: t_end.number_or("t_end", f64::INFINITY)?,
+        max_events,
+    };
+    let run = py
+        .detach(|| crate::schedule::simulate(&balls, &radii, walls, &options))
+        .map_err(|e| from_core(py, e))?;
+    let times: Vec<f64> = run.events.iter().map(|e| e.time).collect();
+    let i: Vec<i64> = run.events.iter().map(|e| index_i64(e.i)).collect();
+    let j: Vec<i64> = run
+        .events
+        .iter()
+        .map(|e| e.j.map_or(-1, index_i64))
+        .collect();
+    let state = |f: fn(&crate::Ball) -> [f64; 2]| -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows: Vec<Vec<f64>> = run.balls.iter().map(|b| f(b).to_vec()).collect();
+        if rows.is_empty() {
+            return Ok(PyArray2::zeros(py, [0, 2], false));
+        }
+        PyArray2::from_vec2(py, &rows).map_err(|e| PyTypeError::new_err(e.to_string()))
+    };
+    Ok((
+        PyArray1::from_vec(py, times),
+        PyArray1::from_vec(py, i),
+        PyArray1::from_vec(py, j),
+        state(|b| b.position().into())?,
+        state(|b| b.velocity().into())?,
+    ))
+}

@@ -1,0 +1,805 @@
+//! [`CollisionSchedule`]: N balls on paths, a current time, and their next collision, kept up
+//! to date as paths change.
+
+use super::event::{Collision, Event, WallContact};
+use super::grid::{CellRange, Grid};
+use super::queue::{Key, Queue};
+use super::reach::{Reach, reach};
+use super::walls::{Side, Walls, first_wall_contact};
+use crate::collision::path_contact::first_path_contact;
+use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
+use crate::motion::Ball;
+use crate::path::{Path, Segment};
+
+/// Options of a [`CollisionSchedule`].
+///
+/// ```
+/// use ballcollide::schedule::{ScheduleOptions, Walls};
+/// let options = ScheduleOptions { walls: Some(Walls::new([0.0, 0.0], [1.0, 1.0])?), ..Default::default() };
+/// assert_eq!(options.t_max, f64::INFINITY);
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ScheduleOptions<const D: usize> {
+    /// The walls of an axis-aligned box, if ball–wall contacts are wanted.
+    pub walls: Option<Walls<D>>,
+    /// The horizon: a contact at `t ≥ t_max` is none. Default `∞`.
+    pub t_max: f64,
+}
+
+impl<const D: usize> Default for ScheduleOptions<D> {
+    fn default() -> Self {
+        Self {
+            walls: None,
+            t_max: f64::INFINITY,
+        }
+    }
+}
+
+/// The heap memory a calendar holds, in bytes (see [`CollisionSchedule::heap_bytes`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HeapBytes {
+    /// The paths' segments and their vectors.
+    pub paths: usize,
+    /// Everything kept per ball besides its path: radius, version, box, horizon, cells,
+    /// pending events, queues.
+    pub per_ball: usize,
+    /// The grid's cells and their lists.
+    pub grid: usize,
+}
+
+/// An event calendar: N balls (paths and radii), a current time, and the earliest collision
+/// among them from that time on, kept up to date as the paths of a few balls change.
+///
+/// - [`next_collision`](Self::next_collision) is the earliest `(t, i, j)`, `i < j`, over all
+///   pairs whose first contact ([`path_collision_time`](crate::path_collision_time) on paths
+///   `i` and `j` at contact distance `r_i + r_j`, searched from the later of their first
+///   starts) is at or after the current time, ties to the lowest `i`, then `j`: bit for bit
+///   what recomputing every pair gives. A pair whose first contact came before the current
+///   time (an event the caller went past without resolving it) is not reported again.
+/// - [`update`](Self::update) replaces the paths of some balls, all from one time `t ≥` the
+///   current time, which becomes the current time; only their pairs are recomputed.
+/// - With walls ([`ScheduleOptions::walls`]), [`next_event`](Self::next_event) also reports a
+///   ball's first contact with the walls of its path (searched from its first start, kept if
+///   at or after the current time).
+///
+/// ## How
+/// Each ball keeps one pending key in a tournament tree ([`Queue`]): its earliest collision
+/// with the balls whose boxes meet its own, found through a uniform grid of boxes (the box a
+/// ball covers, grown by its radius and a rounding margin, over the span from the current
+/// time to its *horizon*: for ever for a path that comes to rest, a little further ahead for
+/// one that keeps moving). A key's partner's version is stored with it: after the partner's
+/// path changes, the key is a lower bound of the ball's true next collision, and it is
+/// recomputed when it reaches the root (lazy invalidation). At its horizon a moving ball's box
+/// is moved on (a *re-check*, internal).
+///
+/// ```
+/// use ballcollide::path::{Path2, Segment2};
+/// use ballcollide::schedule::{Collision, CollisionSchedule, ScheduleOptions};
+/// use nalgebra::Vector2;
+///
+/// let line = |x: f64, v: f64| Path2::new(vec![Segment2::new(0.0, Vector2::new(x, 0.0), Vector2::new(v, 0.0), Vector2::zeros())]);
+/// let paths = vec![line(0.0, 1.0)?, line(2.0, 0.0)?, line(5.0, 0.0)?];
+/// let mut s = CollisionSchedule::new(paths, &[0.5; 3], ScheduleOptions::default())?;
+/// assert_eq!(s.next_collision(), Some(Collision { time: 1.0, i: 0, j: 1 }));
+/// // Ball 0 stops at the contact; ball 1 goes on at 1 m/s.
+/// let stop = Path2::new(vec![Segment2::at_rest(1.0, Vector2::new(1.0, 0.0))])?;
+/// let go = Path2::new(vec![Segment2::new(1.0, Vector2::new(2.0, 0.0), Vector2::new(1.0, 0.0), Vector2::zeros())])?;
+/// s.update(&[0, 1], vec![stop, go])?;
+/// assert_eq!(s.time(), 1.0);
+/// assert_eq!(s.next_collision(), Some(Collision { time: 3.0, i: 1, j: 2 }));
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct CollisionSchedule<const D: usize> {
+    paths: Vec<Path<D>>,
+    radii: Vec<f64>,
+    walls: Option<Walls<D>>,
+    t_max: f64,
+    time: f64,
+    /// Per ball: how many times its path has been replaced (wrapping).
+    versions: Vec<u32>,
+    /// Per ball: the box it covers up to its horizon, and the box's cells.
+    boxes: Vec<Reach<D>>,
+    ranges: Vec<CellRange<D>>,
+    /// Per ball: when its box must be moved on (`∞`: it covers the rest of the path, or up
+    /// to `t_max`).
+    horizons: Vec<f64>,
+    grid: Grid<D>,
+    /// About one cell: how far a horizon looks ahead.
+    cell: f64,
+    pairs: Queue<PairKey>,
+    wall_contacts: Queue<WallKey>,
+    /// Scratch: a mark per ball, to list each candidate partner once.
+    marks: Vec<u32>,
+    mark: u32,
+    candidates: Vec<u32>,
+}
+
+/// What a ball's pending pair key is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Kind {
+    /// Its box must be moved on (comes first at equal times: it may reveal a collision).
+    Recheck,
+    /// A collision of the pair `(lo, hi)`.
+    Collision,
+    /// Nothing pending.
+    Nothing,
+}
+
+/// A ball's pending pair key: `(time, kind, lo, hi)` in that order, with its partner's
+/// version when the key was formed.
+#[derive(Clone, Copy, Debug)]
+struct PairKey {
+    time: f64,
+    kind: Kind,
+    lo: u32,
+    hi: u32,
+    partner_version: u32,
+}
+
+impl PairKey {
+    const NOTHING: Self = Self {
+        time: f64::INFINITY,
+        kind: Kind::Nothing,
+        lo: u32::MAX,
+        hi: u32::MAX,
+        partner_version: 0,
+    };
+}
+
+impl Key for PairKey {
+    fn before(&self, other: &Self) -> bool {
+        self.time
+            .total_cmp(&other.time)
+            .then(self.kind.cmp(&other.kind))
+            .then(self.lo.cmp(&other.lo))
+            .then(self.hi.cmp(&other.hi))
+            .is_lt()
+    }
+}
+
+/// A ball's pending wall contact (`time = ∞` for none).
+#[derive(Clone, Copy, Debug)]
+struct WallKey {
+    time: f64,
+    axis: u8,
+    side: Side,
+}
+
+impl WallKey {
+    const NOTHING: Self = Self {
+        time: f64::INFINITY,
+        axis: 0,
+        side: Side::Low,
+    };
+}
+
+impl Key for WallKey {
+    fn before(&self, other: &Self) -> bool {
+        // Equal times go to the lower ball: the queue breaks ties to the left.
+        self.time < other.time
+    }
+}
+
+impl<const D: usize> CollisionSchedule<D> {
+    /// The calendar of balls on `paths` with `radii` (one per ball), at the earliest first
+    /// start of the paths (`0` without balls).
+    ///
+    /// # Errors
+    /// An [`InputError`]: `radius` of another length than `paths`, or a radius at an index
+    /// that is not finite and positive; `t_max` negative or NaN; more than `2³² − 2` balls
+    /// (`paths`, as a length).
+    pub fn new(
+        paths: Vec<Path<D>>,
+        radii: &[f64],
+        options: ScheduleOptions<D>,
+    ) -> Result<Self, InputError> {
+        let n = paths.len();
+        if radii.len() != n {
+            let kind = InputErrorKind::LengthMismatch {
+                expected: n,
+                found: radii.len(),
+            };
+            return Err(InputError::new("radius", kind));
+        }
+        if n >= u32::MAX as usize - 1 {
+            let kind = InputErrorKind::LengthMismatch {
+                expected: u32::MAX as usize - 2,
+                found: n,
+            };
+            return Err(InputError::new("paths", kind));
+        }
+        for (i, &r) in radii.iter().enumerate() {
+            check_radius("radius", r).map_err(|e| e.at(i))?;
+        }
+        let t_max = check_horizon("t_max", options.t_max)?;
+        let time = paths
+            .iter()
+            .map(Path::first_start)
+            .reduce(f64::min)
+            .unwrap_or(0.0);
+        let cell = cell_size(&paths, radii, options.walls.as_ref());
+        let (lo, hi) = region(&paths, options.walls.as_ref(), cell);
+        let mut schedule = Self {
+            grid: Grid::new(lo, hi, cell, n),
+            cell,
+            versions: vec![0; n],
+            boxes: Vec::with_capacity(n),
+            ranges: Vec::with_capacity(n),
+            horizons: Vec::with_capacity(n),
+            pairs: Queue::new(vec![PairKey::NOTHING; n]),
+            wall_contacts: Queue::new(vec![WallKey::NOTHING; n]),
+            marks: vec![0; n],
+            mark: 0,
+            candidates: Vec::new(),
+            radii: radii.to_vec(),
+            walls: options.walls,
+            t_max,
+            time,
+            paths,
+        };
+        for i in 0..n {
+            let (reach, horizon) = schedule.span_box(i, None);
+            let range = schedule.grid.range(&reach);
+            schedule.grid.insert(i as u32, &range);
+            schedule.boxes.push(reach);
+            schedule.ranges.push(range);
+            schedule.horizons.push(horizon);
+        }
+        for i in 0..n {
+            schedule.refresh(i);
+            schedule.refresh_wall(i);
+        }
+        Ok(schedule)
+    }
+
+    /// The calendar of friction balls ([`Ball`], their model: slowed along their velocity
+    /// until they stop) given at time `t`: ball `i`'s path is [`Ball::path`] from `t`.
+    ///
+    /// # Errors
+    /// As [`CollisionSchedule::new`]; a `t` that is not finite; a ball whose path overflows
+    /// (see [`Ball::path`]), at its index.
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use ballcollide::schedule::{Collision, CollisionSchedule, ScheduleOptions};
+    /// use nalgebra::Vector2;
+    ///
+    /// // A ball slowed at 0.5 m/s² from 2 m/s rolls 4 m; the other rests 3 m away.
+    /// let balls = [Ball::new(Vector2::zeros(), Vector2::new(2.0, 0.0), 0.5)?, Ball::at_rest(Vector2::new(3.0, 0.0))?];
+    /// let mut s = CollisionSchedule::from_balls(&balls, &[0.5, 0.5], 10.0, ScheduleOptions::default())?;
+    /// let c = s.next_collision().expect("a collision");
+    /// // 2 m covered: 2·t − t²/4 = 2, t = 4 − 2√2 after the start at 10 s.
+    /// assert!((c.time - (14.0 - 8f64.sqrt())).abs() < 1e-12);
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
+    pub fn from_balls(
+        balls: &[Ball],
+        radii: &[f64],
+        t: f64,
+        options: ScheduleOptions<D>,
+    ) -> Result<Self, InputError>
+    where
+        Ball: FrictionPath<D>,
+    {
+        let paths = friction_paths(balls, t)?;
+        Self::new(paths, radii, options)
+    }
+
+    /// The number of balls.
+    pub fn len(&self) -> usize {
+        self.paths.len()
+    }
+
+    /// Whether there is no ball.
+    pub fn is_empty(&self) -> bool {
+        self.paths.is_empty()
+    }
+
+    /// The current time: the start of the last update (at first, the earliest first start).
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// Ball `i`'s path.
+    ///
+    /// # Panics
+    /// If `i` is out of range.
+    pub fn path(&self, i: usize) -> &Path<D> {
+        &self.paths[i]
+    }
+
+    /// Ball `i`'s radius.
+    ///
+    /// # Panics
+    /// If `i` is out of range.
+    pub fn radius(&self, i: usize) -> f64 {
+        self.radii[i]
+    }
+
+    /// The walls, if any.
+    pub fn walls(&self) -> Option<&Walls<D>> {
+        self.walls.as_ref()
+    }
+
+    /// The horizon.
+    pub fn t_max(&self) -> f64 {
+        self.t_max
+    }
+
+    /// The earliest collision from the current time on (see [`CollisionSchedule`]), `None` if
+    /// there is none before `t_max`. It takes `&mut self` for the calendar's internal upkeep
+    /// (stale keys recomputed, boxes moved on); the answer is what recomputing every pair
+    /// gives.
+    pub fn next_collision(&mut self) -> Option<Collision> {
+        loop {
+            let owner = self.pairs.first()?;
+            let key = *self.pairs.key(owner);
+            match key.kind {
+                Kind::Nothing => return None,
+                Kind::Recheck => self.recheck(owner),
+                Kind::Collision => {
+                    let partner = if key.lo as usize == owner {
+                        key.hi
+                    } else {
+                        key.lo
+                    } as usize;
+                    if key.time < self.time || self.versions[partner] != key.partner_version {
+                        self.refresh(owner);
+                    } else {
+                        return Some(Collision {
+                            time: key.time,
+                            i: key.lo as usize,
+                            j: key.hi as usize,
+                        });
+                    }
+                }
+            }
+        }
+    }
+
+    /// The earliest wall contact from the current time on (`None` without walls).
+    pub fn next_wall_contact(&mut self) -> Option<WallContact> {
+        loop {
+            let ball = self.wall_contacts.first()?;
+            let key = *self.wall_contacts.key(ball);
+            if key.time == f64::INFINITY {
+                return None;
+            }
+            if key.time < self.time {
+                // Reached before the current time: not reported again for this path.
+                self.wall_contacts.set(ball, WallKey::NOTHING);
+                continue;
+            }
+            return Some(WallContact {
+                time: key.time,
+                ball,
+                axis: key.axis as usize,
+                side: key.side,
+            });
+        }
+    }
+
+    /// The earliest event from the current time on: a collision ([`next_collision`]) or a
+    /// wall contact ([`next_wall_contact`]), in the order of [`Event`].
+    ///
+    /// ```
+    /// use ballcollide::path::{Path2, Segment2};
+    /// use ballcollide::schedule::{CollisionSchedule, Event, ScheduleOptions, Side, WallContact, Walls};
+    /// use nalgebra::Vector2;
+    ///
+    /// let path = Path2::new(vec![Segment2::new(0.0, Vector2::new(0.5, 0.5), Vector2::new(1.0, 0.0), Vector2::zeros())])?;
+    /// let options = ScheduleOptions { walls: Some(Walls::new([0.0, 0.0], [1.0, 1.0])?), ..Default::default() };
+    /// let mut s = CollisionSchedule::new(vec![path], &[0.25], options)?;
+    /// let wall = WallContact { time: 0.25, ball: 0, axis: 0, side: Side::High };
+    /// assert_eq!(s.next_event(), Some(Event::Wall(wall)));
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
+    ///
+    /// [`next_collision`]: Self::next_collision
+    /// [`next_wall_contact`]: Self::next_wall_contact
+    pub fn next_event(&mut self) -> Option<Event> {
+        let collision = self.next_collision();
+        let wall = self.next_wall_contact();
+        Event::first_of(collision, wall)
+    }
+
+    /// Replaces the paths of balls `indices` by `paths`, which must all start at one time
+    /// `t ≥` [`time`](Self::time); `t` becomes the current time. Only the pairs of those
+    /// balls are recomputed. An empty update changes nothing.
+    ///
+    /// # Errors
+    /// An [`InputError`], and the calendar left exactly as it was: `paths` of another length
+    /// than `indices`; an index out of range or given twice (`indices[m]`); a path `m` whose
+    /// first start differs from path 0's, or is before the current time (`start[m, 0]`).
+    pub fn update(&mut self, indices: &[usize], paths: Vec<Path<D>>) -> Result<(), InputError> {
+        self.check_update(indices, &paths)?;
+        let Some(t) = paths.first().map(Path::first_start) else {
+            return Ok(());
+        };
+        self.time = t;
+        for (&i, path) in indices.iter().zip(paths) {
+            self.paths[i] = path;
+            self.versions[i] = self.versions[i].wrapping_add(1);
+            let (reach, horizon) = self.span_box(i, None);
+            self.move_box(i, reach, horizon);
+        }
+        for &i in indices {
+            self.refresh(i);
+            self.refresh_wall(i);
+        }
+        Ok(())
+    }
+
+    /// [`update`](Self::update) for friction balls given at time `t` (see
+    /// [`from_balls`](Self::from_balls)).
+    ///
+    /// # Errors
+    /// As [`update`](Self::update), with `balls` in place of `paths`; a `t` that is not
+    /// finite; a ball whose path overflows.
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use ballcollide::schedule::{Collision, CollisionSchedule, ScheduleOptions};
+    /// use nalgebra::Vector2;
+    ///
+    /// let balls = [Ball::new(Vector2::zeros(), Vector2::new(1.0, 0.0), 0.0)?, Ball::at_rest(Vector2::new(2.0, 0.0))?];
+    /// let mut s = CollisionSchedule::from_balls(&balls, &[0.5, 0.5], 0.0, ScheduleOptions::default())?;
+    /// assert_eq!(s.next_collision(), Some(Collision { time: 1.0, i: 0, j: 1 }));
+    /// // Equal masses, head on: the velocities swap.
+    /// let after = [Ball::at_rest(Vector2::new(1.0, 0.0))?, Ball::new(Vector2::new(2.0, 0.0), Vector2::new(1.0, 0.0), 0.0)?];
+    /// s.update_balls(&[0, 1], 1.0, &after)?;
+    /// assert_eq!(s.next_collision(), None);
+    /// assert!(s.update_balls(&[0], 0.5, &after[..1]).is_err()); // before the current time
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
+    pub fn update_balls(
+        &mut self,
+        indices: &[usize],
+        t: f64,
+        balls: &[Ball],
+    ) -> Result<(), InputError>
+    where
+        Ball: FrictionPath<D>,
+    {
+        let t = finite("t", t)?;
+        if t < self.time {
+            let kind = InputErrorKind::BeforeCurrentTime {
+                time: t,
+                current: self.time,
+            };
+            return Err(InputError::new("t", kind));
+        }
+        let paths = friction_paths(balls, t)?;
+        self.update(indices, paths)
+    }
+
+    /// The heap memory the calendar holds.
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use ballcollide::schedule::{CollisionSchedule, ScheduleOptions};
+    /// use nalgebra::Vector2;
+    /// let balls: Vec<Ball> = (0..100).map(|i| Ball::at_rest(Vector2::new(i as f64, 0.0))).collect::<Result<_, _>>()?;
+    /// let s = CollisionSchedule::from_balls(&balls, &[0.25; 100], 0.0, ScheduleOptions::default())?;
+    /// assert!(s.heap_bytes().per_ball <= 200 * 100);
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
+    pub fn heap_bytes(&self) -> HeapBytes {
+        use std::mem::size_of;
+        let paths = self.paths.capacity() * size_of::<Path<D>>()
+            + self
+                .paths
+                .iter()
+                .map(|p| std::mem::size_of_val(p.segments()))
+                .sum::<usize>();
+        let per_ball = self.radii.capacity() * size_of::<f64>()
+            + self.versions.capacity() * size_of::<u32>()
+            + self.boxes.capacity() * size_of::<Reach<D>>()
+            + self.ranges.capacity() * size_of::<CellRange<D>>()
+            + self.horizons.capacity() * size_of::<f64>()
+            + self.marks.capacity() * size_of::<u32>()
+            + self.candidates.capacity() * size_of::<u32>()
+            + self.pairs.heap_bytes()
+            + self.wall_contacts.heap_bytes();
+        HeapBytes {
+            paths,
+            per_ball,
+            grid: self.grid.heap_bytes(),
+        }
+    }
+
+    /// The checks of [`update`](Self::update), before anything changes.
+    fn check_update(&self, indices: &[usize], paths: &[Path<D>]) -> Result<(), InputError> {
+        if paths.len() != indices.len() {
+            let kind = InputErrorKind::LengthMismatch {
+                expected: indices.len(),
+                found: paths.len(),
+            };
+            return Err(InputError::new("paths", kind));
+        }
+        let n = self.len();
+        for (m, &i) in indices.iter().enumerate() {
+            if i >= n {
+                let kind = InputErrorKind::IndexOutOfRange {
+                    index: i64::try_from(i).unwrap_or(i64::MAX),
+                    len: n,
+                };
+                return Err(InputError::new("indices", kind).at(m));
+            }
+        }
+        // A repeat is reported at its second occurrence, the earliest such position.
+        let mut order: Vec<(usize, usize)> = indices.iter().copied().zip(0..).collect();
+        order.sort_unstable();
+        let repeat = order
+            .windows(2)
+            .filter(|w| w[0].0 == w[1].0)
+            .map(|w| w[1].1)
+            .min();
+        if let Some(m) = repeat {
+            let kind = InputErrorKind::RepeatedIndex(indices[m]);
+            return Err(InputError::new("indices", kind).at(m));
+        }
+        let Some(first) = paths.first().map(Path::first_start) else {
+            return Ok(());
+        };
+        for (m, path) in paths.iter().enumerate() {
+            let start = path.first_start();
+            if start != first {
+                let kind = InputErrorKind::StartsDiffer { first, start };
+                return Err(InputError::new("start", kind).at(0).in_pair(m));
+            }
+        }
+        if first < self.time {
+            let kind = InputErrorKind::BeforeCurrentTime {
+                time: first,
+                current: self.time,
+            };
+            return Err(InputError::new("start", kind).at(0).in_pair(0));
+        }
+        Ok(())
+    }
+
+    /// Ball `i`'s contact time with ball `j` (`i ≠ j`): the pair search on `(lo, hi)`.
+    fn pair_time(&self, i: usize, j: usize) -> Option<f64> {
+        let (a, b) = (i.min(j), i.max(j));
+        first_path_contact(
+            self.paths[a].segments(),
+            self.paths[b].segments(),
+            [self.radii[a] + self.radii[b], 0.0],
+            self.t_max,
+        )
+    }
+
+    /// Ball `i`'s box from the current time, and its horizon (`∞` if the box covers the
+    /// rest of its path, or up to `t_max`); `previous`: the horizon being moved on.
+    fn span_box(&self, i: usize, previous: Option<f64>) -> (Reach<D>, f64) {
+        let segments = self.paths[i].segments();
+        let from = self.time;
+        let horizon = self.next_horizon(segments, from, previous);
+        let end = horizon.min(self.t_max);
+        let horizon = if horizon < self.t_max {
+            horizon
+        } else {
+            f64::INFINITY
+        };
+        (reach(segments, self.radii[i], from, end), horizon)
+    }
+
+    /// How far ahead a box reaches: for ever for a path that comes to rest; else far enough
+    /// to cross a quarter of a cell (of about two ball spacings: measured on the benchmark's
+    /// frictionless disks, shorter boxes in coarser cells ask the pair search less often
+    /// than boxes of a whole cell), and at least twice as far from `from` as the `previous`
+    /// horizon (so that a calendar whose time does not advance moves boxes on in ever larger
+    /// steps).
+    fn next_horizon(&self, segments: &[Segment<D>], from: f64, previous: Option<f64>) -> f64 {
+        let Some(last) = segments.last() else {
+            return f64::INFINITY;
+        };
+        let (v, a) = (last.velocity.amax(), last.acceleration.amax());
+        if v == 0.0 && a == 0.0 {
+            return f64::INFINITY;
+        }
+        let ahead = (from - last.start).max(0.0);
+        let speed = v + a * ahead + (a * self.cell).sqrt();
+        let mut step = 0.25 * self.cell / speed;
+        let base = previous.map_or(from, |h| h.max(from));
+        if let Some(h) = previous {
+            step = step.max(h - from);
+        }
+        let horizon = base + step;
+        // No progress (rounding, or a NaN from an overflow): cover the rest.
+        if horizon > base {
+            horizon
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// Moves ball `i`'s box in the grid.
+    fn move_box(&mut self, i: usize, reach: Reach<D>, horizon: f64) {
+        let range = self.grid.range(&reach);
+        if range != self.ranges[i] {
+            self.grid.remove(i as u32, &self.ranges[i]);
+            self.grid.insert(i as u32, &range);
+            self.ranges[i] = range;
+        }
+        self.boxes[i] = reach;
+        self.horizons[i] = horizon;
+    }
+
+    /// At ball `i`'s horizon: its box moved on, its key recomputed.
+    fn recheck(&mut self, i: usize) {
+        let (reach, horizon) = self.span_box(i, Some(self.horizons[i]));
+        self.move_box(i, reach, horizon);
+        self.refresh(i);
+    }
+
+    /// Recomputes ball `i`'s pair key: its earliest collision at or after the current time
+    /// with a ball whose box meets its own, or its re-check if that comes first.
+    fn refresh(&mut self, i: usize) {
+        self.mark = self.mark.wrapping_add(1);
+        if self.mark == 0 {
+            self.marks.fill(0);
+            self.mark = 1;
+        }
+        let mut candidates = std::mem::take(&mut self.candidates);
+        candidates.clear();
+        let (marks, mark, boxes) = (&mut self.marks, self.mark, &self.boxes);
+        let own = &boxes[i];
+        self.grid.for_each_ball(&self.ranges[i], |k| {
+            let ku = k as usize;
+            if ku != i && marks[ku] != mark {
+                marks[ku] = mark;
+                if boxes[ku].overlaps(own) {
+                    candidates.push(k);
+                }
+            }
+        });
+        let mut best = PairKey::NOTHING;
+        for &k in &candidates {
+            let k = k as usize;
+            if let Some(t) = self.pair_time(i, k).filter(|&t| t >= self.time) {
+                let key = PairKey {
+                    time: t,
+                    kind: Kind::Collision,
+                    lo: i.min(k) as u32,
+                    hi: i.max(k) as u32,
+                    partner_version: self.versions[k],
+                };
+                if key.before(&best) {
+                    best = key;
+                }
+            }
+        }
+        self.candidates = candidates;
+        let horizon = self.horizons[i];
+        if horizon < best.time || (horizon == best.time && horizon.is_finite()) {
+            best = PairKey {
+                time: horizon,
+                kind: Kind::Recheck,
+                lo: i as u32,
+                hi: i as u32,
+                partner_version: 0,
+            };
+        }
+        self.pairs.set(i, best);
+    }
+
+    /// Recomputes ball `i`'s wall key.
+    fn refresh_wall(&mut self, i: usize) {
+        let Some(walls) = &self.walls else {
+            return;
+        };
+        let hit = first_wall_contact(self.paths[i].segments(), self.radii[i], walls, self.t_max);
+        let key = match hit {
+            Some((time, axis, side)) if time >= self.time => WallKey {
+                time,
+                axis: axis as u8,
+                side,
+            },
+            _ => WallKey::NOTHING,
+        };
+        self.wall_contacts.set(i, key);
+    }
+}
+
+/// A friction ball's path from a time `t`, in the dimension `D` of a calendar.
+pub trait FrictionPath<const D: usize> {
+    /// [`Ball::path`] with every start moved on by `t`.
+    ///
+    /// # Errors
+    /// As [`Ball::path`].
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use ballcollide::schedule::FrictionPath;
+    /// use nalgebra::Vector2;
+    /// let ball = Ball::new(Vector2::zeros(), Vector2::new(1.0, 0.0), 0.5)?;
+    /// let path = FrictionPath::<2>::path_from(&ball, 3.0)?;
+    /// assert_eq!(path.segments()[1].start, 5.0);
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
+    fn path_from(&self, t: f64) -> Result<Path<D>, InputError>;
+}
+
+impl FrictionPath<2> for Ball {
+    fn path_from(&self, t: f64) -> Result<Path<2>, InputError> {
+        let segments = self
+            .path()?
+            .segments()
+            .iter()
+            .map(|s| Segment {
+                start: s.start + t,
+                ..*s
+            })
+            .collect();
+        Path::new(segments)
+    }
+}
+
+/// The paths of friction balls from time `t` (errors at the ball's index).
+fn friction_paths<const D: usize>(balls: &[Ball], t: f64) -> Result<Vec<Path<D>>, InputError>
+where
+    Ball: FrictionPath<D>,
+{
+    finite("t", t)?;
+    balls
+        .iter()
+        .enumerate()
+        .map(|(i, b)| b.path_from(t).map_err(|e| e.at(i)))
+        .collect()
+}
+
+/// The grid's cell size: about twice the spacing of the balls (the region's volume per
+/// ball), and at least eight typical radii.
+fn cell_size<const D: usize>(paths: &[Path<D>], radii: &[f64], walls: Option<&Walls<D>>) -> f64 {
+    let mut sorted = radii.to_vec();
+    sorted.sort_unstable_by(f64::total_cmp);
+    let typical = sorted.get(sorted.len() / 2).copied().unwrap_or(1.0);
+    let (lo, hi) = match walls {
+        Some(w) => (w.lo(), w.hi()),
+        None => first_positions_box(paths),
+    };
+    let mut volume = 1.0;
+    for k in 0..D {
+        volume *= (hi[k] - lo[k]).max(4.0 * typical);
+    }
+    let spacing = (volume / paths.len().max(1) as f64).powf(1.0 / D as f64);
+    let size = 2.0 * spacing.max(4.0 * typical);
+    if size.is_finite() && size > 0.0 {
+        size
+    } else {
+        1.0
+    }
+}
+
+/// The box of the paths' first positions (`[0, 1]` without balls).
+fn first_positions_box<const D: usize>(paths: &[Path<D>]) -> ([f64; D], [f64; D]) {
+    let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
+    for p in paths {
+        let x = p.segments()[0].position;
+        for k in 0..D {
+            lo[k] = lo[k].min(x[k]);
+            hi[k] = hi[k].max(x[k]);
+        }
+    }
+    if paths.is_empty() {
+        return ([0.0; D], [1.0; D]);
+    }
+    (lo, hi)
+}
+
+/// The grid's region: the walls' box, or the box of the first positions, grown by a cell.
+fn region<const D: usize>(
+    paths: &[Path<D>],
+    walls: Option<&Walls<D>>,
+    cell: f64,
+) -> ([f64; D], [f64; D]) {
+    let (lo, hi) = match walls {
+        Some(w) => (w.lo(), w.hi()),
+        None => first_positions_box(paths),
+    };
+    (lo.map(|x| x - cell), hi.map(|x| x + cell))
+}

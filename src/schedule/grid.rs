@@ -1,0 +1,203 @@
+//! The incremental broad phase: a uniform grid of cells, each listing the balls whose box
+//! ([`Reach`]) meets it.
+//!
+//! The grid covers a region (the walls' box, or the balls' first boxes) in cubic cells of one
+//! size; a box is listed in every cell its cell range covers, coordinates outside the region
+//! being clamped to its border cells (so an unbounded box, or one that has left the region,
+//! is listed along the border: still found, only at more cost). Clamping keeps order, so two
+//! boxes that overlap always share a cell. Moving a ball touches only the cells of its old and
+//! new boxes.
+
+use super::reach::Reach;
+
+/// At most this many cells per ball (plus a few): the cell size grows if the region would
+/// need more.
+const CELLS_PER_BALL: usize = 2;
+
+/// A ball's cell range: the lowest and highest cell index on each axis.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct CellRange<const D: usize> {
+    lo: [u32; D],
+    hi: [u32; D],
+}
+
+/// The grid: cell size, origin, cells per axis, and each cell's balls.
+#[derive(Clone, Debug)]
+pub(crate) struct Grid<const D: usize> {
+    origin: [f64; D],
+    inverse_size: f64,
+    counts: [usize; D],
+    cells: Vec<Vec<u32>>,
+}
+
+impl<const D: usize> Grid<D> {
+    /// A grid over `[lo, hi]` with cells of about `size` (finite bounds, `size > 0`), made
+    /// coarser if it would have more than about [`CELLS_PER_BALL`] cells per ball of `balls`.
+    pub(crate) fn new(lo: [f64; D], hi: [f64; D], size: f64, balls: usize) -> Self {
+        let most = CELLS_PER_BALL * balls + 16;
+        let mut size = size;
+        let counts = loop {
+            let counts: [usize; D] =
+                std::array::from_fn(|k| cells_along(hi[k] - lo[k], size).min(1 << 20));
+            let total = counts.iter().try_fold(1usize, |n, &c| n.checked_mul(c));
+            match total {
+                Some(total) if total <= most => break counts,
+                _ => size *= 2.0,
+            }
+        };
+        let total = counts.iter().product();
+        Self {
+            origin: lo,
+            inverse_size: 1.0 / size,
+            counts,
+            cells: vec![Vec::new(); total],
+        }
+    }
+
+    /// The cells a box covers, clamped to the grid.
+    pub(crate) fn range(&self, reach: &Reach<D>) -> CellRange<D> {
+        let index = |k: usize, x: f64| -> u32 {
+            let cell = ((x - self.origin[k]) * self.inverse_size).floor();
+            // NaN (never from valid boxes) and −∞ go to cell 0; `as` saturates.
+            let last = (self.counts[k] - 1) as f64;
+            cell.clamp(0.0, last).max(0.0) as u32
+        };
+        CellRange {
+            lo: std::array::from_fn(|k| index(k, reach.lo[k])),
+            hi: std::array::from_fn(|k| index(k, reach.hi[k])),
+        }
+    }
+
+    /// Lists `ball` in the cells of `range`.
+    pub(crate) fn insert(&mut self, ball: u32, range: &CellRange<D>) {
+        self.for_each_cell(range, |cells, c| cells[c].push(ball));
+    }
+
+    /// Takes `ball` out of the cells of `range` (where it was listed).
+    pub(crate) fn remove(&mut self, ball: u32, range: &CellRange<D>) {
+        self.for_each_cell(range, |cells, c| {
+            let list = &mut cells[c];
+            if let Some(at) = list.iter().position(|&b| b == ball) {
+                list.swap_remove(at);
+            }
+        });
+    }
+
+    /// Calls `visit` with every ball listed in the cells of `range` (a ball once per cell it
+    /// shares with the range).
+    pub(crate) fn for_each_ball(&self, range: &CellRange<D>, mut visit: impl FnMut(u32)) {
+        let mut index = range.lo;
+        loop {
+            for &ball in &self.cells[self.flat(&index)] {
+                visit(ball);
+            }
+            if !next_index(&mut index, range) {
+                return;
+            }
+        }
+    }
+
+    /// The heap memory of the grid, in bytes.
+    pub(crate) fn heap_bytes(&self) -> usize {
+        self.cells.capacity() * std::mem::size_of::<Vec<u32>>()
+            + self
+                .cells
+                .iter()
+                .map(|c| c.capacity() * std::mem::size_of::<u32>())
+                .sum::<usize>()
+    }
+
+    fn for_each_cell(
+        &mut self,
+        range: &CellRange<D>,
+        mut visit: impl FnMut(&mut [Vec<u32>], usize),
+    ) {
+        let mut index = range.lo;
+        loop {
+            let c = self.flat(&index);
+            visit(&mut self.cells, c);
+            if !next_index(&mut index, range) {
+                return;
+            }
+        }
+    }
+
+    fn flat(&self, index: &[u32; D]) -> usize {
+        let mut c = 0;
+        for k in (0..D).rev() {
+            c = c * self.counts[k] + index[k] as usize;
+        }
+        c
+    }
+}
+
+/// Cells of `size` needed along a length (at least one; a non-finite quotient gives one).
+fn cells_along(length: f64, size: f64) -> usize {
+    let n = (length / size).ceil();
+    if n.is_finite() && n >= 1.0 {
+        n as usize
+    } else {
+        1
+    }
+}
+
+/// The next cell index of `range` in odometer order; `false` after the last.
+fn next_index<const D: usize>(index: &mut [u32; D], range: &CellRange<D>) -> bool {
+    for (k, i) in index.iter_mut().enumerate() {
+        if *i < range.hi[k] {
+            *i += 1;
+            return true;
+        }
+        *i = range.lo[k];
+    }
+    false
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn overlapping_boxes_share_a_cell_even_outside_the_region() {
+        let mut grid = Grid::<2>::new([0.0, 0.0], [4.0, 4.0], 1.0, 100);
+        let a = Reach {
+            lo: [0.5, 0.5],
+            hi: [1.5, 1.2],
+        };
+        let far = Reach {
+            lo: [9.0, -3.0],
+            hi: [f64::INFINITY, -2.0],
+        };
+        let (ra, rf) = (grid.range(&a), grid.range(&far));
+        grid.insert(0, &ra);
+        grid.insert(1, &rf);
+        let mut seen = Vec::new();
+        grid.for_each_ball(
+            &grid.range(&Reach {
+                lo: [8.0, -9.0],
+                hi: [10.0, -1.0],
+            }),
+            |b| seen.push(b),
+        );
+        assert_eq!(seen, [1]);
+        seen.clear();
+        grid.for_each_ball(
+            &grid.range(&Reach {
+                lo: [1.4, 1.1],
+                hi: [1.6, 1.3],
+            }),
+            |b| seen.push(b),
+        );
+        assert_eq!(seen, [0]);
+        grid.remove(0, &ra);
+        seen.clear();
+        grid.for_each_ball(&ra, |b| seen.push(b));
+        assert!(seen.is_empty());
+    }
+
+    #[test]
+    fn a_grid_that_would_be_too_fine_is_coarsened() {
+        let grid = Grid::<3>::new([0.0; 3], [1.0; 3], 1e-6, 10);
+        assert!(grid.cells.len() <= CELLS_PER_BALL * 10 + 16);
+    }
+}

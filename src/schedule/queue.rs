@@ -1,0 +1,120 @@
+//! The pending-event queue: a tournament tree over one key per ball.
+//!
+//! Each ball holds exactly one pending key (its earliest event, or none); the tree's inner
+//! nodes hold the ball whose key comes first below them, so the earliest key of all is at the
+//! root. Changing a ball's key replays its path to the root: `log₂ N` comparisons, no
+//! allocation, and no stale copies (a heap would hold one per change). Stale keys, whose
+//! partner has since changed, are found when they reach the root (lazy invalidation: see the
+//! calendar).
+
+/// A key that orders events: `before` is a strict total order on keys.
+pub(crate) trait Key: Copy {
+    /// Whether `self` comes strictly before `other`.
+    fn before(&self, other: &Self) -> bool;
+}
+
+/// The tournament tree over `keys` (one per ball).
+#[derive(Clone, Debug)]
+pub(crate) struct Queue<K> {
+    keys: Vec<K>,
+    /// Node `n`'s winner (a ball), `u32::MAX` for none; the leaves start at `leaves`.
+    tree: Vec<u32>,
+    leaves: usize,
+}
+
+const NONE: u32 = u32::MAX;
+
+impl<K: Key> Queue<K> {
+    /// The queue holding `keys` (fewer than `u32::MAX`).
+    pub(crate) fn new(keys: Vec<K>) -> Self {
+        let leaves = keys.len().next_power_of_two().max(1);
+        let mut tree = vec![NONE; 2 * leaves];
+        for (i, slot) in tree[leaves..leaves + keys.len()].iter_mut().enumerate() {
+            *slot = i as u32;
+        }
+        let mut queue = Self { keys, tree, leaves };
+        for node in (1..leaves).rev() {
+            queue.tree[node] = queue.winner(2 * node, 2 * node + 1);
+        }
+        queue
+    }
+
+    /// The ball whose key comes first (`None` without balls).
+    pub(crate) fn first(&self) -> Option<usize> {
+        let top = self.tree[1.min(self.tree.len() - 1)];
+        (top != NONE).then_some(top as usize)
+    }
+
+    /// Ball `i`'s key.
+    pub(crate) fn key(&self, i: usize) -> &K {
+        &self.keys[i]
+    }
+
+    /// Sets ball `i`'s key.
+    pub(crate) fn set(&mut self, i: usize, key: K) {
+        self.keys[i] = key;
+        let mut node = (self.leaves + i) / 2;
+        while node >= 1 {
+            self.tree[node] = self.winner(2 * node, 2 * node + 1);
+            node /= 2;
+        }
+    }
+
+    /// The heap memory, in bytes.
+    pub(crate) fn heap_bytes(&self) -> usize {
+        self.keys.capacity() * std::mem::size_of::<K>()
+            + self.tree.capacity() * std::mem::size_of::<u32>()
+    }
+
+    fn winner(&self, left: usize, right: usize) -> u32 {
+        match (self.tree[left], self.tree[right]) {
+            (NONE, b) => b,
+            (a, NONE) => a,
+            (a, b) => {
+                // Ties go left: to the lower ball, for a total order that is only partial.
+                if self.keys[b as usize].before(&self.keys[a as usize]) {
+                    b
+                } else {
+                    a
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_rng::Rng;
+
+    impl Key for (f64, u32) {
+        fn before(&self, other: &Self) -> bool {
+            self.0
+                .total_cmp(&other.0)
+                .then(self.1.cmp(&other.1))
+                .is_lt()
+        }
+    }
+
+    #[test]
+    fn the_first_key_is_always_the_least_after_random_changes() {
+        let mut rng = Rng(7);
+        for n in [1usize, 2, 3, 5, 16, 17, 100] {
+            let mut keys: Vec<(f64, u32)> =
+                (0..n).map(|i| (rng.uniform(0.0, 10.0), i as u32)).collect();
+            let mut queue = Queue::new(keys.clone());
+            for _ in 0..200 {
+                let i = (rng.uniform(0.0, n as f64) as usize).min(n - 1);
+                // Ties on purpose: a coarse time.
+                keys[i].0 = rng.uniform(0.0, 4.0).floor();
+                queue.set(i, keys[i]);
+                let least = (0..n)
+                    .min_by(|&a, &b| keys[a].0.total_cmp(&keys[b].0).then(a.cmp(&b)))
+                    .expect("n ≥ 1");
+                assert_eq!(queue.first(), Some(least));
+                assert_eq!(queue.key(least), &keys[least]);
+            }
+        }
+        assert_eq!(Queue::<(f64, u32)>::new(Vec::new()).first(), None);
+    }
+}

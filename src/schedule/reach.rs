@@ -1,0 +1,176 @@
+//! The box a ball's disc covers over a span of time: its centre's range on each axis, grown
+//! by its radius and a rounding margin.
+//!
+//! On each segment a coordinate is a quadratic in the time since the segment's start, so its
+//! range over a span lies between its values at the span's ends and at its vertex (if inside);
+//! a span that runs for ever is unbounded wherever the acceleration, or else the velocity,
+//! points.
+//!
+//! ## The rounding margin
+//!
+//! Two balls whose boxes are disjoint never touch on the span; but the pair search works in
+//! float64 and may report a contact for a pair whose exact closest approach exceeds the
+//! contact distance by its rounding error, of order `ε·(S + D²/r)` for coordinates (and
+//! times × speeds) of magnitude `S`, separations of size `D` and a contact distance `r` (the
+//! gap `|d|² − r²` is formed to `ε·|d|²`, and near its minimum it grows by `2r` per unit of
+//! distance). Each box is grown by [`MARGIN`]` · (S + D·(D/r))` with its own `S`, `D` (its
+//! extent with the radius) and radius `r`: for two boxes that come close, the pair's
+//! separations are at most `D_a + D_b` and `(D_a + D_b)²/(r_a + r_b) ≤ 2·(D_a²/r_a +
+//! D_b²/r_b)`, so the two margins together stay more than `2⁹` times above the search's error,
+//! and pruning never changes an answer. An unbounded box gets an unbounded margin (it prunes
+//! nothing).
+
+use crate::path::{Segment, spans};
+
+/// The margin's size relative to `S + D²/r`: `2⁻³⁶ ≈ 1.5e-11`, about `2¹⁶·ε`.
+const MARGIN: f64 = 1.0 / ((1u64 << 36) as f64);
+
+/// An axis-aligned box (bounds may be infinite).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Reach<const D: usize> {
+    pub(crate) lo: [f64; D],
+    pub(crate) hi: [f64; D],
+}
+
+impl<const D: usize> Reach<D> {
+    /// Whether the two boxes overlap (touching counts) on every axis.
+    pub(crate) fn overlaps(&self, other: &Self) -> bool {
+        (0..D).all(|k| self.lo[k] <= other.hi[k] && other.lo[k] <= self.hi[k])
+    }
+}
+
+/// The box that a ball of `radius` on a valid path (`segments`) covers over `[t0, t1]`
+/// (`t1` may be `+∞`; the path is taken from its first start on), with the margin.
+pub(crate) fn reach<const D: usize>(
+    segments: &[Segment<D>],
+    radius: f64,
+    t0: f64,
+    t1: f64,
+) -> Reach<D> {
+    let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
+    let late = t0.abs().max(if t1.is_finite() { t1.abs() } else { 0.0 });
+    let mut size = 0.0;
+    for (segment, end) in spans(segments) {
+        if segment.start > t1 {
+            break;
+        }
+        if end <= t0 {
+            continue; // over before the span
+        }
+        let from = t0.max(segment.start) - segment.start;
+        let to = t1.min(end) - segment.start;
+        for k in 0..D {
+            let (p, v, a) = (
+                segment.position[k],
+                segment.velocity[k],
+                segment.acceleration[k],
+            );
+            let (l, h, magnitude) = range_on(p, v, a, from, to);
+            lo[k] = lo[k].min(l);
+            hi[k] = hi[k].max(h);
+            let length = if to.is_finite() { to } else { from };
+            size += magnitude + late * (v.abs() + a.abs() * length);
+        }
+    }
+    let mut extent = 0.0_f64;
+    for k in 0..D {
+        size += lo[k].abs().max(hi[k].abs());
+        extent = extent.max(hi[k] - lo[k]);
+    }
+    let extent = extent + 2.0 * radius;
+    // `D·(D/r)`, not `D²/r`: no square that overflows or underflows on its own. A NaN (an
+    // unbounded box) or an infinite margin prunes nothing.
+    let margin = MARGIN * (size + extent * (extent / radius));
+    let grow = if margin.is_finite() {
+        radius + margin
+    } else {
+        f64::INFINITY
+    };
+    Reach {
+        lo: lo.map(|x| x - grow),
+        hi: hi.map(|x| x + grow),
+    }
+}
+
+/// The range `(lo, hi)` of `p + v·s + ½·a·s²` over `s ∈ [from, to]` (`to` may be `+∞`), and
+/// a bound on the magnitudes that form it.
+fn range_on(p: f64, v: f64, a: f64, from: f64, to: f64) -> (f64, f64, f64) {
+    let at = |s: f64| p + (v + 0.5 * a * s) * s;
+    let start = at(from);
+    let (mut lo, mut hi) = (start, start);
+    let turn = -v / a;
+    let vertex_inside = turn > from && turn < to;
+    if vertex_inside {
+        let vertex = p - 0.5 * v * (v / a);
+        lo = lo.min(vertex);
+        hi = hi.max(vertex);
+    }
+    if to.is_finite() {
+        let end = at(to);
+        lo = lo.min(end);
+        hi = hi.max(end);
+        return (lo, hi, p.abs() + (v.abs() + a.abs() * to) * to);
+    }
+    // For ever: towards wherever the acceleration, or else the velocity, points.
+    let drift = if a != 0.0 { a } else { v };
+    if drift < 0.0 {
+        lo = f64::NEG_INFINITY;
+    } else if drift > 0.0 {
+        hi = f64::INFINITY;
+    }
+    (lo, hi, p.abs() + (v.abs() + a.abs() * from) * from)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector2;
+
+    fn segment(s: f64, p: [f64; 2], v: [f64; 2], a: [f64; 2]) -> Segment<2> {
+        Segment::new(s, Vector2::from(p), Vector2::from(v), Vector2::from(a))
+    }
+
+    #[test]
+    fn a_friction_ball_covers_its_run_to_rest_and_no_more() {
+        // From (0, 0) at 1 m/s along x, slowed at 0.5 m/s², at rest at x = 1 from t = 2.
+        let path = [
+            segment(0.0, [0.0, 0.0], [1.0, 0.0], [-0.5, 0.0]),
+            segment(2.0, [1.0, 0.0], [0.0, 0.0], [0.0, 0.0]),
+        ];
+        let r = reach(&path, 0.25, 0.0, f64::INFINITY);
+        assert!((r.lo[0] + 0.25).abs() < 1e-9 && (r.hi[0] - 1.25).abs() < 1e-9);
+        assert!(r.lo[0] < -0.25 && r.hi[0] > 1.25); // the margin, outside
+        // From t = 1 on: x from 0.75.
+        let r = reach(&path, 0.25, 1.0, f64::INFINITY);
+        assert!((r.lo[0] - 0.5).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_ball_turning_back_covers_its_vertex_and_a_moving_one_for_ever_is_unbounded() {
+        let up = [segment(0.0, [0.0, 0.0], [0.0, 1.0], [0.0, -1.0])];
+        let r = reach(&up, 0.1, 0.0, 3.0);
+        assert!((r.hi[1] - 0.6).abs() < 1e-8); // the top, y = ½
+        assert!((r.lo[1] - (-1.5 - 0.1)).abs() < 1e-8); // y(3) = 3 − 4.5
+        let r = reach(&up, 0.1, 0.0, f64::INFINITY);
+        assert_eq!(r.lo[1], f64::NEG_INFINITY);
+        assert_eq!(r.lo[0], f64::NEG_INFINITY); // an unbounded box prunes nothing
+    }
+
+    #[test]
+    fn boxes_overlap_when_they_touch() {
+        let a = Reach {
+            lo: [0.0, 0.0],
+            hi: [1.0, 1.0],
+        };
+        let b = Reach {
+            lo: [1.0, 0.5],
+            hi: [2.0, 2.0],
+        };
+        let c = Reach {
+            lo: [1.5, 0.5],
+            hi: [2.0, 2.0],
+        };
+        assert!(a.overlaps(&b) && b.overlaps(&a));
+        assert!(!a.overlaps(&c));
+    }
+}

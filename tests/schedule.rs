@@ -1,0 +1,593 @@
+//! `schedule`: the calendar's answers must be, bit for bit, those of recomputing every pair
+//! with `path_collision_time` (and every ball's wall contact with `Walls::first_contact`),
+//! ties to the lowest `i`, then `j`, after any sequence of updates: events resolved as a
+//! simulation would, updates that skip events, refused updates (which must leave the
+//! calendar exactly as it was). Scenes of every kind of path: frictionless, friction balls,
+//! at rest, piecewise with jumps, accelerating for ever; on dyadic grids (exact contacts,
+//! tangencies, ties) and with full-mantissa numbers; with and without walls and a horizon.
+
+use ballcollide::path::{Path, Segment};
+use ballcollide::schedule::{
+    Collision, CollisionSchedule, Event, ScheduleOptions, Side, WallContact, Walls,
+};
+use ballcollide::{Ball, CollisionOptions, InputErrorKind, path_collision_time};
+use nalgebra::{SVector, Vector2};
+use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
+
+#[path = "support/rng.rs"]
+mod rng;
+use rng::Rng;
+
+/// A fixed number of cases from a fixed seed.
+fn config(cases: u32, seed: u64) -> ProptestConfig {
+    ProptestConfig {
+        cases,
+        rng_seed: RngSeed::Fixed(seed),
+        ..ProptestConfig::default()
+    }
+}
+
+/// How a scene's numbers are drawn.
+#[derive(Clone, Copy, Debug)]
+enum Numbers {
+    /// Multiples of 1/8: exact contacts, tangencies and ties are common.
+    Dyadic,
+    /// Full mantissas.
+    Full,
+}
+
+struct Draw {
+    rng: Rng,
+    numbers: Numbers,
+    size: f64,
+}
+
+impl Draw {
+    fn number(&mut self, lo: f64, hi: f64) -> f64 {
+        let x = self.rng.uniform(lo, hi);
+        match self.numbers {
+            Numbers::Dyadic => (x * 8.0).round() / 8.0,
+            Numbers::Full => x,
+        }
+    }
+
+    fn vector<const D: usize>(&mut self, lo: f64, hi: f64) -> SVector<f64, D> {
+        SVector::from_fn(|_, _| self.number(lo, hi))
+    }
+
+    /// A path from `t` at `position` (or a random one): one of every kind.
+    fn path<const D: usize>(&mut self, t: f64, position: Option<SVector<f64, D>>) -> Path<D> {
+        let size = self.size;
+        let p = position.unwrap_or_else(|| self.vector(0.0, size));
+        let kind = self.rng.below(6);
+        let zero = SVector::<f64, D>::zeros();
+        let segments = match kind {
+            0 => vec![Segment::at_rest(t, p)],
+            1 | 2 => vec![Segment::new(t, p, self.vector(-1.0, 1.0), zero)],
+            3 => {
+                // A friction-like run to rest: decelerated along its velocity.
+                let v: SVector<f64, D> = self.vector(-1.0, 1.0);
+                let speed: f64 = v.norm();
+                if speed == 0.0 {
+                    vec![Segment::at_rest(t, p)]
+                } else {
+                    let mu = self.number(0.25, 1.0).max(0.125);
+                    let tau = speed / mu;
+                    let a = v * (-mu / speed);
+                    let seg = Segment::new(t, p, v, a);
+                    vec![seg, Segment::at_rest(t + tau, seg.position_at(t + tau))]
+                }
+            }
+            4 => {
+                // Accelerating for ever (a ball in the air, say).
+                vec![Segment::new(
+                    t,
+                    p,
+                    self.vector(-1.0, 1.0),
+                    self.vector(-0.5, 0.5),
+                )]
+            }
+            _ => {
+                // Pieces, positions continuous or not, an empty segment sometimes.
+                let mut segments = Vec::new();
+                let mut s = t;
+                let mut seg = Segment::new(t, p, self.vector(-1.0, 1.0), self.vector(-0.5, 0.5));
+                for _ in 0..1 + self.rng.below(3) {
+                    segments.push(seg);
+                    s += self.number(0.0, 2.0);
+                    let position = if self.rng.below(3) == 0 {
+                        seg.position_at(s) + self.vector(-0.25, 0.25)
+                    } else {
+                        seg.position_at(s)
+                    };
+                    seg = Segment::new(s, position, self.vector(-1.0, 1.0), self.vector(-0.5, 0.5));
+                }
+                segments.push(Segment::new(seg.start, seg.position, seg.velocity, zero));
+                segments
+            }
+        };
+        Path::new(segments).expect("finite numbers")
+    }
+}
+
+/// The brute-force answer: every pair recomputed.
+fn brute_collision<const D: usize>(s: &CollisionSchedule<D>) -> Option<Collision> {
+    let options = CollisionOptions { t_max: s.t_max() };
+    let mut best: Option<Collision> = None;
+    for i in 0..s.len() {
+        for j in i + 1..s.len() {
+            let r = s.radius(i) + s.radius(j);
+            let t = path_collision_time(s.path(i), s.path(j), r, &options).expect("valid");
+            if let Some(t) = t.filter(|&t| t >= s.time()) {
+                // Strictly earlier only: pairs come in (i, j) order.
+                if best.is_none_or(|b| t < b.time) {
+                    best = Some(Collision { time: t, i, j });
+                }
+            }
+        }
+    }
+    best
+}
+
+/// The brute-force wall contact: every ball recomputed.
+fn brute_wall<const D: usize>(s: &CollisionSchedule<D>) -> Option<WallContact> {
+    let walls = s.walls()?;
+    let mut best: Option<WallContact> = None;
+    for ball in 0..s.len() {
+        let hit = walls
+            .first_contact(s.path(ball), s.radius(ball), s.t_max())
+            .expect("valid");
+        // Strictly earlier only: balls come in order.
+        let earlier = |h: &(f64, usize, Side)| h.0 >= s.time() && best.is_none_or(|b| h.0 < b.time);
+        if let Some((time, axis, side)) = hit.filter(earlier) {
+            best = Some(WallContact {
+                time,
+                ball,
+                axis,
+                side,
+            });
+        }
+    }
+    best
+}
+
+fn bits_c(c: Option<Collision>) -> Option<(u64, usize, usize)> {
+    c.map(|c| (c.time.to_bits(), c.i, c.j))
+}
+
+/// Checks the calendar against brute force, and returns its next event.
+fn check<const D: usize>(s: &mut CollisionSchedule<D>) -> Option<Event> {
+    let expected = brute_collision(s);
+    assert_eq!(
+        bits_c(s.next_collision()),
+        bits_c(expected),
+        "next_collision at {}",
+        s.time()
+    );
+    let wall = brute_wall(s);
+    assert_eq!(s.next_wall_contact(), wall);
+    let event = s.next_event();
+    let expected = match (expected, wall) {
+        (Some(c), Some(w)) if (w.time, w.ball) <= (c.time, c.i) => Some(Event::Wall(w)),
+        (Some(c), _) => Some(Event::Collision(c)),
+        (None, w) => w.map(Event::Wall),
+    };
+    assert_eq!(event, expected);
+    event
+}
+
+/// Every kind of refused update leaves the calendar exactly as it was.
+fn refused_updates_change_nothing<const D: usize>(s: &mut CollisionSchedule<D>, draw: &mut Draw) {
+    let n = s.len();
+    let before = format!("{s:?}");
+    let t = s.time();
+    let attempt = |s: &mut CollisionSchedule<D>,
+                   indices: &[usize],
+                   paths: Vec<Path<D>>,
+                   kind: fn(InputErrorKind) -> bool| {
+        let err = s.update(indices, paths).expect_err("refused");
+        assert!(kind(err.kind()), "{err}");
+        assert_eq!(format!("{s:?}"), before);
+    };
+    if t.is_finite() && t > f64::MIN {
+        let past = t - 1.0;
+        attempt(s, &[0], vec![draw.path(past, None)], |k| {
+            matches!(k, InputErrorKind::BeforeCurrentTime { .. })
+        });
+    }
+    attempt(s, &[n], vec![draw.path(t, None)], |k| {
+        matches!(k, InputErrorKind::IndexOutOfRange { .. })
+    });
+    if n >= 2 {
+        let paths = vec![draw.path(t, None), draw.path(t, None), draw.path(t, None)];
+        attempt(s, &[1, 0, 1], paths, |k| {
+            matches!(k, InputErrorKind::RepeatedIndex(1))
+        });
+        let paths = vec![draw.path(t, None), draw.path(t + 1.0, None)];
+        attempt(s, &[0, 1], paths, |k| {
+            matches!(k, InputErrorKind::StartsDiffer { .. })
+        });
+    }
+    attempt(s, &[0], Vec::new(), |k| {
+        matches!(k, InputErrorKind::LengthMismatch { .. })
+    });
+}
+
+/// A random scene and a long random sequence of events and updates, checked throughout.
+fn run<const D: usize>(
+    seed: u64,
+    numbers: Numbers,
+    n: usize,
+    walls: bool,
+    t_max: f64,
+    steps: usize,
+) {
+    let size = 1.0 + (n as f64).sqrt();
+    let mut draw = Draw {
+        rng: Rng(seed | 1),
+        numbers,
+        size,
+    };
+    let paths: Vec<Path<D>> = (0..n).map(|_| draw.path(0.0, None)).collect();
+    let radii: Vec<f64> = (0..n).map(|_| draw.number(0.125, 0.5).max(0.125)).collect();
+    let walls = walls.then(|| Walls::new([-0.5; D], [size + 0.5; D]).expect("a box"));
+    let options = ScheduleOptions { walls, t_max };
+    let mut s = CollisionSchedule::new(paths, &radii, options).expect("valid");
+    for step in 0..steps {
+        let event = check(&mut s);
+        if n > 0 && step % 7 == 3 {
+            refused_updates_change_nothing(&mut s, &mut draw);
+        }
+        let roll = draw.rng.below(10);
+        let now = s.time();
+        let (indices, t): (Vec<usize>, f64) = match event {
+            // Resolve the event, as a simulation does: new paths from where the balls are.
+            Some(e) if roll < 7 => {
+                let t = e.time();
+                match e {
+                    Event::Collision(c) => (vec![c.i, c.j], t),
+                    Event::Wall(w) => (vec![w.ball], t),
+                }
+            }
+            // Skip ahead, past events perhaps, and change a few balls.
+            _ if n > 0 => {
+                let k = 1 + draw.rng.below(3.min(n as u64)) as usize;
+                let mut indices: Vec<usize> = Vec::new();
+                while indices.len() < k {
+                    let i = draw.rng.below(n as u64) as usize;
+                    if !indices.contains(&i) {
+                        indices.push(i);
+                    }
+                }
+                let dt = if roll == 9 {
+                    0.0
+                } else {
+                    draw.number(0.0, 3.0)
+                };
+                (indices, if now.is_finite() { now + dt } else { now })
+            }
+            _ => return,
+        };
+        if !t.is_finite() {
+            return;
+        }
+        let paths = indices
+            .iter()
+            .map(|&i| {
+                let here = if draw.rng.below(4) == 0 {
+                    None
+                } else {
+                    Some(s.path(i).position_at(t))
+                };
+                draw.path(t, here)
+            })
+            .collect();
+        s.update(&indices, paths).expect("a valid update");
+        assert_eq!(s.time(), t);
+    }
+}
+
+proptest! {
+    #![proptest_config(config(48, 0x5C4E_D01E))]
+
+    #[test]
+    fn the_calendar_is_brute_force_bit_for_bit_in_2d(
+        seed in any::<u64>(),
+        dyadic in any::<bool>(),
+        n in 0usize..24,
+        walls in any::<bool>(),
+        horizon in prop_oneof![Just(f64::INFINITY), 1.0f64..20.0],
+    ) {
+        let numbers = if dyadic { Numbers::Dyadic } else { Numbers::Full };
+        run::<2>(seed, numbers, n, walls, horizon, 60);
+    }
+
+    #[test]
+    fn the_calendar_is_brute_force_bit_for_bit_in_3d(
+        seed in any::<u64>(),
+        dyadic in any::<bool>(),
+        n in 0usize..16,
+        walls in any::<bool>(),
+    ) {
+        let numbers = if dyadic { Numbers::Dyadic } else { Numbers::Full };
+        run::<3>(seed, numbers, n, walls, f64::INFINITY, 40);
+    }
+}
+
+#[test]
+fn a_dense_frictionless_box_is_brute_force_over_a_thousand_events() {
+    // Many balls on a grid in a box, every path one segment: the simulation's case, with
+    // re-checks as the horizons are passed and walls all the time.
+    for seed in [1u64, 2, 3] {
+        let mut rng = Rng(seed);
+        let side = 8usize;
+        let n = side * side;
+        let r = 0.25 / side as f64;
+        let mut paths = Vec::new();
+        for k in 0..n {
+            let p = Vector2::new((k % side) as f64 + 0.5, (k / side) as f64 + 0.5) / side as f64;
+            let v = Vector2::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+            paths.push(Path::new(vec![Segment::new(0.0, p, v, Vector2::zeros())]).expect("valid"));
+        }
+        let walls = Walls::new([0.0, 0.0], [1.0, 1.0]).expect("a box");
+        let options = ScheduleOptions {
+            walls: Some(walls),
+            ..Default::default()
+        };
+        let mut s = CollisionSchedule::new(paths, &vec![r; n], options).expect("valid");
+        for _ in 0..1000 {
+            let event = check(&mut s).expect("balls in a box always meet something");
+            let t = event.time();
+            // Reflect: a wall flips the normal velocity, a collision swaps normal components.
+            let velocity = |s: &CollisionSchedule<2>, i: usize| s.path(i).velocity_at(t);
+            let position = |s: &CollisionSchedule<2>, i: usize| s.path(i).position_at(t);
+            let line = |p: Vector2<f64>, v: Vector2<f64>| {
+                Path::new(vec![Segment::new(t, p, v, Vector2::zeros())]).expect("valid")
+            };
+            match event {
+                Event::Wall(w) => {
+                    let mut v = velocity(&s, w.ball);
+                    v[w.axis] = match w.side {
+                        Side::Low => v[w.axis].abs(),
+                        Side::High => -v[w.axis].abs(),
+                    };
+                    let p = position(&s, w.ball);
+                    s.update(&[w.ball], vec![line(p, v)]).expect("valid");
+                }
+                Event::Collision(c) => {
+                    let (pi, pj) = (position(&s, c.i), position(&s, c.j));
+                    let (vi, vj) = (velocity(&s, c.i), velocity(&s, c.j));
+                    let n = (pi - pj).normalize();
+                    let dv = n * (vi - vj).dot(&n);
+                    s.update(&[c.i, c.j], vec![line(pi, vi - dv), line(pj, vj + dv)])
+                        .expect("valid");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn friction_balls_from_balls_are_their_paths_from_t() {
+    let mut rng = Rng(9);
+    let balls: Vec<Ball> = (0..30)
+        .map(|_| {
+            let p = Vector2::new(rng.uniform(0.0, 3.0), rng.uniform(0.0, 3.0));
+            let v = Vector2::new(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0));
+            Ball::new(p, v, rng.uniform(0.0, 0.5)).expect("valid")
+        })
+        .collect();
+    let radii = vec![0.1; balls.len()];
+    let mut s = CollisionSchedule::<2>::from_balls(&balls, &radii, 2.5, ScheduleOptions::default())
+        .expect("valid");
+    assert_eq!(s.time(), 2.5);
+    for (i, b) in balls.iter().enumerate() {
+        let path = b.path().expect("valid");
+        assert_eq!(s.path(i).position_at(2.5 + 1.0), path.position_at(1.0));
+    }
+    check(&mut s);
+    let moved = [Ball::at_rest(Vector2::new(1.5, 1.5)).expect("valid")];
+    s.update_balls(&[3], 3.0, &moved).expect("valid");
+    check(&mut s);
+    let err = s
+        .update_balls(&[3], 2.0, &moved)
+        .expect_err("before the current time");
+    assert_eq!(
+        err.to_string(),
+        "t: must not be before the calendar's time 3, got 2"
+    );
+}
+
+#[test]
+fn refused_updates_name_the_argument_and_the_index() {
+    let rest =
+        |t: f64, x: f64| Path::new(vec![Segment::at_rest(t, Vector2::new(x, 0.0))]).expect("valid");
+    let mut s = CollisionSchedule::new(
+        vec![rest(1.0, 0.0), rest(1.0, 2.0)],
+        &[0.5, 0.5],
+        ScheduleOptions::default(),
+    )
+    .expect("valid");
+    let message = |s: &mut CollisionSchedule<2>, indices: &[usize], paths| {
+        s.update(indices, paths).expect_err("refused").to_string()
+    };
+    assert_eq!(
+        message(&mut s, &[0], vec![rest(0.5, 0.0)]),
+        "start[0, 0]: must not be before the calendar's time 1, got 0.5"
+    );
+    assert_eq!(
+        message(&mut s, &[0, 2], vec![rest(1.0, 0.0), rest(1.0, 0.0)]),
+        "indices[1]: ball index must be in 0..2, got 2"
+    );
+    assert_eq!(
+        message(
+            &mut s,
+            &[1, 0, 1],
+            vec![rest(1.0, 0.0), rest(1.0, 0.0), rest(1.0, 0.0)]
+        ),
+        "indices[2]: ball 1 is given more than once"
+    );
+    assert_eq!(
+        message(&mut s, &[0, 1], vec![rest(2.0, 0.0), rest(3.0, 0.0)]),
+        "start[1, 0]: an update's paths must all start at one time, got 3 after 2"
+    );
+    let err = CollisionSchedule::new(vec![rest(0.0, 0.0)], &[0.0], ScheduleOptions::default())
+        .expect_err("radius");
+    assert_eq!(
+        err.to_string(),
+        "radius[0]: radius (sum of the two radii) must be > 0, got 0"
+    );
+}
+
+#[test]
+fn grazing_passes_at_the_edge_of_the_boxes_are_brute_force() {
+    // A ball passes one at rest (or stops just short of it, or beyond) at a distance within
+    // a few ulps of the contact distance: the pair search decides these to its rounding,
+    // and the boxes, only just overlapping or only just apart, must never prune a pair it
+    // reports.
+    let mut cases = 0;
+    let mut contacts = 0;
+    for r in [0.25f64, 0.3, 1.0 / 3.0] {
+        let reach: f64 = 2.0 * r;
+        for ulps in -6i64..=6 {
+            for scale in [1.0, 1e3, 1e6] {
+                let distance =
+                    f64::from_bits((reach.to_bits() as i64 + ulps * scale as i64) as u64);
+                for (v, mu) in [(1.0, 0.0), (1.0, 0.5), (0.7, 0.0), (2.0, 1.0)] {
+                    for y_first in [true, false] {
+                        let (pa, pb) = if y_first {
+                            (Vector2::new(0.0, 0.0), Vector2::new(1.0, distance))
+                        } else {
+                            (Vector2::new(0.0, 0.0), Vector2::new(1.0 + distance, 0.0))
+                        };
+                        let moving = Ball::new(pa, Vector2::new(v, 0.0), mu).expect("valid");
+                        let rest = Ball::at_rest(pb).expect("valid");
+                        // A third ball far away so that the grid has more than one cell.
+                        let far = Ball::at_rest(Vector2::new(50.0, 50.0)).expect("valid");
+                        let balls = [moving, rest, far];
+                        let options = ScheduleOptions::default();
+                        let mut s =
+                            CollisionSchedule::<2>::from_balls(&balls, &[r; 3], 0.0, options)
+                                .expect("valid");
+                        cases += 1;
+                        contacts += usize::from(brute_collision(&s).is_some());
+                        check(&mut s);
+                    }
+                }
+            }
+        }
+    }
+    // Both outcomes occur: the cases straddle the contact distance.
+    assert!(contacts > 0 && contacts < cases, "{contacts} of {cases}");
+}
+
+/// Kinetic energy and momentum of a state.
+fn energy_momentum(balls: &[Ball], masses: &[f64]) -> (f64, Vector2<f64>) {
+    let mut e = 0.0;
+    let mut p = Vector2::zeros();
+    for (b, &m) in balls.iter().zip(masses) {
+        e += 0.5 * m * b.velocity().norm_squared();
+        p += b.velocity() * m;
+    }
+    (e, p)
+}
+
+/// A random scene in the unit box: balls on a grid, normal-ish velocities.
+fn box_scene(seed: u64, side: usize, friction: f64) -> (Vec<Ball>, Vec<f64>, Walls<2>) {
+    let mut rng = Rng(seed);
+    let n = side * side;
+    let r = 0.25 / side as f64;
+    let balls = (0..n)
+        .map(|k| {
+            let p = Vector2::new((k % side) as f64 + 0.5, (k / side) as f64 + 0.5) / side as f64;
+            let v = Vector2::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+            Ball::new(p, v, friction * rng.uniform(0.5, 1.5)).expect("valid")
+        })
+        .collect();
+    let walls = Walls::new([0.0, 0.0], [1.0, 1.0]).expect("a box");
+    (balls, vec![r; n], walls)
+}
+
+#[test]
+fn elastic_frictionless_balls_keep_their_energy_and_never_overlap() {
+    use ballcollide::schedule::{SimulationOptions, simulate};
+    for seed in [1u64, 2] {
+        let (balls, radii, walls) = box_scene(seed, 6, 0.0);
+        let n = balls.len();
+        let masses: Vec<f64> = (0..n).map(|i| 1.0 + (i % 3) as f64).collect();
+        let options = SimulationOptions {
+            mass: masses.clone(),
+            max_events: Some(2000),
+            ..Default::default()
+        };
+        let run = simulate(&balls, &radii, walls, &options).expect("valid");
+        assert_eq!(run.events.len(), 2000);
+        let (e0, _) = energy_momentum(&balls, &masses);
+        let (e1, _) = energy_momentum(&run.balls, &masses);
+        assert!((e1 - e0).abs() <= 1e-12 * e0, "{e0} → {e1}");
+        // No overlap at the end beyond rounding, and every ball inside the box.
+        for i in 0..n {
+            let p = run.balls[i].position();
+            assert!(p.x >= radii[i] * (1.0 - 1e-9) && p.x <= 1.0 - radii[i] * (1.0 - 1e-9));
+            for j in i + 1..n {
+                let d = (p - run.balls[j].position()).norm();
+                assert!(d >= (radii[i] + radii[j]) * (1.0 - 1e-9), "{i} {j} {d}");
+            }
+        }
+    }
+}
+
+#[test]
+fn momentum_is_kept_at_collisions_and_energy_never_rises() {
+    // The state after k events against the state after k − 1: a collision keeps the total
+    // momentum of frictionless balls (their velocities are constant between events); with
+    // friction or restitution below 1 the energy never rises; no overlap at any event.
+    use ballcollide::schedule::{SimulationOptions, simulate};
+    for (friction, e) in [(0.0, 1.0), (0.0, 0.7), (0.4, 1.0), (0.4, 0.5)] {
+        let (balls, radii, walls) = box_scene(5, 4, friction);
+        let n = balls.len();
+        let masses: Vec<f64> = (0..n).map(|i| 0.5 + (i % 4) as f64).collect();
+        let mut previous: Option<(f64, Vector2<f64>)> = None;
+        let mut collisions = 0;
+        for k in 1..=60 {
+            let options = SimulationOptions {
+                mass: masses.clone(),
+                restitution: e,
+                max_events: Some(k),
+                ..Default::default()
+            };
+            let run = simulate(&balls, &radii, walls, &options).expect("valid");
+            if run.events.len() < k {
+                break; // everything has stopped
+            }
+            let (energy, momentum) = energy_momentum(&run.balls, &masses);
+            if let Some((e_before, p_before)) = previous {
+                assert!(
+                    energy <= e_before * (1.0 + 1e-12),
+                    "energy rose at event {k}"
+                );
+                if e == 1.0 && friction == 0.0 {
+                    assert!((energy - e_before).abs() <= 1e-12 * e_before);
+                }
+                if run.events[k - 1].j.is_some() && friction == 0.0 {
+                    collisions += 1;
+                    assert!((momentum - p_before).norm() <= 1e-12 * (1.0 + p_before.norm()));
+                }
+            }
+            for i in 0..n {
+                for j in i + 1..n {
+                    let d = (run.balls[i].position() - run.balls[j].position()).norm();
+                    assert!(
+                        d >= (radii[i] + radii[j]) * (1.0 - 1e-9),
+                        "overlap at event {k}"
+                    );
+                }
+            }
+            previous = Some((energy, momentum));
+        }
+        if friction == 0.0 {
+            assert!(collisions > 5);
+        }
+    }
+}
