@@ -200,7 +200,8 @@ fn describe(name: &str, set: &PathSet) {
         eprintln!(
             "{name}: stages (feature stage-counts): {} pairs; path bounds apart: {} ({:.1} %); \
              the {left} left: {} windows ({:.2} a pair), {} ({:.1} %) proven apart by the \
-             window box, {} ({:.1} %) searched; {} contacts",
+             window box, {} ({:.1} %) in closed form (straight), {} ({:.1} %) searched; {} \
+             contacts",
             stages.path_pairs,
             stages.bounds_apart,
             of(stages.bounds_apart, stages.path_pairs),
@@ -208,6 +209,8 @@ fn describe(name: &str, set: &PathSet) {
             stages.windows as f64 / left.max(1) as f64,
             stages.windows_box_apart,
             of(stages.windows_box_apart, stages.windows),
+            stages.windows_straight,
+            of(stages.windows_straight, stages.windows),
             stages.windows_searched,
             of(stages.windows_searched, stages.windows),
             stages.contacts,

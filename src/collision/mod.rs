@@ -13,7 +13,7 @@
 //! | **friction balls** | | | |
 //! | prefilter | `prefilter.rs` | the balls' straight runs to rest stay apart: never a contact | `collision_time`, scene, batch lanes |
 //! | crossing | `crossing.rs` | moving balls whose runs cross are never there at the same time | `collision_time`, scene, batch lanes |
-//! | straight | `straight.rs` | one ball at rest: the contact in closed form | `collision_time`, scene, batch lanes |
+//! | straight | `straight.rs` (`first_contact`, `contact`) | one ball at rest: the contact in closed form | `collision_time`, scene, batch lanes |
 //! | moving entry | `moving_entry.rs` | both moving, a plain crossing in the first window: the contact by fixed Newton steps | `collision_time`, scene, batch lanes |
 //! | after stop | `after_stop.rs` | after the first stop, the mover against a ball at rest: closed form | `collision_time`, scene, batch lanes |
 //! | **paths** | | | |
@@ -21,6 +21,7 @@
 //! | path contact | `path_contact.rs` | the window loop: windows between segment starts of either path, each formed from the two active segments in time since their own starts | `path_collision_time`, `path_collision_times` |
 //! | (counts) | `stage_counts.rs` | how many pairs and windows each path stage settles (cargo feature `stage-counts`) | the benchmarks |
 //! | window box | `window_box.rs` | the box the separation sweeps over one window keeps out of the contact distance | path windows; pieces of long windows |
+//! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |

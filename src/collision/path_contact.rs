@@ -13,6 +13,7 @@
 use super::length_unit::LengthUnit;
 use super::path_bounds::PathBounds;
 use super::stage_counts::{Stage, count};
+use super::straight::straight_window;
 use super::window_box::apart_on_window;
 use super::{
     CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_length, search_window,
@@ -180,8 +181,14 @@ fn first_screened_contact<const D: usize, const SCREENS: bool>(
             count(Stage::WindowBoxApart);
             previous_positive = Some(true);
         } else {
-            count(Stage::WindowSearched);
-            match search_window(&gap, end - start, before) {
+            // No relative acceleration: a straight line, in closed form where it is clear.
+            let straight = straight_window(&gap, end - start, before);
+            if straight.is_some() {
+                count(Stage::WindowStraight);
+            } else {
+                count(Stage::WindowSearched);
+            }
+            match straight.unwrap_or_else(|| search_window(&gap, end - start, before)) {
                 WindowSearch::Entry(s) => {
                     count(Stage::Contact);
                     let t = start + s;

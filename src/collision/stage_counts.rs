@@ -25,6 +25,8 @@ pub struct StageCounts {
     pub windows: u64,
     /// Windows that the separation box proves apart (`window_box`).
     pub windows_box_apart: u64,
+    /// Windows without relative acceleration answered in closed form (`straight`).
+    pub windows_straight: u64,
     /// Windows handed to the window search (`search_window`).
     pub windows_searched: u64,
     /// Contacts found (at the first time or in a window; one at or past the horizon, reported
@@ -39,12 +41,13 @@ pub(crate) enum Stage {
     BoundsApart,
     Window,
     WindowBoxApart,
+    WindowStraight,
     WindowSearched,
     Contact,
 }
 
 #[cfg(feature = "stage-counts")]
-static COUNTS: [AtomicU64; 6] = [const { AtomicU64::new(0) }; 6];
+static COUNTS: [AtomicU64; 7] = [const { AtomicU64::new(0) }; 7];
 
 /// Counts one event of `stage` (nothing without the feature).
 #[inline(always)]
@@ -78,14 +81,15 @@ pub(crate) fn count(stage: Stage) {
 /// ```
 pub fn take() -> StageCounts {
     #[cfg(feature = "stage-counts")]
-    let c: [u64; 6] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
+    let c: [u64; 7] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
     #[cfg(not(feature = "stage-counts"))]
-    let c = [0u64; 6];
+    let c = [0u64; 7];
     StageCounts {
         path_pairs: c[Stage::PathPair as usize],
         bounds_apart: c[Stage::BoundsApart as usize],
         windows: c[Stage::Window as usize],
         windows_box_apart: c[Stage::WindowBoxApart as usize],
+        windows_straight: c[Stage::WindowStraight as usize],
         windows_searched: c[Stage::WindowSearched as usize],
         contacts: c[Stage::Contact as usize],
     }

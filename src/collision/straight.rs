@@ -1,4 +1,6 @@
-//! One ball at rest, the other moving: a closed form.
+//! Relative motion along a straight line: closed forms. One friction ball at rest and the other
+//! moving ([`first_contact`], [`contact`]); and a window of two paths with no relative
+//! acceleration, the separation moving at constant velocity ([`straight_window`]).
 //!
 //! The mover runs along a straight line, so the separation is `d = Δ + v·σ`, with
 //! `σ(t) = t − t²/(2τ)` the time it would take at its initial speed to cover what it has
@@ -7,7 +9,13 @@
 //! before the stop; `t` follows from `σ` in a form without cancellation. This replaces two
 //! root searches (critical point and entry) by three square roots and one division.
 
+use super::entry::WindowSearch;
+use crate::coefficients::{Gap, gap_value_of};
 use crate::motion::Ball;
+
+/// How decisive the closed form of [`straight_window`] must be, relative to the magnitudes
+/// involved, before it answers instead of the search: far above its few roundings.
+const DECISIVE: f64 = 1.0 / ((1u64 << 30) as f64);
 
 /// The first contact when exactly one ball is at rest and the balls are apart at the start
 /// (`g0 = |Δ|² − r² > 0`, as computed by the general search); `None` when the closed form
@@ -79,6 +87,83 @@ pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], mu: f64, radius: f64, g0: f6
     (plain & settled, if hit { t } else { f64::INFINITY })
 }
 
+/// The first entry on a window of `length` (time since its start, `∞` allowed) where the
+/// relative acceleration is zero, so that the separation `d + v·s` runs along a straight line
+/// at constant speed and the gap is the quadratic `|v|²s² + 2(d·v)s + g₀`: its smaller root,
+/// `s = g₀ / (√D − d·v)` with `D = (r|v|)² − |d × v|²`, without cancellation. For balls apart
+/// at the start (and the gap positive just `before` it), where every decision is clear by far
+/// ([`DECISIVE`]); and for balls clearly receding on a window that lasts for ever, whatever the
+/// gap (no entry, nor re-entry), unless it starts negative after being positive. `None` leaves
+/// the window to the search (near grazing, a root near the window's end, touching at the
+/// start, magnitudes where squares could overflow or underflow).
+///
+/// For frictionless balls (a particle in a box, a disk on an air table) every window is one;
+/// rolling balls side by side with one acceleration too. Symmetric in A and B and in the axes,
+/// bit for bit (products of two negated numbers; sums over the axes in their order), and a
+/// 2-D motion embedded in 3-D with a zero third component gives the 2-D bits.
+#[inline]
+pub(crate) fn straight_window<const D: usize>(
+    gap: &Gap<D>,
+    length: f64,
+    before: bool,
+) -> Option<WindowSearch> {
+    // (A NaN length or value fails the comparisons: not straight, or not plain.)
+    if gap.acceleration.iter().any(|&a| a != 0.0) || length.is_nan() || length <= 0.0 {
+        return None;
+    }
+    let (d, v, radius) = (&gap.offset, &gap.velocity, gap.radius);
+    let speed2 = v.norm_squared();
+    let size2 = d.norm_squared() + radius * radius;
+    let plain =
+        (1e-100..=1e100).contains(&speed2) && (1e-50..=1e50).contains(&radius) && d.amax() <= 1e50;
+    if !plain {
+        return None;
+    }
+    let g0 = gap_value_of(d, radius);
+    let approach = d.dot(v);
+    let apart = WindowSearch::NoEntry {
+        ends_positive: true,
+    };
+    // Clearly receding on the last window (balls that have just collided, say): the gap only
+    // grows, so there is no entry, nor re-entry; unless it was positive just before and starts
+    // negative, an entry at the start, which the search reports.
+    let receding = approach > 0.0 && approach * approach > DECISIVE * DECISIVE * speed2 * size2;
+    if length == f64::INFINITY && receding && (!before || g0 > 0.0) {
+        return Some(apart);
+    }
+    let clearly_apart = g0 > DECISIVE * size2;
+    if !before || !clearly_apart {
+        return None;
+    }
+    // Receding, or passing clearly outside: the gap stays above its least value, positive.
+    let mut cross2 = 0.0;
+    for i in 0..D {
+        for j in i + 1..D {
+            let c = d[i] * v[j] - d[j] * v[i];
+            cross2 += c * c;
+        }
+    }
+    let reach2 = radius * radius * speed2;
+    let disc = (radius * radius).mul_add(speed2, -cross2);
+    let apart = WindowSearch::NoEntry {
+        ends_positive: true,
+    };
+    if approach >= 0.0 || disc < -DECISIVE * reach2 {
+        return Some(apart);
+    }
+    if disc <= DECISIVE * reach2 {
+        return None; // grazing: the search decides
+    }
+    let s = g0 / (disc.sqrt() - approach);
+    if s < length * (1.0 - DECISIVE) {
+        Some(WindowSearch::Entry(s))
+    } else if s > length * (1.0 + DECISIVE) {
+        Some(apart)
+    } else {
+        None
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -116,6 +201,70 @@ mod tests {
         assert_eq!(shot(1e-150), None);
         assert_eq!(shot(1e150), None);
         assert!(shot(1e-30).flatten().is_some());
+    }
+
+    fn straight(d: [f64; 2], v: [f64; 2], radius: f64, length: f64) -> Option<WindowSearch> {
+        let gap = Gap {
+            offset: Vector2::from(d),
+            velocity: Vector2::from(v),
+            acceleration: Vector2::zeros(),
+            radius,
+        };
+        straight_window(&gap, length, true)
+    }
+
+    #[test]
+    fn a_straight_window_is_solved_in_closed_form_when_it_is_clear() {
+        // Head on from 2 at 1 m/s, radius 0.5: contact at 1.5.
+        assert_eq!(
+            straight([2.0, 0.0], [-1.0, 0.0], 0.5, f64::INFINITY),
+            Some(WindowSearch::Entry(1.5))
+        );
+        // The same, the window ending before it, or just after: no entry, or left to the search.
+        let apart = Some(WindowSearch::NoEntry {
+            ends_positive: true,
+        });
+        assert_eq!(straight([2.0, 0.0], [-1.0, 0.0], 0.5, 1.0), apart);
+        assert_eq!(straight([2.0, 0.0], [-1.0, 0.0], 0.5, 1.5), None);
+        // Receding, and passing 0.6 wide: apart.
+        assert_eq!(straight([2.0, 0.0], [1.0, 0.0], 0.5, f64::INFINITY), apart);
+        assert_eq!(straight([2.0, 0.6], [-1.0, 0.0], 0.5, f64::INFINITY), apart);
+        // Grazing (passing 0.5 wide exactly), touching at the start, or accelerating: the search.
+        assert_eq!(straight([2.0, 0.5], [-1.0, 0.0], 0.5, f64::INFINITY), None);
+        assert_eq!(straight([0.5, 0.0], [-1.0, 0.0], 0.5, f64::INFINITY), None);
+        let accelerating = Gap {
+            offset: Vector2::new(2.0, 0.0),
+            velocity: Vector2::new(-1.0, 0.0),
+            acceleration: Vector2::new(0.1, 0.0),
+            radius: 0.5,
+        };
+        assert_eq!(straight_window(&accelerating, 1.0, true), None);
+    }
+
+    #[test]
+    fn balls_receding_for_ever_never_meet_again_even_from_touching() {
+        let gap = |d: [f64; 2], v: [f64; 2]| Gap {
+            offset: Vector2::from(d),
+            velocity: Vector2::from(v),
+            acceleration: Vector2::zeros(),
+            radius: 0.5,
+        };
+        let apart = Some(WindowSearch::NoEntry {
+            ends_positive: true,
+        });
+        // Just collided: touching (or overlapping by rounding) and moving apart.
+        let touching = gap([0.5, 0.0], [1.0, 0.2]);
+        assert_eq!(straight_window(&touching, f64::INFINITY, false), apart);
+        let overlapping = gap([0.49, 0.0], [1.0, 0.2]);
+        assert_eq!(straight_window(&overlapping, f64::INFINITY, false), apart);
+        // Overlapping right after being apart: an entry at the start, for the search.
+        assert_eq!(straight_window(&overlapping, f64::INFINITY, true), None);
+        // A finite window, or an overlap that is not clearly opening: the search.
+        assert_eq!(straight_window(&touching, 1.0, false), None);
+        assert_eq!(
+            straight_window(&gap([0.5, 0.0], [0.0, 1.0]), f64::INFINITY, false),
+            None
+        );
     }
 
     #[test]
