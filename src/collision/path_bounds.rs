@@ -9,7 +9,7 @@
 //! unit of length comes ([`length_unit`](super::length_unit)) for the pairs that go on.
 
 use super::length_unit::{LengthUnit, largest};
-use super::window_box::{MARGIN, UNDERFLOW};
+use super::window_box::{MARGIN, with_underflow};
 use crate::path::Segment;
 
 /// What the screens need of one valid path: the box its centre stays in from its first start
@@ -20,6 +20,8 @@ pub(crate) struct PathBounds<const D: usize> {
     lo: [f64; D],
     hi: [f64; D],
     size: f64,
+    /// What underflow can cost the box ([`with_underflow`]).
+    spread: f64,
     largest: f64,
 }
 
@@ -49,12 +51,13 @@ impl<const D: usize> PathBounds<D> {
     #[inline(always)]
     pub(crate) fn of(segments: &[Segment<D>]) -> Self {
         let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
-        let (mut size, mut most) = (0.0, [0.0; D]);
+        let (mut size, mut spread, mut most) = (0.0, 0.0, [0.0; D]);
         let Some((last, finite)) = segments.split_last() else {
             return Self {
                 lo,
                 hi,
                 size,
+                spread,
                 largest: 0.0,
             };
         };
@@ -72,14 +75,13 @@ impl<const D: usize> PathBounds<D> {
                 );
             }
             // The margin covers relative roundings, and what underflowing products can cost
-            // ([`UNDERFLOW`]: at most `2⁻¹⁰⁷⁴·(1 + L)²` here, where nothing is divided).
+            // ([`with_underflow`]: at most `2⁻¹⁰⁷⁴·(1 + L)²` per axis, nothing divided here).
             let reach = 1.0 + length;
+            spread += D as f64 * reach * reach;
             for i in 0..D {
                 let middle = p[i] + 0.5 * v[i] * length;
                 let end = p[i] + (v[i] + 0.5 * a[i] * length) * length;
-                size += p[i].abs()
-                    + (v[i].abs() + a[i].abs() * length) * length
-                    + UNDERFLOW * reach * reach;
+                size += p[i].abs() + (v[i].abs() + a[i].abs() * length) * length;
                 lo[i] = lesser(lo[i], lesser(lesser(p[i], middle), end));
                 hi[i] = greater(hi[i], greater(greater(p[i], middle), end));
             }
@@ -100,6 +102,7 @@ impl<const D: usize> PathBounds<D> {
             lo,
             hi,
             size,
+            spread,
             largest: most,
         }
     }
@@ -109,7 +112,10 @@ impl<const D: usize> PathBounds<D> {
     /// numbers (the comparison needs no unit); a radius sum that overflows proves nothing.
     #[inline]
     pub(crate) fn apart(&self, other: &Self, radius: f64) -> bool {
-        let reach = radius + MARGIN * (self.size + other.size + radius);
+        let reach = with_underflow(
+            radius + MARGIN * (self.size + other.size + radius),
+            self.spread + other.spread,
+        );
         (0..D).any(|i| (self.lo[i] - other.hi[i] > reach) | (other.lo[i] - self.hi[i] > reach))
     }
 

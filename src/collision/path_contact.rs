@@ -175,28 +175,31 @@ fn first_screened_contact<const D: usize, const SCREENS: bool>(
                 apart
             }
         };
-        // Most windows of balls on paths are proven apart by the box the separation sweeps.
         count(Stage::Window);
-        if SCREENS && apart_on_window(&gap, bounded_length(&gap, end - start)) {
+        let length = end - start;
+        // No relative acceleration: a straight line, in closed form where it is clear (before
+        // the box, which it makes unnecessary). Most other windows of balls on paths are
+        // proven apart by the box the separation sweeps; the rest are searched.
+        let answer = if let Some(straight) = straight_window(&gap, length, before) {
+            count(Stage::WindowStraight);
+            straight
+        } else if SCREENS && apart_on_window(&gap, bounded_length(&gap, length)) {
             count(Stage::WindowBoxApart);
-            previous_positive = Some(true);
-        } else {
-            // No relative acceleration: a straight line, in closed form where it is clear.
-            let straight = straight_window(&gap, end - start, before);
-            if straight.is_some() {
-                count(Stage::WindowStraight);
-            } else {
-                count(Stage::WindowSearched);
+            WindowSearch::NoEntry {
+                ends_positive: true,
             }
-            match straight.unwrap_or_else(|| search_window(&gap, end - start, before)) {
-                WindowSearch::Entry(s) => {
-                    count(Stage::Contact);
-                    let t = start + s;
-                    return (t < t_max).then_some(t);
-                }
-                WindowSearch::NoEntry { ends_positive } => {
-                    previous_positive = Some(ends_positive);
-                }
+        } else {
+            count(Stage::WindowSearched);
+            search_window(&gap, length, before)
+        };
+        match answer {
+            WindowSearch::Entry(s) => {
+                count(Stage::Contact);
+                let t = start + s;
+                return (t < t_max).then_some(t);
+            }
+            WindowSearch::NoEntry { ends_positive } => {
+                previous_positive = Some(ends_positive);
             }
         }
         if end == f64::INFINITY {

@@ -16,23 +16,55 @@ use crate::coefficients::Gap;
 /// roundings (`ε = 2⁻⁵³`) made in forming a box and in the search's own arithmetic.
 pub(crate) const MARGIN: f64 = 1.0 / ((1u64 << 40) as f64);
 
-/// The margin's absolute part, in units of the magnitudes that [`MARGIN`] multiplies: a
-/// quadratic's values over a span of length `L` computed in floats are off by more than
-/// relative roundings only where a product underflows, by at most `2⁻¹⁰⁷⁵` each, which the
-/// later products by `L` (and by the velocity, at the vertex) scale up: in all below
-/// `2⁻¹⁰⁷⁴·(1 + |v| + L)²`. Counting `UNDERFLOW·(1 + |v| + L)²` among the magnitudes puts
-/// `2⁻¹⁰³⁰·2⁻⁴⁰` of it in the margin, far above that.
-pub(crate) const UNDERFLOW: f64 = f64::from_bits(1 << 44); // 2⁻¹⁰³⁰, subnormal
+/// What underflow can cost a box: a quadratic's values over a span of length `L` computed in
+/// floats are off by more than relative roundings only where a product underflows, by at most
+/// `2⁻¹⁰⁷⁵` each, which the later products by `L` (and by the velocity, at the vertex) scale
+/// up: in all below `2⁻¹⁰⁷⁴·(1 + |v| + L)²`. The boxes sum `(1 + |v| + L)²` (the *spread*) and
+/// add `UNDERFLOW` times it to the margin, far above that cost; they do so only where it can
+/// count against the relative margin ([`with_underflow`]), since arithmetic on subnormal
+/// numbers is slow.
+pub(crate) const UNDERFLOW: f64 = f64::from_bits(1 << 4); // 2⁻¹⁰⁷⁰, subnormal
 
-/// Below this, a computed square may have lost more than relative roundings to underflow (a
-/// few `2⁻¹⁰⁷⁵`): comparisons of squares keep this much apart.
+/// `reach` grown by what underflow can cost boxes of the given spread (see [`UNDERFLOW`]):
+/// unchanged unless that cost could exceed a rounding of `reach` (`2⁻¹⁰⁰⁰ · spread` is
+/// normal, so the test itself costs no subnormal arithmetic).
+#[inline(always)]
+pub(crate) fn with_underflow(reach: f64, spread: f64) -> f64 {
+    const THRESHOLD: f64 = f64::from_bits((1023 - 1000) << 52); // 2⁻¹⁰⁰⁰
+    if reach < THRESHOLD * spread {
+        grown_by_underflow(reach, spread)
+    } else {
+        reach
+    }
+}
+
+/// `reach + UNDERFLOW · spread`, out of line, so that the compiler never computes it (on a
+/// subnormal constant, slow) where it is not needed.
+#[cold]
+#[inline(never)]
+fn grown_by_underflow(reach: f64, spread: f64) -> f64 {
+    reach + UNDERFLOW * spread
+}
+
+/// `near > far + SQUARE_SLACK`, out of line like [`grown_by_underflow`].
+#[cold]
+#[inline(never)]
+fn beyond_slack(near: f64, far: f64) -> bool {
+    near > far + SQUARE_SLACK
+}
+
+/// A computed square may have lost a few `2⁻¹⁰⁷⁵` to underflow: comparisons of squares below
+/// [`SQUARES_NORMAL`] keep this much apart.
 const SQUARE_SLACK: f64 = f64::from_bits(1 << 4); // 16·2⁻¹⁰⁷⁴
 
+/// Above this, squares are far above what underflow can cost them.
+const SQUARES_NORMAL: f64 = f64::from_bits((1023 - 1000) << 52); // 2⁻¹⁰⁰⁰
+
 /// The range `(lo, hi)` of `p + v·s + ½·a·s²` over `s ∈ [0, length]` (its values at the ends
-/// and at its vertex, if inside), and a bound on the magnitudes that form it and on what
-/// underflow can cost them (for the margin).
+/// and at its vertex, if inside), a bound on the magnitudes that form it (for the margin),
+/// and its spread (what underflow can cost it, [`UNDERFLOW`]).
 #[inline(always)]
-fn axis_range(p: f64, v: f64, a: f64, length: f64) -> (f64, f64, f64) {
+fn axis_range(p: f64, v: f64, a: f64, length: f64) -> (f64, f64, f64, f64) {
     let end = p + (v + 0.5 * a * length) * length;
     let (mut lo, mut hi) = (p.min(end), p.max(end));
     // The vertex, where the motion along the axis turns, if it comes inside the span.
@@ -43,19 +75,20 @@ fn axis_range(p: f64, v: f64, a: f64, length: f64) -> (f64, f64, f64) {
         hi = hi.max(vertex);
     }
     let magnitude = p.abs() + (v.abs() + a.abs() * length) * length;
-    let reach = 1.0 + v.abs() + length;
-    (lo, hi, magnitude + UNDERFLOW * reach * reach)
+    let spread = 1.0 + v.abs() + length;
+    (lo, hi, magnitude, spread * spread)
 }
 
 /// Whether `g > 0` is proven on `[0, length]` (time since the window's start) by the box the
 /// separation sweeps. `false` means "not proven".
-#[inline]
+#[inline(always)]
 pub(crate) fn apart_on_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool {
     let mut nearest2 = 0.0;
-    let mut size = gap.radius;
+    let (mut size, mut spread) = (gap.radius, 0.0);
     for i in 0..D {
         let (p, v, a) = (gap.offset[i], gap.velocity[i], gap.acceleration[i]);
-        let (lo, hi, magnitude) = axis_range(p, v, a, length);
+        let (lo, hi, magnitude, axis_spread) = axis_range(p, v, a, length);
+        spread += axis_spread;
         let nearest = if lo > 0.0 {
             lo
         } else if hi < 0.0 {
@@ -66,9 +99,15 @@ pub(crate) fn apart_on_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool
         nearest2 += nearest * nearest;
         size += magnitude;
     }
-    let reach = gap.radius + MARGIN * size;
-    // NaN (an overflowing window) fails the comparison: not proven.
-    nearest2 > reach * reach + SQUARE_SLACK
+    let reach = with_underflow(gap.radius + MARGIN * size, spread);
+    // The squares too may have lost a few `2⁻¹⁰⁷⁵` to underflow: kept that far apart where they
+    // are that small. NaN (an overflowing window) fails the comparisons: not proven.
+    let (near, far) = (nearest2, reach * reach);
+    if far > SQUARES_NORMAL {
+        near > far
+    } else {
+        near > far && beyond_slack(near, far)
+    }
 }
 
 #[cfg(test)]
@@ -106,8 +145,13 @@ mod tests {
 
     #[test]
     fn the_underflow_margins_are_the_powers_of_two_they_say() {
-        assert_eq!(UNDERFLOW, 2f64.powi(-1030));
+        assert_eq!(UNDERFLOW, 2f64.powi(-1070));
         assert_eq!(SQUARE_SLACK, 2f64.powi(-1070));
+        assert_eq!(SQUARES_NORMAL, 2f64.powi(-1000));
+        // The absolute part counts only where it can matter.
+        assert_eq!(with_underflow(1e-3, 4.0), 1e-3);
+        let tiny = 2f64.powi(-1060);
+        assert_eq!(with_underflow(tiny, 4.0), tiny + 4.0 * 2f64.powi(-1070));
     }
 
     #[test]
