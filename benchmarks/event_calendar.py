@@ -19,6 +19,10 @@ Scene (issue 18): ``N`` frictionless disks of equal mass in the unit box, on a g
   ``update_balls``, timed apart from the resolution in Python), against one
   ``bc.earliest_collision`` call on the state after each event (what a simulator without the
   calendar asks after every event; it knows no walls).
+- ``--pooltool`` (with ``--break``, run with ``.venv-pooltool/bin/python`` after
+  ``scripts/install-pooltool``): pooltool 0.6.0's own event loop, ``pooltool.simulate()`` on
+  three of its 8-ball breaks (16 balls; its own physics, so only the order of magnitude
+  compares), per event, in the same run.
 
 ``python benchmarks/event_calendar.py --billiards-python .venv-bench/bin/python --large
 --break`` prints one table; numbers are medians of the repeats, ratios in the same run.
@@ -201,12 +205,39 @@ def time_break(repeats: int, mu: float = 0.6) -> dict:
     }
 
 
+def time_pooltool_breaks(seeds: int, repeats: int) -> float:
+    """pooltool's own event loop per event (µs): ``pooltool.simulate()`` on its 8-ball breaks
+    (16 balls, the breaks of ``benchmarks/pooltool_dropin.py``), stock detector, the median
+    over ``repeats`` runs of each break, summed over the breaks and divided by their events.
+    Needs pooltool (the environment of ``scripts/install-pooltool``)."""
+    import pooltool as pt
+    from pooltool_dropin import break_shot
+
+    systems = [break_shot("eight", seed) for seed in range(seeds)]
+    pt.simulate(systems[0])  # numba's compile (or cache load) out of the timings
+    seconds, events = 0.0, 0
+    for system in systems:
+        runs = []
+        for _ in range(repeats):
+            start = time.perf_counter()
+            result = pt.simulate(system)
+            runs.append(time.perf_counter() - start)
+        seconds += float(np.median(runs))
+        events += len(result.events)
+    return seconds / events * 1e6
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--billiards-python", help="an interpreter that has billiards 0.5.0")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--large", action="store_true", help="bc.simulate at N = 1e3 … 1e6")
     parser.add_argument("--break", dest="pool", action="store_true", help="the 16-ball break")
+    parser.add_argument(
+        "--pooltool",
+        action="store_true",
+        help="with --break: pooltool's own event loop on its 8-ball breaks, per event",
+    )
     args = parser.parse_args()
 
     print("| N | events | bc.simulate µs/event | billiards µs/event | ratio | same first events |")
@@ -237,6 +268,14 @@ def main() -> None:
             f"Python {report['python_us']:.1f} µs more), earliest_collision "
             f"{report['earliest_us']:.1f} µs"
         )
+        if args.pooltool:
+            pooltool_us = time_pooltool_breaks(seeds=3, repeats=args.repeats)
+            ours_us = report["calls_us"] + report["python_us"]
+            print(
+                f"pooltool 0.6.0's own event loop on its 8-ball breaks (16 balls, its own "
+                f"physics): {pooltool_us:.0f} µs per event; the calendar driven from Python "
+                f"above, resolution included: {ours_us:.1f} µs ({pooltool_us / ours_us:.0f}×)"
+            )
     sys.stdout.flush()
 
 
