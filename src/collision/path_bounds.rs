@@ -69,10 +69,7 @@ impl<const D: usize> PathBounds<D> {
                 continue; // empty: never active, and no part of the unit either
             }
             for i in 0..D {
-                most[i] = greater(
-                    greater(most[i], p[i].abs()),
-                    greater(v[i].abs(), a[i].abs()),
-                );
+                most[i] = largest([most[i], p[i], v[i], a[i]]);
             }
             // The margin covers relative roundings, and what underflowing products can cost
             // ([`with_underflow`]: at most `2⁻¹⁰⁷⁴·(1 + L)²` per axis, nothing divided here).
@@ -89,7 +86,7 @@ impl<const D: usize> PathBounds<D> {
         // The last segment lasts for ever.
         for i in 0..D {
             let (p, v, a) = (last.position[i], last.velocity[i], last.acceleration[i]);
-            most[i] = greater(greater(most[i], p.abs()), greater(v.abs(), a.abs()));
+            most[i] = largest([most[i], p, v, a]);
             size += p.abs();
             let drift = if a != 0.0 { a } else { v };
             let down = drift < 0.0 || (a > 0.0 && v < 0.0);
@@ -97,7 +94,7 @@ impl<const D: usize> PathBounds<D> {
             lo[i] = lesser(lo[i], if down { f64::NEG_INFINITY } else { p });
             hi[i] = greater(hi[i], if up { f64::INFINITY } else { p });
         }
-        let most = most.iter().fold(0.0, |m: f64, &x| greater(m, x));
+        let most = largest(most);
         Self {
             lo,
             hi,

@@ -82,17 +82,7 @@ pub(crate) fn first_path_contact<const D: usize>(
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
-    first_contact_of::<D, true>(a, b, radii, t_max)
-}
-
-/// [`first_path_contact`], with or without the screens.
-fn first_contact_of<const D: usize, const SCREENS: bool>(
-    a: &[Segment<D>],
-    b: &[Segment<D>],
-    radii: [f64; 2],
-    t_max: f64,
-) -> Option<f64> {
-    first_screened_contact::<D, SCREENS>(
+    first_bounded_contact(
         (a, &PathBounds::of(a)),
         (b, &PathBounds::of(b)),
         radii,
@@ -112,9 +102,10 @@ pub fn path_collision_time_unscreened<const D: usize>(
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
     let (radius, t_max) = checked(radius, options)?;
-    Ok(first_contact_of::<D, false>(
-        a.segments(),
-        b.segments(),
+    let (a, b) = (a.segments(), b.segments());
+    Ok(first_screened_contact::<D, false>(
+        (a, &PathBounds::of(a)),
+        (b, &PathBounds::of(b)),
         [radius, 0.0],
         t_max,
     ))

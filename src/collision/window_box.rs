@@ -26,12 +26,11 @@ pub(crate) const MARGIN: f64 = 1.0 / ((1u64 << 40) as f64);
 pub(crate) const UNDERFLOW: f64 = f64::from_bits(1 << 4); // 2⁻¹⁰⁷⁰, subnormal
 
 /// `reach` grown by what underflow can cost boxes of the given spread (see [`UNDERFLOW`]):
-/// unchanged unless that cost could exceed a rounding of `reach` (`2⁻¹⁰⁰⁰ · spread` is
-/// normal, so the test itself costs no subnormal arithmetic).
+/// unchanged unless that cost could exceed a rounding of `reach` ([`NORMAL_FLOOR`]` · spread`
+/// is normal, so the test itself costs no subnormal arithmetic).
 #[inline(always)]
 pub(crate) fn with_underflow(reach: f64, spread: f64) -> f64 {
-    const THRESHOLD: f64 = f64::from_bits((1023 - 1000) << 52); // 2⁻¹⁰⁰⁰
-    if reach < THRESHOLD * spread {
+    if reach < NORMAL_FLOOR * spread {
         grown_by_underflow(reach, spread)
     } else {
         reach
@@ -54,11 +53,12 @@ fn beyond_slack(near: f64, far: f64) -> bool {
 }
 
 /// A computed square may have lost a few `2⁻¹⁰⁷⁵` to underflow: comparisons of squares below
-/// [`SQUARES_NORMAL`] keep this much apart.
+/// [`NORMAL_FLOOR`] keep this much apart.
 const SQUARE_SLACK: f64 = f64::from_bits(1 << 4); // 16·2⁻¹⁰⁷⁴
 
-/// Above this, squares are far above what underflow can cost them.
-const SQUARES_NORMAL: f64 = f64::from_bits((1023 - 1000) << 52); // 2⁻¹⁰⁰⁰
+/// `2⁻¹⁰⁰⁰`: numbers above it (a reach, a square) are far above what underflow can cost
+/// them, and products of it with the spreads stay normal.
+const NORMAL_FLOOR: f64 = f64::from_bits((1023 - 1000) << 52);
 
 /// The range `(lo, hi)` of `p + v·s + ½·a·s²` over `s ∈ [0, length]` (its values at the ends
 /// and at its vertex, if inside), a bound on the magnitudes that form it (for the margin),
@@ -103,7 +103,7 @@ pub(crate) fn apart_on_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool
     // The squares too may have lost a few `2⁻¹⁰⁷⁵` to underflow: kept that far apart where they
     // are that small. NaN (an overflowing window) fails the comparisons: not proven.
     let (near, far) = (nearest2, reach * reach);
-    if far > SQUARES_NORMAL {
+    if far > NORMAL_FLOOR {
         near > far
     } else {
         near > far && beyond_slack(near, far)
@@ -147,7 +147,7 @@ mod tests {
     fn the_underflow_margins_are_the_powers_of_two_they_say() {
         assert_eq!(UNDERFLOW, 2f64.powi(-1070));
         assert_eq!(SQUARE_SLACK, 2f64.powi(-1070));
-        assert_eq!(SQUARES_NORMAL, 2f64.powi(-1000));
+        assert_eq!(NORMAL_FLOOR, 2f64.powi(-1000));
         // The absolute part counts only where it can matter.
         assert_eq!(with_underflow(1e-3, 4.0), 1e-3);
         let tiny = 2f64.powi(-1060);
