@@ -237,9 +237,9 @@ fn shared_path<const D: usize>(
     if side.len() != 1 {
         return Ok(None);
     }
-    let mut segments = Vec::new();
-    read_path(side, 0, names, &mut segments).map_err(|e| e.in_pair(0))?;
-    Ok(Some(segments))
+    let mut buffer = Vec::new();
+    let segments = read_path(side, 0, names, &mut buffer).map_err(|e| e.in_pair(0))?;
+    Ok(Some(segments.to_vec()))
 }
 
 /// The argument names of [`path_positions_at`]'s rows in errors.
@@ -293,10 +293,7 @@ pub fn path_positions_at<const D: usize>(
             let i = offset + k;
             let segments = match &shared {
                 Some(path) => path.as_slice(),
-                None => {
-                    read_path(paths, i, &NAMES_ONE, &mut buffer).map_err(|e| e.in_pair(i))?;
-                    buffer.as_slice()
-                }
+                None => read_path(paths, i, &NAMES_ONE, &mut buffer).map_err(|e| e.in_pair(i))?,
             };
             let time = finite("t", t.get(i)).map_err(|e| e.at(i))?;
             let (segment, time) = locate(segments, time);
@@ -333,15 +330,15 @@ fn pair_time<const D: usize>(
     let a = match &shared[0] {
         Some((path, bounds)) => (path.as_slice(), *bounds),
         None => {
-            read_path(&pairs.a, i, &NAMES[0], buffer_a).map_err(|e| e.in_pair(i))?;
-            (buffer_a.as_slice(), PathBounds::of(buffer_a))
+            let path = read_path(&pairs.a, i, &NAMES[0], buffer_a).map_err(|e| e.in_pair(i))?;
+            (path, PathBounds::of(path))
         }
     };
     let b = match &shared[1] {
         Some((path, bounds)) => (path.as_slice(), *bounds),
         None => {
-            read_path(&pairs.b, i, &NAMES[1], buffer_b).map_err(|e| e.in_pair(i))?;
-            (buffer_b.as_slice(), PathBounds::of(buffer_b))
+            let path = read_path(&pairs.b, i, &NAMES[1], buffer_b).map_err(|e| e.in_pair(i))?;
+            (path, PathBounds::of(path))
         }
     };
     let radius = check_radius("radius", pairs.radius.get(i)).map_err(|e| e.at(i))?;
@@ -350,15 +347,17 @@ fn pair_time<const D: usize>(
     Ok(contact.unwrap_or(f64::INFINITY))
 }
 
-/// Path `i` of `side`, checked, into `segments` (its errors at the segment's index).
-fn read_path<const D: usize>(
+/// Path `i` of `side`, checked, read into `buffer` (reused from path to path); its segments
+/// (its errors at the segment's index).
+fn read_path<'b, const D: usize>(
     side: &PathRows<'_, D>,
     i: usize,
     names: &Names,
-    segments: &mut Vec<Segment<D>>,
-) -> Result<(), InputError> {
+    buffer: &'b mut Vec<Segment<D>>,
+) -> Result<&'b [Segment<D>], InputError> {
     let (start, values) = side.rows(i);
-    segments_from_rows(start, values, names, segments)
+    let used = segments_from_rows(start, values, names, buffer)?;
+    Ok(&buffer[..used])
 }
 
 /// Checks a side's shape: `segments ≥ 1`, every slice of `N·K` rows, `N` either 1 or `n`.
@@ -461,9 +460,10 @@ mod tests {
         // The single query's bits, pair by pair.
         for i in (0..n).step_by(7) {
             let path = |s: &PathRows<'_, 2>| {
-                let mut segments = Vec::new();
-                read_path(s, i, &NAMES[0], &mut segments).expect("valid");
-                segments
+                let mut buffer = Vec::new();
+                read_path(s, i, &NAMES[0], &mut buffer)
+                    .expect("valid")
+                    .to_vec()
             };
             let single = first_path_contact_of(&path(&pairs.a), &path(&pairs.b), 0.3);
             assert_eq!(single.to_bits(), portable[i].to_bits(), "pair {i}");

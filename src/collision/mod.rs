@@ -441,10 +441,18 @@ fn search_piece<const D: usize>(
 
 /// The length of a window to search: `length` itself if finite (up to [`LONGEST_WINDOW`]);
 /// for an unbounded one, up to twice the closest approach.
+#[inline(always)]
 fn bounded_length<const D: usize>(gap: &Gap<D>, length: f64) -> f64 {
-    let length = if length.is_finite() {
-        length
-    } else if gap.acceleration != SVector::<f64, D>::zeros() {
+    if length.is_finite() {
+        length.min(LONGEST_WINDOW)
+    } else {
+        unbounded_length(gap)
+    }
+}
+
+/// [`bounded_length`] of a window that lasts for ever.
+fn unbounded_length<const D: usize>(gap: &Gap<D>) -> f64 {
+    let length = if gap.acceleration != SVector::<f64, D>::zeros() {
         // Accelerating for ever (balls on general paths): |d(s)| ≥ ½|a|s² − |v|s − |d(0)|,
         // above the radius beyond the larger root of that quadratic; a margin of 2⁻²⁰ covers
         // the rounding of the bound (the window's end needs no precision).

@@ -67,9 +67,11 @@ const NORMAL_FLOOR: f64 = f64::from_bits((1023 - 1000) << 52);
 fn axis_range(p: f64, v: f64, a: f64, length: f64) -> (f64, f64, f64, f64) {
     let end = p + (v + 0.5 * a * length) * length;
     let (mut lo, mut hi) = (p.min(end), p.max(end));
-    // The vertex, where the motion along the axis turns, if it comes inside the span.
-    let turn = -v / a;
-    if turn > 0.0 && turn < length {
+    // The vertex, where the motion along the axis turns, if it comes inside the span: only
+    // where the motion slows down (`v` and `a` of opposite signs) is `−v/a` positive, and
+    // worth a division.
+    let slowing = (v < 0.0 && a > 0.0) || (v > 0.0 && a < 0.0);
+    if slowing && -v / a < length {
         let vertex = p - 0.5 * v * (v / a);
         lo = lo.min(vertex);
         hi = hi.max(vertex);

@@ -3,6 +3,7 @@
 use super::piecewise::{Names, check_order, check_segments};
 use super::{Path, Segment};
 use crate::error::{InputError, InputErrorKind};
+use nalgebra::SVector;
 
 impl<const D: usize> Path<D> {
     /// The path whose segment `k` is row `k` of `start`, `pos`, `vel` and `acc`: the layout of
@@ -62,33 +63,40 @@ impl<const D: usize> Path<D> {
             }
         }
         let mut segments = Vec::new();
-        segments_from_rows([start], [pos, vel, acc], &NAMES, &mut segments)?;
+        let used = segments_from_rows([start], [pos, vel, acc], &NAMES, &mut segments)?;
+        segments.truncate(used);
         Ok(Self { segments })
     }
 }
 
-/// The used segments of one path's rows (of equal lengths), checked, into `segments` (cleared
-/// first; a batch reuses one buffer for all its paths); errors use `names` and the row.
+/// The used segments of one path's rows (of equal lengths), checked, into the first slots of
+/// `buffer`; returns how many there are. A batch reuses one buffer for all its paths: it only
+/// grows, and is written in place, field by field (a `Segment` built whole and pushed is
+/// staged on the stack and read back wider than it was written, which stalls the store
+/// forwarding of every row). Errors use `names` and the row.
 #[inline(always)]
 pub(crate) fn segments_from_rows<const D: usize>(
     [start]: [&[f64]; 1],
     [pos, vel, acc]: [&[[f64; D]]; 3],
     names: &Names,
-    segments: &mut Vec<Segment<D>>,
-) -> Result<(), InputError> {
-    segments.clear();
+    buffer: &mut Vec<Segment<D>>,
+) -> Result<usize, InputError> {
     // The common case in one pass: starts in order, then padding (+∞) only, every used value
     // finite (`0·x` is ±0 for finite `x`, NaN otherwise). Anything else is checked
     // again below, slowly, to name the first offending value.
     let mut previous = f64::NEG_INFINITY;
     let mut plain = true;
-    segments.reserve(start.len());
     let n = start.len().min(pos.len()).min(vel.len()).min(acc.len());
     let (starts, pos, vel, acc) = (&start[..n], &pos[..n], &vel[..n], &acc[..n]);
-    for k in 0..n {
+    if buffer.len() < n {
+        buffer.resize(n, Segment::at_rest(0.0, SVector::zeros()));
+    }
+    let mut used = n;
+    for (k, segment) in buffer[..n].iter_mut().enumerate() {
         let s = starts[k];
         if s == f64::INFINITY {
             plain &= starts[k..].iter().all(|&x| x == f64::INFINITY);
+            used = k;
             break;
         }
         let mut zero = 0.0 * s;
@@ -97,17 +105,21 @@ pub(crate) fn segments_from_rows<const D: usize>(
         }
         plain &= (s >= previous) & (zero == 0.0);
         previous = s;
-        segments.push(Segment::new(s, pos[k].into(), vel[k].into(), acc[k].into()));
+        segment.start = s;
+        segment.position = pos[k].into();
+        segment.velocity = vel[k].into();
+        segment.acceleration = acc[k].into();
     }
-    if plain && !segments.is_empty() {
-        return Ok(());
+    if plain && used > 0 {
+        return Ok(used);
     }
     let used = used_rows(start).map_err(|e| e.renamed(names.start))?;
-    segments.clear();
-    segments.extend(
+    buffer.clear();
+    buffer.extend(
         (0..used).map(|k| Segment::new(start[k], pos[k].into(), vel[k].into(), acc[k].into())),
     );
-    check_segments(segments, names)
+    check_segments(buffer, names)?;
+    Ok(used)
 }
 
 /// The number of used rows: all but the trailing ones whose start is `+∞`.
