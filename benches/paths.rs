@@ -199,14 +199,16 @@ fn describe(name: &str, set: &PathSet) {
         let left = stages.path_pairs - stages.bounds_apart;
         eprintln!(
             "{name}: stages (feature stage-counts): {} pairs; path bounds apart: {} ({:.1} %); \
-             the {left} left: {} windows ({:.2} a pair), {} ({:.1} %) proven apart by the \
-             window box, {} ({:.1} %) in closed form (straight), {} ({:.1} %) searched; {} \
-             contacts",
+             the {left} left: {} windows ({:.2} a pair), {} ({:.1} %) proven apart by their \
+             segments' boxes, {} ({:.1} %) by the window box, {} ({:.1} %) in closed form \
+             (straight), {} ({:.1} %) searched; {} contacts",
             stages.path_pairs,
             stages.bounds_apart,
             of(stages.bounds_apart, stages.path_pairs),
             stages.windows,
             stages.windows as f64 / left.max(1) as f64,
+            stages.windows_segments_apart,
+            of(stages.windows_segments_apart, stages.windows),
             stages.windows_box_apart,
             of(stages.windows_box_apart, stages.windows),
             stages.windows_straight,

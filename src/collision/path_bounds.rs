@@ -1,26 +1,74 @@
 //! The whole-path screen: the box a ball's centre stays in along its whole path, and the
 //! proof that two such boxes keep the balls apart ([`PathBounds::apart`]), whatever their
-//! timing.
+//! timing; and the same for the boxes of single segments, on the windows where both are active
+//! ([`PathBounds::segments_apart`]).
 //!
 //! A path's bounds are a property of the path alone, so a batch computes them once per path
 //! (once for a path broadcast against many) and every pair of paths compares two of them:
 //! a few comparisons that settle about half the pairs of balls on a pool table before any
-//! window is formed. The same pass notes the path's largest magnitude, from which the pair's
-//! unit of length comes ([`length_unit`](super::length_unit)) for the pairs that go on.
+//! window is formed, and, of the pairs left, most windows (a slide against the other ball's
+//! rest, say) before their motion is formed. The same pass notes the path's largest magnitude,
+//! from which the pair's unit of length comes ([`length_unit`](super::length_unit)) for the
+//! pairs that go on.
 
 use super::length_unit::{LengthUnit, largest};
 use super::window_box::{MARGIN, with_underflow};
 use crate::path::Segment;
 
-/// What the screens need of one valid path: the box its centre stays in from its first start
-/// on, a bound on the magnitudes that formed the box (for the margin), and the largest
-/// magnitude of any of its segments' components (for the pair's unit of length).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct PathBounds<const D: usize> {
+/// How many segments, from a path's first, keep a box of their own ([`PathBounds::segment`]):
+/// enough for a pool ball's slide, roll and rest, and for the seed's friction ball; later
+/// segments share the box of the whole path, which is still a bound, if a loose one.
+pub(crate) const SEGMENT_BOXES: usize = 4;
+
+/// An axis-aligned box: the least and greatest value on each axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct AxisBox<const D: usize> {
     lo: [f64; D],
     hi: [f64; D],
+}
+
+impl<const D: usize> AxisBox<D> {
+    /// The box that contains nothing (the start of a union).
+    const EMPTY: Self = Self {
+        lo: [f64::INFINITY; D],
+        hi: [f64::NEG_INFINITY; D],
+    };
+
+    /// The box that contains everything (what a segment that is never active keeps: it proves
+    /// nothing).
+    const EVERYWHERE: Self = Self {
+        lo: [f64::NEG_INFINITY; D],
+        hi: [f64::INFINITY; D],
+    };
+
+    /// The smallest box holding both.
+    #[inline(always)]
+    fn union(self, other: Self) -> Self {
+        let mut out = self;
+        for i in 0..D {
+            out.lo[i] = lesser(self.lo[i], other.lo[i]);
+            out.hi[i] = greater(self.hi[i], other.hi[i]);
+        }
+        out
+    }
+
+    /// Whether the boxes are more than `reach` apart on some axis.
+    #[inline(always)]
+    fn apart(&self, other: &Self, reach: f64) -> bool {
+        (0..D).any(|i| (self.lo[i] - other.hi[i] > reach) | (other.lo[i] - self.hi[i] > reach))
+    }
+}
+
+/// What the screens need of one valid path: the box its centre stays in from its first start
+/// on, and the box of each of its first [`SEGMENT_BOXES`] segments; a bound on the magnitudes
+/// that formed the boxes (for the margin), and the largest magnitude of any of its segments'
+/// components (for the pair's unit of length).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PathBounds<const D: usize> {
+    whole: AxisBox<D>,
+    segments: [AxisBox<D>; SEGMENT_BOXES],
     size: f64,
-    /// What underflow can cost the box ([`with_underflow`]).
+    /// What underflow can cost the boxes ([`with_underflow`]).
     spread: f64,
     largest: f64,
 }
@@ -39,6 +87,11 @@ fn greater(x: f64, y: f64) -> f64 {
     if x > y { x } else { y }
 }
 
+/// The distance beyond which two balls are proven apart: the contact distance `radius` and
+/// the margin for the roundings made in forming boxes of the given sizes and spreads.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Reach(f64);
+
 impl<const D: usize> PathBounds<D> {
     /// The bounds of a valid path (checked segments, [`Path::segments`](crate::Path::segments)).
     ///
@@ -50,17 +103,18 @@ impl<const D: usize> PathBounds<D> {
     /// acceleration, or else its velocity).
     #[inline(always)]
     pub(crate) fn of(segments: &[Segment<D>]) -> Self {
-        let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
+        let mut boxes = [AxisBox::EVERYWHERE; SEGMENT_BOXES];
         let (mut size, mut spread, mut most) = (0.0, 0.0, [0.0; D]);
         let Some((last, finite)) = segments.split_last() else {
             return Self {
-                lo,
-                hi,
+                whole: AxisBox::EMPTY,
+                segments: boxes,
                 size,
                 spread,
                 largest: 0.0,
             };
         };
+        let mut whole = AxisBox::EMPTY;
         for (k, s) in finite.iter().enumerate() {
             let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
             // `finite` is all but the last segment: segment `k + 1` is the next one.
@@ -75,45 +129,71 @@ impl<const D: usize> PathBounds<D> {
             // ([`with_underflow`]: at most `2⁻¹⁰⁷⁴·(1 + L)²` per axis, nothing divided here).
             let reach = 1.0 + length;
             spread += D as f64 * reach * reach;
+            let mut hull = AxisBox::EMPTY;
             for i in 0..D {
                 let middle = p[i] + 0.5 * v[i] * length;
                 let end = p[i] + (v[i] + 0.5 * a[i] * length) * length;
                 size += p[i].abs() + (v[i].abs() + a[i].abs() * length) * length;
-                lo[i] = lesser(lo[i], lesser(lesser(p[i], middle), end));
-                hi[i] = greater(hi[i], greater(greater(p[i], middle), end));
+                hull.lo[i] = lesser(lesser(p[i], middle), end);
+                hull.hi[i] = greater(greater(p[i], middle), end);
             }
+            if let Some(slot) = boxes.get_mut(k) {
+                *slot = hull;
+            }
+            whole = whole.union(hull);
         }
         // The last segment lasts for ever.
-        for i in 0..D {
+        let mut drift = AxisBox::EMPTY;
+        for (i, most) in most.iter_mut().enumerate() {
             let (p, v, a) = (last.position[i], last.velocity[i], last.acceleration[i]);
-            most[i] = largest([most[i], p, v, a]);
+            *most = largest([*most, p, v, a]);
             size += p.abs();
-            let drift = if a != 0.0 { a } else { v };
-            let down = drift < 0.0 || (a > 0.0 && v < 0.0);
-            let up = drift > 0.0 || (a < 0.0 && v > 0.0);
-            lo[i] = lesser(lo[i], if down { f64::NEG_INFINITY } else { p });
-            hi[i] = greater(hi[i], if up { f64::INFINITY } else { p });
+            let towards = if a != 0.0 { a } else { v };
+            let down = towards < 0.0 || (a > 0.0 && v < 0.0);
+            let up = towards > 0.0 || (a < 0.0 && v > 0.0);
+            drift.lo[i] = if down { f64::NEG_INFINITY } else { p };
+            drift.hi[i] = if up { f64::INFINITY } else { p };
         }
-        let most = largest(most);
+        if let Some(slot) = boxes.get_mut(finite.len()) {
+            *slot = drift;
+        }
+        whole = whole.union(drift);
         Self {
-            lo,
-            hi,
+            whole,
+            segments: boxes,
             size,
             spread,
-            largest: most,
+            largest: largest(most),
         }
     }
 
-    /// Whether balls on the two paths provably never come within `radius` of each other: the
-    /// boxes, grown by the radius and the margin, are disjoint on some axis. On the caller's
-    /// numbers (the comparison needs no unit); a radius sum that overflows proves nothing.
-    #[inline]
-    pub(crate) fn apart(&self, other: &Self, radius: f64) -> bool {
-        let reach = with_underflow(
+    /// The distance beyond which boxes of these two paths prove balls `radius` apart:
+    /// `radius` grown by the margin. On the caller's numbers (the comparisons need no unit);
+    /// a radius sum that overflows proves nothing.
+    #[inline(always)]
+    pub(crate) fn reach(&self, other: &Self, radius: f64) -> Reach {
+        Reach(with_underflow(
             radius + MARGIN * (self.size + other.size + radius),
             self.spread + other.spread,
-        );
-        (0..D).any(|i| (self.lo[i] - other.hi[i] > reach) | (other.lo[i] - self.hi[i] > reach))
+        ))
+    }
+
+    /// Whether balls on the two paths provably never come within the reach of each other: the
+    /// boxes of the whole paths, grown by it, are disjoint on some axis.
+    #[inline(always)]
+    pub(crate) fn apart(&self, other: &Self, reach: Reach) -> bool {
+        self.whole.apart(&other.whole, reach.0)
+    }
+
+    /// Whether balls on segment `i` of this path and segment `j` of the other's provably keep
+    /// out of the reach of each other while both are on them (a window of the pair): their
+    /// boxes (the whole path's, for a segment past the first [`SEGMENT_BOXES`]), grown by it,
+    /// are disjoint on some axis.
+    #[inline(always)]
+    pub(crate) fn segments_apart(&self, i: usize, other: &Self, j: usize, reach: Reach) -> bool {
+        let a = self.segments.get(i).unwrap_or(&self.whole);
+        let b = other.segments.get(j).unwrap_or(&other.whole);
+        a.apart(b, reach.0)
     }
 
     /// The unit of length of a pair of paths with these bounds and contact `radii`: from the
@@ -130,7 +210,8 @@ mod tests {
     use nalgebra::Vector2 as V;
 
     fn apart(a: &[Segment<2>], b: &[Segment<2>], radius: f64) -> bool {
-        PathBounds::of(a).apart(&PathBounds::of(b), radius)
+        let (a, b) = (PathBounds::of(a), PathBounds::of(b));
+        a.apart(&b, a.reach(&b, radius))
     }
 
     #[test]
@@ -165,6 +246,26 @@ mod tests {
     }
 
     #[test]
+    fn segment_boxes_see_which_segments_meet_in_time() {
+        // A rests at x = 0 and then at x = 10, B the other way round: the whole boxes overlap,
+        // the boxes of the segments active together do not.
+        let rest = |start: f64, x: f64| Segment::at_rest(start, V::new(x, 0.0));
+        let a = PathBounds::of(&[rest(0.0, 0.0), rest(1.0, 10.0)]);
+        let b = PathBounds::of(&[rest(0.0, 10.0), rest(1.0, 0.0)]);
+        let reach = a.reach(&b, 1.0);
+        assert!(!a.apart(&b, reach));
+        assert!(a.segments_apart(0, &b, 0, reach) && a.segments_apart(1, &b, 1, reach));
+        assert!(!a.segments_apart(0, &b, 1, reach) && !a.segments_apart(1, &b, 0, reach));
+        // Past the first SEGMENT_BOXES segments, the whole path's box stands in.
+        let many: Vec<_> = (0..6)
+            .map(|k| rest(k as f64, 10.0 * (k % 2) as f64))
+            .collect();
+        let many = PathBounds::of(&many);
+        assert!(many.segments_apart(0, &b, 0, reach)); // x = 0 against x = 10
+        assert!(!many.segments_apart(SEGMENT_BOXES, &b, 0, reach)); // [0, 10] against 10
+    }
+
+    #[test]
     fn empty_segments_are_skipped_even_for_the_unit() {
         let a = [
             Segment::new(0.0, V::new(0.0, 0.0), V::zeros(), V::zeros()),
@@ -172,7 +273,13 @@ mod tests {
             Segment::at_rest(1.0, V::new(0.0, 0.0)),
         ];
         let bounds = PathBounds::of(&a);
-        assert_eq!((bounds.lo, bounds.hi), ([0.0, 0.0], [0.0, 0.0]));
+        assert_eq!(
+            bounds.whole,
+            AxisBox {
+                lo: [0.0; 2],
+                hi: [0.0; 2]
+            }
+        );
         assert_eq!(bounds.largest, 0.0); // never active: no part of the unit
     }
 

@@ -134,7 +134,8 @@ fn first_screened_contact<const D: usize, const SCREENS: bool>(
     // Paths whose boxes keep apart need no window: a proof (its margin far above the
     // search's rounding), so its answer is the search's, in any unit.
     count(Stage::PathPair);
-    if SCREENS && bounds_a.apart(bounds_b, radii[0] + radii[1]) {
+    let reach = bounds_a.reach(bounds_b, radii[0] + radii[1]);
+    if SCREENS && bounds_a.apart(bounds_b, reach) {
         count(Stage::BoundsApart);
         return None;
     }
@@ -144,7 +145,6 @@ fn first_screened_contact<const D: usize, const SCREENS: bool>(
     // order of its operands, and the answer must not depend on which path is A.
     let mut start = a.first()?.start.max(b.first()?.start) + 0.0;
     let (mut i, mut j) = (active(a, 0, start), active(b, 0, start));
-    let (mut seg_a, mut seg_b) = (scaled(&a[i], unit), scaled(&b[j], unit));
     let mut previous_positive = None;
     loop {
         if start >= t_max {
@@ -152,45 +152,53 @@ fn first_screened_contact<const D: usize, const SCREENS: bool>(
         }
         let (end_a, end_b) = (end_of(a, i), end_of(b, j));
         let end = end_a.min(end_b);
-        let gap = window_gap(&seg_a, &seg_b, start, radius);
-        let before = match previous_positive {
-            Some(positive) => positive,
-            None => {
-                // At the first time: touching or overlapping balls collide only if they
-                // approach; otherwise only a later re-entry counts.
-                let apart = apart_at_start(&gap);
-                if !apart && approaching(&gap) {
-                    count(Stage::Contact);
-                    return Some(start);
-                }
-                apart
-            }
-        };
         count(Stage::Window);
-        let length = end - start;
-        // No relative acceleration: a straight line, in closed form where it is clear (before
-        // the box, which it makes unnecessary). Most other windows of balls on paths are
-        // proven apart by the box the separation sweeps; the rest are searched.
-        let answer = if let Some(straight) = straight_window(&gap, length, before) {
-            count(Stage::WindowStraight);
-            straight
-        } else if SCREENS && apart_on_window(&gap, bounded_length(&gap, length)) {
-            count(Stage::WindowBoxApart);
-            WindowSearch::NoEntry {
-                ends_positive: true,
-            }
+        // The boxes of the two segments, from the path bounds, settle most windows of balls
+        // on general paths before any motion is formed (a proof like the path bounds', so the
+        // same answer as the search's).
+        if SCREENS && bounds_a.segments_apart(i, bounds_b, j, reach) {
+            count(Stage::WindowSegmentsApart);
+            previous_positive = Some(true);
         } else {
-            count(Stage::WindowSearched);
-            search_window(&gap, length, before)
-        };
-        match answer {
-            WindowSearch::Entry(s) => {
-                count(Stage::Contact);
-                let t = start + s;
-                return (t < t_max).then_some(t);
-            }
-            WindowSearch::NoEntry { ends_positive } => {
-                previous_positive = Some(ends_positive);
+            let gap = window_gap(&scaled(&a[i], unit), &scaled(&b[j], unit), start, radius);
+            let before = match previous_positive {
+                Some(positive) => positive,
+                None => {
+                    // At the first time: touching or overlapping balls collide only if they
+                    // approach; otherwise only a later re-entry counts.
+                    let apart = apart_at_start(&gap);
+                    if !apart && approaching(&gap) {
+                        count(Stage::Contact);
+                        return Some(start);
+                    }
+                    apart
+                }
+            };
+            let length = end - start;
+            // No relative acceleration: a straight line, in closed form where it is clear (before
+            // the box, which it makes unnecessary). Most other windows of balls on paths are
+            // proven apart by the box the separation sweeps; the rest are searched.
+            let answer = if let Some(straight) = straight_window(&gap, length, before) {
+                count(Stage::WindowStraight);
+                straight
+            } else if SCREENS && apart_on_window(&gap, bounded_length(&gap, length)) {
+                count(Stage::WindowBoxApart);
+                WindowSearch::NoEntry {
+                    ends_positive: true,
+                }
+            } else {
+                count(Stage::WindowSearched);
+                search_window(&gap, length, before)
+            };
+            match answer {
+                WindowSearch::Entry(s) => {
+                    count(Stage::Contact);
+                    let t = start + s;
+                    return (t < t_max).then_some(t);
+                }
+                WindowSearch::NoEntry { ends_positive } => {
+                    previous_positive = Some(ends_positive);
+                }
             }
         }
         if end == f64::INFINITY {
@@ -199,11 +207,9 @@ fn first_screened_contact<const D: usize, const SCREENS: bool>(
         start = end;
         if end_a == end {
             i = active(a, i, end);
-            seg_a = scaled(&a[i], unit);
         }
         if end_b == end {
             j = active(b, j, end);
-            seg_b = scaled(&b[j], unit);
         }
     }
 }

@@ -23,6 +23,8 @@ pub struct StageCounts {
     pub bounds_apart: u64,
     /// Windows formed for the pairs left (`path_contact`).
     pub windows: u64,
+    /// Windows whose two segments' boxes (`path_bounds`) are apart: no motion formed.
+    pub windows_segments_apart: u64,
     /// Windows that the separation box proves apart (`window_box`).
     pub windows_box_apart: u64,
     /// Windows without relative acceleration answered in closed form (`straight`).
@@ -40,6 +42,7 @@ pub(crate) enum Stage {
     PathPair,
     BoundsApart,
     Window,
+    WindowSegmentsApart,
     WindowBoxApart,
     WindowStraight,
     WindowSearched,
@@ -47,7 +50,7 @@ pub(crate) enum Stage {
 }
 
 #[cfg(feature = "stage-counts")]
-static COUNTS: [AtomicU64; 7] = [const { AtomicU64::new(0) }; 7];
+static COUNTS: [AtomicU64; 8] = [const { AtomicU64::new(0) }; 8];
 
 /// Counts one event of `stage` (nothing without the feature).
 #[inline(always)]
@@ -81,13 +84,14 @@ pub(crate) fn count(stage: Stage) {
 /// ```
 pub fn take() -> StageCounts {
     #[cfg(feature = "stage-counts")]
-    let c: [u64; 7] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
+    let c: [u64; 8] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
     #[cfg(not(feature = "stage-counts"))]
-    let c = [0u64; 7];
+    let c = [0u64; 8];
     StageCounts {
         path_pairs: c[Stage::PathPair as usize],
         bounds_apart: c[Stage::BoundsApart as usize],
         windows: c[Stage::Window as usize],
+        windows_segments_apart: c[Stage::WindowSegmentsApart as usize],
         windows_box_apart: c[Stage::WindowBoxApart as usize],
         windows_straight: c[Stage::WindowStraight as usize],
         windows_searched: c[Stage::WindowSearched as usize],
