@@ -191,7 +191,7 @@ fn path_chunk_portable<const D: usize>(
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
-    let mut buffers = (Vec::new(), Vec::new());
+    let mut buffers = [PathBuffer::new(), PathBuffer::new()];
     for (k, slot) in chunk.iter_mut().enumerate() {
         *slot = pair_time(pairs, offset + k, shared, &mut buffers)?;
     }
@@ -318,6 +318,35 @@ pub(crate) fn check_path_positions<const D: usize>(
     shared_path(paths, &NAMES_ONE)
 }
 
+/// One side's path of the pair at hand and its bounds, read from the rows: one per side and
+/// thread, overwritten in place from pair to pair.
+struct PathBuffer<const D: usize> {
+    segments: Vec<Segment<D>>,
+    bounds: PathBounds<D>,
+}
+
+impl<const D: usize> PathBuffer<D> {
+    fn new() -> Self {
+        Self {
+            segments: Vec::new(),
+            bounds: PathBounds::of(&[]),
+        }
+    }
+
+    /// Path `i` of `side`, checked, and its bounds (errors at pair `i`).
+    #[inline(always)]
+    fn read(
+        &mut self,
+        side: &PathRows<'_, D>,
+        i: usize,
+        names: &Names,
+    ) -> Result<(&[Segment<D>], &PathBounds<D>), InputError> {
+        let path = read_path(side, i, names, &mut self.segments).map_err(|e| e.in_pair(i))?;
+        self.bounds.set_to(path);
+        Ok((path, &self.bounds))
+    }
+}
+
 /// Pair `i`'s answer: its paths are the shared ones where a side is broadcast, else read
 /// into that side's buffer.
 #[inline(always)]
@@ -325,30 +354,25 @@ fn pair_time<const D: usize>(
     pairs: &PathPairs<'_, D>,
     i: usize,
     shared: &SharedPaths<D>,
-    (buffer_a, buffer_b): &mut (Vec<Segment<D>>, Vec<Segment<D>>),
+    [buffer_a, buffer_b]: &mut [PathBuffer<D>; 2],
 ) -> Result<f64, InputError> {
     let a = match &shared[0] {
-        Some((path, bounds)) => (path.as_slice(), *bounds),
-        None => {
-            let path = read_path(&pairs.a, i, &NAMES[0], buffer_a).map_err(|e| e.in_pair(i))?;
-            (path, PathBounds::of(path))
-        }
+        Some((path, bounds)) => (path.as_slice(), bounds),
+        None => buffer_a.read(&pairs.a, i, &NAMES[0])?,
     };
     let b = match &shared[1] {
-        Some((path, bounds)) => (path.as_slice(), *bounds),
-        None => {
-            let path = read_path(&pairs.b, i, &NAMES[1], buffer_b).map_err(|e| e.in_pair(i))?;
-            (path, PathBounds::of(path))
-        }
+        Some((path, bounds)) => (path.as_slice(), bounds),
+        None => buffer_b.read(&pairs.b, i, &NAMES[1])?,
     };
     let radius = check_radius("radius", pairs.radius.get(i)).map_err(|e| e.at(i))?;
     let t_max = check_horizon("t_max", pairs.t_max.get(i)).map_err(|e| e.at(i))?;
-    let contact = first_bounded_contact((a.0, &a.1), (b.0, &b.1), [radius, 0.0], t_max);
+    let contact = first_bounded_contact(a, b, [radius, 0.0], t_max);
     Ok(contact.unwrap_or(f64::INFINITY))
 }
 
 /// Path `i` of `side`, checked, read into `buffer` (reused from path to path); its segments
 /// (its errors at the segment's index).
+#[inline(always)]
 fn read_path<'b, const D: usize>(
     side: &PathRows<'_, D>,
     i: usize,

@@ -73,18 +73,18 @@ pub(crate) struct PathBounds<const D: usize> {
     largest: f64,
 }
 
-/// The smaller of two numbers, as one select. It may drop a NaN (`lesser(NaN, y)` is `y`):
-/// harmless here, because a box value is NaN only where a product overflowed, and then `size`
-/// is infinite or NaN too, so that [`PathBounds::apart`] proves nothing.
+/// The smaller of two numbers; it may drop a NaN (harmless here: a box value is NaN only
+/// where a product overflowed, and then `size` is infinite or NaN too, so that no box proves
+/// anything).
 #[inline(always)]
 fn lesser(x: f64, y: f64) -> f64 {
-    if x < y { x } else { y }
+    x.min(y)
 }
 
-/// The larger of two numbers, as one select.
+/// The larger of two numbers (NaNs as in [`lesser`]).
 #[inline(always)]
 fn greater(x: f64, y: f64) -> f64 {
-    if x > y { x } else { y }
+    x.max(y)
 }
 
 /// The distance beyond which two balls are proven apart: the contact distance `radius` and
@@ -103,24 +103,42 @@ impl<const D: usize> PathBounds<D> {
     /// acceleration, or else its velocity).
     #[inline(always)]
     pub(crate) fn of(segments: &[Segment<D>]) -> Self {
-        let mut boxes = [AxisBox::EVERYWHERE; SEGMENT_BOXES];
+        let mut bounds = Self {
+            whole: AxisBox::EMPTY,
+            segments: [AxisBox::EVERYWHERE; SEGMENT_BOXES],
+            size: 0.0,
+            spread: 0.0,
+            largest: 0.0,
+        };
+        bounds.set_to(segments);
+        bounds
+    }
+
+    /// Makes these the bounds of `segments` ([`PathBounds::of`]), in place: a batch keeps one
+    /// per side and overwrites it field by field, pair after pair, rather than moving a whole
+    /// new one into place (which the CPU would read back wider than it was written, stalling
+    /// on it).
+    #[inline(always)]
+    pub(crate) fn set_to(&mut self, segments: &[Segment<D>]) {
+        self.whole = AxisBox::EMPTY;
         let (mut size, mut spread, mut most) = (0.0, 0.0, [0.0; D]);
         let Some((last, finite)) = segments.split_last() else {
-            return Self {
-                whole: AxisBox::EMPTY,
-                segments: boxes,
-                size,
-                spread,
-                largest: 0.0,
-            };
+            self.size = 0.0;
+            self.spread = 0.0;
+            self.largest = 0.0;
+            return;
         };
-        let mut whole = AxisBox::EMPTY;
         for (k, s) in finite.iter().enumerate() {
             let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
             // `finite` is all but the last segment: segment `k + 1` is the next one.
             let length = segments[k + 1].start - s.start;
+            let slot = self.segments.get_mut(k);
             if length <= 0.0 {
-                continue; // empty: never active, and no part of the unit either
+                // Empty: never active, and no part of the unit either.
+                if let Some(slot) = slot {
+                    *slot = AxisBox::EVERYWHERE;
+                }
+                continue;
             }
             for i in 0..D {
                 most[i] = largest([most[i], p[i], v[i], a[i]]);
@@ -137,10 +155,10 @@ impl<const D: usize> PathBounds<D> {
                 hull.lo[i] = lesser(lesser(p[i], middle), end);
                 hull.hi[i] = greater(greater(p[i], middle), end);
             }
-            if let Some(slot) = boxes.get_mut(k) {
+            if let Some(slot) = slot {
                 *slot = hull;
             }
-            whole = whole.union(hull);
+            self.whole = self.whole.union(hull);
         }
         // The last segment lasts for ever.
         let mut drift = AxisBox::EMPTY;
@@ -154,17 +172,18 @@ impl<const D: usize> PathBounds<D> {
             drift.lo[i] = if down { f64::NEG_INFINITY } else { p };
             drift.hi[i] = if up { f64::INFINITY } else { p };
         }
-        if let Some(slot) = boxes.get_mut(finite.len()) {
+        if let Some(slot) = self.segments.get_mut(finite.len()) {
             *slot = drift;
         }
-        whole = whole.union(drift);
-        Self {
-            whole,
-            segments: boxes,
-            size,
-            spread,
-            largest: largest(most),
+        self.whole = self.whole.union(drift);
+        // (Slots past the path's segments are never asked for; kept proving nothing all the
+        // same.)
+        for slot in self.segments.iter_mut().skip(segments.len()) {
+            *slot = AxisBox::EVERYWHERE;
         }
+        self.size = size;
+        self.spread = spread;
+        self.largest = largest(most);
     }
 
     /// The distance beyond which boxes of these two paths prove balls `radius` apart:
