@@ -128,10 +128,9 @@ impl<const D: usize> PathBounds<D> {
             self.largest = 0.0;
             return;
         };
-        for (k, s) in finite.iter().enumerate() {
+        for (k, (s, next)) in finite.iter().zip(&segments[1..]).enumerate() {
             let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
-            // `finite` is all but the last segment: segment `k + 1` is the next one.
-            let length = segments[k + 1].start - s.start;
+            let length = next.start - s.start;
             let slot = self.segments.get_mut(k);
             if length <= 0.0 {
                 // Empty: never active, and no part of the unit either.
