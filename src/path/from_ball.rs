@@ -31,20 +31,29 @@ impl Ball {
     /// # Ok::<(), ballcollide::InputError>(())
     /// ```
     pub fn path(&self) -> Result<Path2, InputError> {
+        let mut segments = Vec::with_capacity(2);
+        self.write_segments(&mut segments);
+        Path::new(segments)
+    }
+
+    /// The segments of [`Ball::path`], unchecked, written over `out`'s (its memory reused).
+    pub(crate) fn write_segments(&self, out: &mut Vec<Segment<2>>) {
+        out.clear();
         // At rest means τ = 0, which includes a velocity so small that |v|/μ underflows.
         if self.is_at_rest() {
-            return Path::new(vec![Segment::at_rest(0.0, self.position())]);
+            out.push(Segment::at_rest(0.0, self.position()));
+            return;
         }
-        let moving = Segment::new(
+        out.push(Segment::new(
             0.0,
             self.position(),
             self.velocity(),
             self.friction_vector(),
-        );
-        Path::new(match self.rest_position() {
-            Some(rest) => vec![moving, Segment::at_rest(self.stop_time(), rest)],
-            None => vec![moving], // never stops: a = 0
-        })
+        ));
+        // None: it never stops (a = 0).
+        if let Some(rest) = self.rest_position() {
+            out.push(Segment::at_rest(self.stop_time(), rest));
+        }
     }
 }
 

@@ -6,7 +6,8 @@ use super::grid::{CellRange, Grid};
 use super::queue::{Key, Queue};
 use super::reach::{Reach, reach};
 use super::walls::{Side, Walls, first_wall_contact};
-use crate::collision::path_contact::first_path_contact;
+use crate::collision::path_bounds::PathBounds;
+use crate::collision::path_contact::first_bounded_contact;
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::motion::Ball;
 use crate::path::{Path, Segment};
@@ -93,6 +94,8 @@ pub struct HeapBytes {
 #[derive(Clone, Debug)]
 pub struct CollisionSchedule<const D: usize> {
     paths: Vec<Path<D>>,
+    /// Per ball: its path's bounds, for the pair search (formed once per path, not per pair).
+    bounds: Vec<PathBounds<D>>,
     radii: Vec<f64>,
     walls: Option<Walls<D>>,
     t_max: f64,
@@ -114,6 +117,19 @@ pub struct CollisionSchedule<const D: usize> {
     marks: Vec<u32>,
     mark: u32,
     candidates: Vec<u32>,
+    /// Scratch: segment buffers for [`update_balls`](Self::update_balls)'s new paths.
+    spare: Scratch<Vec<Vec<Segment<D>>>>,
+}
+
+/// Memory kept between calls only to be reused: no part of the calendar's state, so not
+/// shown (a refused update may leave other contents in it).
+#[derive(Clone, Default)]
+struct Scratch<T>(T);
+
+impl<T> std::fmt::Debug for Scratch<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Scratch")
+    }
 }
 
 /// What a ball's pending pair key is.
@@ -233,6 +249,8 @@ impl<const D: usize> CollisionSchedule<D> {
             marks: vec![0; n],
             mark: 0,
             candidates: Vec::new(),
+            spare: Scratch::default(),
+            bounds: paths.iter().map(|p| PathBounds::of(p.segments())).collect(),
             radii: radii.to_vec(),
             walls: options.walls,
             t_max,
@@ -421,15 +439,26 @@ impl<const D: usize> CollisionSchedule<D> {
         self.time = t;
         for (&i, path) in indices.iter().zip(paths) {
             self.paths[i] = path;
-            self.versions[i] = self.versions[i].wrapping_add(1);
-            let (reach, horizon) = self.span_box(i, None);
-            self.move_box(i, reach, horizon);
+            self.replaced(i);
         }
+        self.refresh_updated(indices);
+        Ok(())
+    }
+
+    /// After ball `i`'s path was replaced: its bounds, version and box.
+    fn replaced(&mut self, i: usize) {
+        self.bounds[i] = PathBounds::of(self.paths[i].segments());
+        self.versions[i] = self.versions[i].wrapping_add(1);
+        let (reach, horizon) = self.span_box(i, None);
+        self.move_box(i, reach, horizon);
+    }
+
+    /// After the balls `indices` were replaced: their keys.
+    fn refresh_updated(&mut self, indices: &[usize]) {
         for &i in indices {
             self.refresh(i);
             self.refresh_wall(i);
         }
-        Ok(())
     }
 
     /// [`update`](Self::update) for friction balls given at time `t` (see
@@ -471,8 +500,35 @@ impl<const D: usize> CollisionSchedule<D> {
             };
             return Err(InputError::new("t", kind));
         }
-        let paths = friction_paths(balls, t)?;
-        self.update(indices, paths)
+        // The new segments in spare buffers first (the errors of `friction_paths`, in its
+        // order), swapped in once all are good: no allocation once the buffers have grown.
+        let mut spare = std::mem::take(&mut self.spare.0);
+        if spare.len() < balls.len() {
+            spare.resize_with(balls.len(), Vec::new);
+        }
+        let written = balls
+            .iter()
+            .zip(&mut spare)
+            .enumerate()
+            .try_for_each(|(m, (ball, out))| {
+                ball.write_path_from(t, out)
+                    .and_then(|()| Path::check(out))
+                    .map_err(|e| e.at(m))
+            })
+            .and_then(|()| self.check_indices(indices, balls.len()));
+        let result = written.map(|()| {
+            if balls.is_empty() {
+                return;
+            }
+            self.time = t;
+            for (&i, segments) in indices.iter().zip(&mut spare) {
+                self.paths[i].swap_checked(segments);
+                self.replaced(i);
+            }
+            self.refresh_updated(indices);
+        });
+        self.spare.0 = spare;
+        result
     }
 
     /// The heap memory the calendar holds.
@@ -493,8 +549,16 @@ impl<const D: usize> CollisionSchedule<D> {
                 .paths
                 .iter()
                 .map(|p| std::mem::size_of_val(p.segments()))
+                .sum::<usize>()
+            + self.spare.0.capacity() * size_of::<Vec<Segment<D>>>()
+            + self
+                .spare
+                .0
+                .iter()
+                .map(|s| s.capacity() * size_of::<Segment<D>>())
                 .sum::<usize>();
         let per_ball = self.radii.capacity() * size_of::<f64>()
+            + self.bounds.capacity() * size_of::<PathBounds<D>>()
             + self.versions.capacity() * size_of::<u32>()
             + self.boxes.capacity() * size_of::<Reach<D>>()
             + self.ranges.capacity() * size_of::<CellRange<D>>()
@@ -512,35 +576,7 @@ impl<const D: usize> CollisionSchedule<D> {
 
     /// The checks of [`update`](Self::update), before anything changes.
     fn check_update(&self, indices: &[usize], paths: &[Path<D>]) -> Result<(), InputError> {
-        if paths.len() != indices.len() {
-            let kind = InputErrorKind::LengthMismatch {
-                expected: indices.len(),
-                found: paths.len(),
-            };
-            return Err(InputError::new("paths", kind));
-        }
-        let n = self.len();
-        for (m, &i) in indices.iter().enumerate() {
-            if i >= n {
-                let kind = InputErrorKind::IndexOutOfRange {
-                    index: i64::try_from(i).unwrap_or(i64::MAX),
-                    len: n,
-                };
-                return Err(InputError::new("indices", kind).at(m));
-            }
-        }
-        // A repeat is reported at its second occurrence, the earliest such position.
-        let mut order: Vec<(usize, usize)> = indices.iter().copied().zip(0..).collect();
-        order.sort_unstable();
-        let repeat = order
-            .windows(2)
-            .filter(|w| w[0].0 == w[1].0)
-            .map(|w| w[1].1)
-            .min();
-        if let Some(m) = repeat {
-            let kind = InputErrorKind::RepeatedIndex(indices[m]);
-            return Err(InputError::new("indices", kind).at(m));
-        }
+        self.check_indices(indices, paths.len())?;
         let Some(first) = paths.first().map(Path::first_start) else {
             return Ok(());
         };
@@ -561,12 +597,52 @@ impl<const D: usize> CollisionSchedule<D> {
         Ok(())
     }
 
-    /// Ball `i`'s contact time with ball `j` (`i ≠ j`): the pair search on `(lo, hi)`.
+    /// The checks of an update's `indices`, for `count` new paths.
+    fn check_indices(&self, indices: &[usize], count: usize) -> Result<(), InputError> {
+        if count != indices.len() {
+            let kind = InputErrorKind::LengthMismatch {
+                expected: indices.len(),
+                found: count,
+            };
+            return Err(InputError::new("paths", kind));
+        }
+        let n = self.len();
+        for (m, &i) in indices.iter().enumerate() {
+            if i >= n {
+                let kind = InputErrorKind::IndexOutOfRange {
+                    index: i64::try_from(i).unwrap_or(i64::MAX),
+                    len: n,
+                };
+                return Err(InputError::new("indices", kind).at(m));
+            }
+        }
+        // A repeat is reported at its second occurrence, the earliest such position: by
+        // looking back for a few indices (an event's update, no allocation), else in order.
+        let repeat = if indices.len() <= 8 {
+            (1..indices.len()).find(|&m| indices[..m].contains(&indices[m]))
+        } else {
+            let mut order: Vec<(usize, usize)> = indices.iter().copied().zip(0..).collect();
+            order.sort_unstable();
+            order
+                .windows(2)
+                .filter(|w| w[0].0 == w[1].0)
+                .map(|w| w[1].1)
+                .min()
+        };
+        if let Some(m) = repeat {
+            let kind = InputErrorKind::RepeatedIndex(indices[m]);
+            return Err(InputError::new("indices", kind).at(m));
+        }
+        Ok(())
+    }
+
+    /// Ball `i`'s contact time with ball `j` (`i ≠ j`): the pair search on `(lo, hi)`, with
+    /// the paths' stored bounds (what the search would form from the paths itself).
     fn pair_time(&self, i: usize, j: usize) -> Option<f64> {
         let (a, b) = (i.min(j), i.max(j));
-        first_path_contact(
-            self.paths[a].segments(),
-            self.paths[b].segments(),
+        first_bounded_contact(
+            (self.paths[a].segments(), &self.bounds[a]),
+            (self.paths[b].segments(), &self.bounds[b]),
             [self.radii[a] + self.radii[b], 0.0],
             self.t_max,
         )
@@ -648,15 +724,24 @@ impl<const D: usize> CollisionSchedule<D> {
         candidates.clear();
         let (marks, mark, boxes) = (&mut self.marks, self.mark, &self.boxes);
         let own = &boxes[i];
-        self.grid.for_each_ball(&self.ranges[i], |k| {
-            let ku = k as usize;
-            if ku != i && marks[ku] != mark {
-                marks[ku] = mark;
-                if boxes[ku].overlaps(own) {
-                    candidates.push(k);
+        if self.grid.is_one_cell() {
+            // Every ball is listed once, in order: no cell lists, no marks.
+            let others = boxes
+                .iter()
+                .zip(0u32..)
+                .filter(|&(b, k)| k as usize != i && b.overlaps(own));
+            candidates.extend(others.map(|(_, k)| k));
+        } else {
+            self.grid.for_each_ball(&self.ranges[i], |k| {
+                let ku = k as usize;
+                if ku != i && marks[ku] != mark {
+                    marks[ku] = mark;
+                    if boxes[ku].overlaps(own) {
+                        candidates.push(k);
+                    }
                 }
-            }
-        });
+            });
+        }
         let mut best = PairKey::NOTHING;
         for &k in &candidates {
             let k = k as usize;
@@ -721,21 +806,41 @@ pub trait FrictionPath<const D: usize> {
     /// assert_eq!(path.segments()[1].start, 5.0);
     /// # Ok::<(), ballcollide::InputError>(())
     /// ```
-    fn path_from(&self, t: f64) -> Result<Path<D>, InputError>;
+    fn path_from(&self, t: f64) -> Result<Path<D>, InputError> {
+        let mut segments = Vec::new();
+        self.write_path_from(t, &mut segments)?;
+        Path::new(segments)
+    }
+
+    /// The segments of [`path_from`](Self::path_from)`(t)` written over `out`'s (its memory
+    /// reused: what a calendar's update does), with [`Ball::path`]'s checks; the moved starts
+    /// are left for [`Path::new`] to check.
+    ///
+    /// # Errors
+    /// As [`Ball::path`]; `out` then holds no path.
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use ballcollide::path::Path2;
+    /// use ballcollide::schedule::FrictionPath;
+    /// use nalgebra::Vector2;
+    /// let ball = Ball::new(Vector2::zeros(), Vector2::new(1.0, 0.0), 0.5)?;
+    /// let mut segments = Vec::new();
+    /// FrictionPath::<2>::write_path_from(&ball, 3.0, &mut segments)?;
+    /// assert_eq!(Path2::new(segments)?, FrictionPath::<2>::path_from(&ball, 3.0)?);
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
+    fn write_path_from(&self, t: f64, out: &mut Vec<Segment<D>>) -> Result<(), InputError>;
 }
 
 impl FrictionPath<2> for Ball {
-    fn path_from(&self, t: f64) -> Result<Path<2>, InputError> {
-        let segments = self
-            .path()?
-            .segments()
-            .iter()
-            .map(|s| Segment {
-                start: s.start + t,
-                ..*s
-            })
-            .collect();
-        Path::new(segments)
+    fn write_path_from(&self, t: f64, out: &mut Vec<Segment<2>>) -> Result<(), InputError> {
+        self.write_segments(out);
+        Path::check(out)?;
+        for segment in out.iter_mut() {
+            segment.start += t;
+        }
+        Ok(())
     }
 }
 
