@@ -116,7 +116,19 @@ pub struct CollisionSchedule<const D: usize> {
     /// Scratch: a mark per ball, to list each candidate partner once.
     marks: Vec<u32>,
     mark: u32,
+    /// Per ball, with a grid of one cell (else empty, as re-checks search every pair): the
+    /// stamps of its path's last change and of its key's last refresh (from `clock`,
+    /// counting path changes), and the balls that were candidates at that refresh (bit `k`
+    /// for ball `k`).
+    updated: Vec<u32>,
+    refreshed: Vec<u32>,
+    clock: u32,
+    searched: Vec<u64>,
     candidates: Vec<u32>,
+    /// Scratch, within an update of two balls: the ball whose pair with the one refreshed
+    /// first is wanted (`u32::MAX`: none), and that pair's answer once searched.
+    want: u32,
+    pair_answer: Option<Option<f64>>,
     /// Scratch: segment buffers for [`update_balls`](Self::update_balls)'s new paths.
     spare: Scratch<Vec<Vec<Segment<D>>>>,
 }
@@ -130,6 +142,23 @@ impl<T> std::fmt::Debug for Scratch<T> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str("Scratch")
     }
+}
+
+/// What a refresh of a ball's key may take as known.
+#[derive(Clone, Copy, Debug)]
+enum Known {
+    /// Nothing: every candidate's pair is searched.
+    Nothing,
+    /// Its pair with ball `.0` (whose path changed with its own) was found to be `.1` (if
+    /// found at all: `None` inside is no contact).
+    Pair(usize, Option<Option<f64>>),
+    /// At a re-check: its last refresh (stamped `stamp`) searched the balls of `searched`,
+    /// and its best collision was with `partner` (`u32::MAX`: none), unchanged since.
+    Since {
+        searched: u64,
+        stamp: u32,
+        partner: u32,
+    },
 }
 
 /// What a ball's pending pair key is.
@@ -237,8 +266,15 @@ impl<const D: usize> CollisionSchedule<D> {
             .unwrap_or(0.0);
         let cell = cell_size(&paths, radii, options.walls.as_ref());
         let (lo, hi) = region(&paths, options.walls.as_ref(), cell);
+        let grid = Grid::new(lo, hi, cell, n);
+        // A grid of one cell lists each ball once: no marks needed.
+        let marks = if grid.is_one_cell() {
+            Vec::new()
+        } else {
+            vec![0; n]
+        };
         let mut schedule = Self {
-            grid: Grid::new(lo, hi, cell, n),
+            grid,
             cell,
             versions: vec![0; n],
             boxes: Vec::with_capacity(n),
@@ -246,9 +282,15 @@ impl<const D: usize> CollisionSchedule<D> {
             horizons: Vec::with_capacity(n),
             pairs: Queue::new(vec![PairKey::NOTHING; n]),
             wall_contacts: Queue::new(vec![WallKey::NOTHING; n]),
-            marks: vec![0; n],
+            marks,
+            updated: Vec::new(),
+            refreshed: Vec::new(),
+            clock: 0,
+            searched: Vec::new(),
             mark: 0,
             candidates: Vec::new(),
+            want: u32::MAX,
+            pair_answer: None,
             spare: Scratch::default(),
             bounds: paths.iter().map(|p| PathBounds::of(p.segments())).collect(),
             radii: radii.to_vec(),
@@ -265,8 +307,13 @@ impl<const D: usize> CollisionSchedule<D> {
             schedule.ranges.push(range);
             schedule.horizons.push(horizon);
         }
+        if schedule.grid.is_one_cell() {
+            schedule.updated = vec![0; n];
+            schedule.refreshed = vec![0; n];
+            schedule.searched = vec![0; n];
+        }
         for i in 0..n {
-            schedule.refresh(i);
+            schedule.refresh(i, None);
             schedule.refresh_wall(i);
         }
         Ok(schedule)
@@ -364,7 +411,7 @@ impl<const D: usize> CollisionSchedule<D> {
                         key.lo
                     } as usize;
                     if key.time < self.time || self.versions[partner] != key.partner_version {
-                        self.refresh(owner);
+                        self.refresh(owner, None);
                     } else {
                         return Some(Collision {
                             time: key.time,
@@ -449,16 +496,36 @@ impl<const D: usize> CollisionSchedule<D> {
     fn replaced(&mut self, i: usize) {
         self.bounds[i] = PathBounds::of(self.paths[i].segments());
         self.versions[i] = self.versions[i].wrapping_add(1);
+        if self.clock == u32::MAX {
+            // Wrapped: every ball counts as changed since every refresh.
+            self.refreshed.fill(0);
+            self.updated.fill(1);
+            self.clock = 1;
+        }
+        self.clock += 1;
+        if let Some(updated) = self.updated.get_mut(i) {
+            *updated = self.clock;
+        }
         let (reach, horizon) = self.span_box(i, None);
         self.move_box(i, reach, horizon);
     }
 
     /// After the balls `indices` were replaced: their keys.
     fn refresh_updated(&mut self, indices: &[usize]) {
-        for &i in indices {
-            self.refresh(i);
+        for (m, &i) in indices.iter().enumerate() {
+            // A collision's two balls: the second takes their pair's answer from the first.
+            let known = match (m, indices) {
+                (1, &[a, b]) => Known::Pair(a, self.pair_answer.take().filter(|_| b == i)),
+                _ => Known::Nothing,
+            };
+            if m == 0 && indices.len() == 2 {
+                self.pair_answer = None;
+                self.want = indices[1] as u32;
+            }
+            self.refresh(i, Some(known));
             self.refresh_wall(i);
         }
+        self.want = u32::MAX;
     }
 
     /// [`update`](Self::update) for friction balls given at time `t` (see
@@ -564,6 +631,9 @@ impl<const D: usize> CollisionSchedule<D> {
             + self.ranges.capacity() * size_of::<CellRange<D>>()
             + self.horizons.capacity() * size_of::<f64>()
             + self.marks.capacity() * size_of::<u32>()
+            + self.updated.capacity() * size_of::<u32>()
+            + self.refreshed.capacity() * size_of::<u32>()
+            + self.searched.capacity() * size_of::<u64>()
             + self.candidates.capacity() * size_of::<u32>()
             + self.pairs.heap_bytes()
             + self.wall_contacts.heap_bytes();
@@ -706,15 +776,36 @@ impl<const D: usize> CollisionSchedule<D> {
     }
 
     /// At ball `i`'s horizon: its box moved on, its key recomputed.
+    ///
+    /// With a grid of one cell, its pairs with the balls that were candidates at its last
+    /// refresh, paths unchanged since, are known to come no earlier than the best of that
+    /// refresh, whose partner the re-check key holds: only the other pairs are searched, and
+    /// the partner's, if the partner is still a candidate and its contact not past.
     fn recheck(&mut self, i: usize) {
+        let key = *self.pairs.key(i);
+        let partner_unchanged =
+            key.hi == u32::MAX || self.versions[key.hi as usize] == key.partner_version;
+        let known = self
+            .searched
+            .get(i)
+            .filter(|_| partner_unchanged)
+            .map(|&searched| Known::Since {
+                searched,
+                stamp: self.refreshed[i],
+                partner: key.hi,
+            });
         let (reach, horizon) = self.span_box(i, Some(self.horizons[i]));
         self.move_box(i, reach, horizon);
-        self.refresh(i);
+        if !self.refresh(i, known) {
+            self.refresh(i, None);
+        }
     }
 
     /// Recomputes ball `i`'s pair key: its earliest collision at or after the current time
-    /// with a ball whose box meets its own, or its re-check if that comes first.
-    fn refresh(&mut self, i: usize) {
+    /// with a ball whose box meets its own, or its re-check if that comes first. With
+    /// `known` ([`Known`]), some pairs are not searched again; `false` (nothing changed) if
+    /// what was known turned out not to settle the key.
+    fn refresh(&mut self, i: usize, known: Option<Known>) -> bool {
         self.mark = self.mark.wrapping_add(1);
         if self.mark == 0 {
             self.marks.fill(0);
@@ -743,15 +834,39 @@ impl<const D: usize> CollisionSchedule<D> {
             });
         }
         let mut best = PairKey::NOTHING;
+        // Whether the re-check's partner was searched and its contact is not past.
+        let mut partner_valid = false;
         for &k in &candidates {
-            let k = k as usize;
-            if let Some(t) = self.pair_time(i, k).filter(|&t| t >= self.time) {
+            let ku = k as usize;
+            let t = match known {
+                Some(Known::Since {
+                    searched,
+                    stamp,
+                    partner,
+                }) if k != partner => {
+                    if searched >> k & 1 == 1 && self.updated[ku] <= stamp {
+                        continue;
+                    }
+                    self.pair_time(i, ku)
+                }
+                Some(Known::Since { .. }) => {
+                    let t = self.pair_time(i, ku);
+                    partner_valid = t.is_some_and(|t| t >= self.time);
+                    t
+                }
+                Some(Known::Pair(other, Some(answer))) if other == ku => answer,
+                _ => self.pair_time(i, ku),
+            };
+            if k == self.want {
+                self.pair_answer = Some(t);
+            }
+            if let Some(t) = t.filter(|&t| t >= self.time) {
                 let key = PairKey {
                     time: t,
                     kind: Kind::Collision,
-                    lo: i.min(k) as u32,
-                    hi: i.max(k) as u32,
-                    partner_version: self.versions[k],
+                    lo: i.min(ku) as u32,
+                    hi: i.max(ku) as u32,
+                    partner_version: self.versions[ku],
                 };
                 if key.before(&best) {
                     best = key;
@@ -759,17 +874,43 @@ impl<const D: usize> CollisionSchedule<D> {
             }
         }
         self.candidates = candidates;
+        if let Some(Known::Since { partner, .. }) = known {
+            // The skipped pairs come no earlier than the partner's, which must be among
+            // those searched.
+            if partner != u32::MAX && !partner_valid {
+                return false;
+            }
+        }
         let horizon = self.horizons[i];
         if horizon < best.time || (horizon == best.time && horizon.is_finite()) {
+            // The best collision's partner stays in the key, for the re-check.
+            let (partner, partner_version) = match best.kind {
+                Kind::Collision => {
+                    let other = if best.lo as usize == i {
+                        best.hi
+                    } else {
+                        best.lo
+                    };
+                    (other, best.partner_version)
+                }
+                _ => (u32::MAX, 0),
+            };
             best = PairKey {
                 time: horizon,
                 kind: Kind::Recheck,
                 lo: i as u32,
-                hi: i as u32,
-                partner_version: 0,
+                hi: partner,
+                partner_version,
             };
         }
+        if let (Some(refreshed), Some(searched)) =
+            (self.refreshed.get_mut(i), self.searched.get_mut(i))
+        {
+            *refreshed = self.clock;
+            *searched = self.candidates.iter().fold(0, |m, &k| m | 1 << k);
+        }
         self.pairs.set(i, best);
+        true
     }
 
     /// Recomputes ball `i`'s wall key.
