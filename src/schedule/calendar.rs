@@ -577,11 +577,7 @@ impl<const D: usize> CollisionSchedule<D> {
             .iter()
             .zip(&mut spare)
             .enumerate()
-            .try_for_each(|(m, (ball, out))| {
-                ball.write_path_from(t, out)
-                    .and_then(|()| Path::check(out))
-                    .map_err(|e| e.at(m))
-            })
+            .try_for_each(|(m, (ball, out))| ball.write_path_from(t, out).map_err(|e| e.at(m)))
             .and_then(|()| self.check_indices(indices, balls.len()));
         let result = written.map(|()| {
             if balls.is_empty() {
@@ -589,6 +585,8 @@ impl<const D: usize> CollisionSchedule<D> {
             }
             self.time = t;
             for (&i, segments) in indices.iter().zip(&mut spare) {
+                // Checked by `write_path_from` (`Ball`'s, the only one: the trait and
+                // `Ball` are this crate's).
                 self.paths[i].swap_checked(segments);
                 self.replaced(i);
             }
@@ -748,7 +746,12 @@ impl<const D: usize> CollisionSchedule<D> {
             return f64::INFINITY;
         }
         let ahead = (from - last.start).max(0.0);
-        let speed = v + a * ahead + (a * self.cell).sqrt();
+        // (No acceleration: the same sum without the square root of 0.)
+        let speed = if a == 0.0 {
+            v + a * ahead
+        } else {
+            v + a * ahead + (a * self.cell).sqrt()
+        };
         let mut step = 0.25 * self.cell / speed;
         let base = previous.map_or(from, |h| h.max(from));
         if let Some(h) = previous {
@@ -954,11 +957,10 @@ pub trait FrictionPath<const D: usize> {
     }
 
     /// The segments of [`path_from`](Self::path_from)`(t)` written over `out`'s (its memory
-    /// reused: what a calendar's update does), with [`Ball::path`]'s checks; the moved starts
-    /// are left for [`Path::new`] to check.
+    /// reused: what a calendar's update does), checked as `path_from` checks them.
     ///
     /// # Errors
-    /// As [`Ball::path`]; `out` then holds no path.
+    /// As [`path_from`](Self::path_from); `out` then holds no path.
     ///
     /// ```
     /// use ballcollide::Ball;
@@ -976,12 +978,22 @@ pub trait FrictionPath<const D: usize> {
 
 impl FrictionPath<2> for Ball {
     fn write_path_from(&self, t: f64, out: &mut Vec<Segment<2>>) -> Result<(), InputError> {
+        let shift = |out: &mut Vec<Segment<2>>| {
+            for segment in out.iter_mut() {
+                segment.start += t;
+            }
+        };
+        self.write_segments(out);
+        shift(out);
+        // Valid moved on, valid from 0 (the same values; starts 0 ≤ τ finite, as τ + t is):
+        // one check. Else the error `Ball::path` reports first, if any, as `path_from` does.
+        if Path::check(out).is_ok() {
+            return Ok(());
+        }
         self.write_segments(out);
         Path::check(out)?;
-        for segment in out.iter_mut() {
-            segment.start += t;
-        }
-        Ok(())
+        shift(out);
+        Path::check(out)
     }
 }
 
