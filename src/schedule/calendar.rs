@@ -7,7 +7,7 @@ use super::queue::{Key, Queue};
 use super::reach::{Reach, reach};
 use super::walls::{Side, Walls, first_wall_contact};
 use crate::collision::path_bounds::PathBounds;
-use crate::collision::path_contact::first_bounded_contact;
+use crate::collision::path_contact::{first_bounded_contact, first_path_contact};
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::motion::Ball;
 use crate::path::{Path, Segment};
@@ -94,7 +94,9 @@ pub struct HeapBytes {
 #[derive(Clone, Debug)]
 pub struct CollisionSchedule<const D: usize> {
     paths: Vec<Path<D>>,
-    /// Per ball: its path's bounds, for the pair search (formed once per path, not per pair).
+    /// Per ball, with a grid of one cell (else empty): its path's bounds, for the pair search
+    /// (formed once per path, not per pair; with many balls, forming them again from the
+    /// segments the search reads anyway costs less than reading them from memory).
     bounds: Vec<PathBounds<D>>,
     radii: Vec<f64>,
     walls: Option<Walls<D>>,
@@ -292,7 +294,7 @@ impl<const D: usize> CollisionSchedule<D> {
             want: u32::MAX,
             pair_answer: None,
             spare: Scratch::default(),
-            bounds: paths.iter().map(|p| PathBounds::of(p.segments())).collect(),
+            bounds: Vec::new(),
             radii: radii.to_vec(),
             walls: options.walls,
             t_max,
@@ -308,6 +310,11 @@ impl<const D: usize> CollisionSchedule<D> {
             schedule.horizons.push(horizon);
         }
         if schedule.grid.is_one_cell() {
+            schedule.bounds = schedule
+                .paths
+                .iter()
+                .map(|p| PathBounds::of(p.segments()))
+                .collect();
             schedule.updated = vec![0; n];
             schedule.refreshed = vec![0; n];
             schedule.searched = vec![0; n];
@@ -494,7 +501,9 @@ impl<const D: usize> CollisionSchedule<D> {
 
     /// After ball `i`'s path was replaced: its bounds, version and box.
     fn replaced(&mut self, i: usize) {
-        self.bounds[i] = PathBounds::of(self.paths[i].segments());
+        if let Some(bounds) = self.bounds.get_mut(i) {
+            *bounds = PathBounds::of(self.paths[i].segments());
+        }
         self.versions[i] = self.versions[i].wrapping_add(1);
         if self.clock == u32::MAX {
             // Wrapped: every ball counts as changed since every refresh.
@@ -705,15 +714,15 @@ impl<const D: usize> CollisionSchedule<D> {
     }
 
     /// Ball `i`'s contact time with ball `j` (`i ≠ j`): the pair search on `(lo, hi)`, with
-    /// the paths' stored bounds (what the search would form from the paths itself).
+    /// the paths' bounds (stored, or formed here: the same either way).
     fn pair_time(&self, i: usize, j: usize) -> Option<f64> {
         let (a, b) = (i.min(j), i.max(j));
-        first_bounded_contact(
-            (self.paths[a].segments(), &self.bounds[a]),
-            (self.paths[b].segments(), &self.bounds[b]),
-            [self.radii[a] + self.radii[b], 0.0],
-            self.t_max,
-        )
+        let (pa, pb) = (self.paths[a].segments(), self.paths[b].segments());
+        let radii = [self.radii[a] + self.radii[b], 0.0];
+        match (self.bounds.get(a), self.bounds.get(b)) {
+            (Some(ba), Some(bb)) => first_bounded_contact((pa, ba), (pb, bb), radii, self.t_max),
+            _ => first_path_contact(pa, pb, radii, self.t_max),
+        }
     }
 
     /// Ball `i`'s box from the current time, and its horizon (`∞` if the box covers the
