@@ -31,28 +31,38 @@ impl Ball {
     /// # Ok::<(), ballcollide::InputError>(())
     /// ```
     pub fn path(&self) -> Result<Path2, InputError> {
-        let mut segments = Vec::with_capacity(2);
+        let mut segments = Vec::new();
         self.write_segments(&mut segments);
         Path::new(segments)
     }
 
-    /// The segments of [`Ball::path`], unchecked, written over `out`'s (its memory reused).
+    /// The segments of [`Ball::path`], unchecked, written over `out`'s (its memory reused;
+    /// grown, if need be, to exactly what they take: paths stay small in memory).
     pub(crate) fn write_segments(&self, out: &mut Vec<Segment<2>>) {
         out.clear();
         // At rest means τ = 0, which includes a velocity so small that |v|/μ underflows.
         if self.is_at_rest() {
+            out.reserve_exact(1);
             out.push(Segment::at_rest(0.0, self.position()));
             return;
         }
-        out.push(Segment::new(
+        let moving = Segment::new(
             0.0,
             self.position(),
             self.velocity(),
             self.friction_vector(),
-        ));
-        // None: it never stops (a = 0).
-        if let Some(rest) = self.rest_position() {
-            out.push(Segment::at_rest(self.stop_time(), rest));
+        );
+        match self.rest_position() {
+            Some(rest) => {
+                out.reserve_exact(2);
+                out.push(moving);
+                out.push(Segment::at_rest(self.stop_time(), rest));
+            }
+            None => {
+                // It never stops (a = 0).
+                out.reserve_exact(1);
+                out.push(moving);
+            }
         }
     }
 }
