@@ -368,16 +368,21 @@ fn a_dense_frictionless_box_is_brute_force_over_a_thousand_events() {
     }
 }
 
-#[test]
-fn friction_balls_from_balls_are_their_paths_from_t() {
-    let mut rng = Rng(9);
-    let balls: Vec<Ball> = (0..30)
+/// `n` friction balls in `[0, 3]²` at up to 2 m/s on each axis, their friction from `friction`.
+fn random_balls(rng: &mut Rng, n: usize, mut friction: impl FnMut(&mut Rng) -> f64) -> Vec<Ball> {
+    (0..n)
         .map(|_| {
             let p = Vector2::new(rng.uniform(0.0, 3.0), rng.uniform(0.0, 3.0));
             let v = Vector2::new(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0));
-            Ball::new(p, v, rng.uniform(0.0, 0.5)).expect("valid")
+            Ball::new(p, v, friction(rng)).expect("valid")
         })
-        .collect();
+        .collect()
+}
+
+#[test]
+fn friction_balls_from_balls_are_their_paths_from_t() {
+    let mut rng = Rng(9);
+    let balls = random_balls(&mut rng, 30, |rng| rng.uniform(0.0, 0.5));
     let radii = vec![0.1; balls.len()];
     let mut s = CollisionSchedule::<2>::from_balls(&balls, &radii, 2.5, ScheduleOptions::default())
         .expect("valid");
@@ -402,13 +407,7 @@ fn friction_balls_from_balls_are_their_paths_from_t() {
 #[test]
 fn friction_ball_updates_are_path_updates_and_refused_ones_change_nothing() {
     let mut rng = Rng(11);
-    let balls: Vec<Ball> = (0..12)
-        .map(|_| {
-            let p = Vector2::new(rng.uniform(0.0, 3.0), rng.uniform(0.0, 3.0));
-            let v = Vector2::new(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0));
-            Ball::new(p, v, rng.uniform(0.0, 0.5)).expect("valid")
-        })
-        .collect();
+    let balls = random_balls(&mut rng, 12, |rng| rng.uniform(0.0, 0.5));
     let radii = vec![0.2; balls.len()];
     let options = ScheduleOptions {
         walls: Some(Walls::new([-1.0, -1.0], [4.0, 4.0]).expect("a box")),
@@ -422,13 +421,8 @@ fn friction_ball_updates_are_path_updates_and_refused_ones_change_nothing() {
     for step in 0..40 {
         let i = rng.below(12) as usize;
         let j = (i + 1 + rng.below(11) as usize) % 12;
-        let new: Vec<Ball> = (0..2)
-            .map(|_| {
-                let p = Vector2::new(rng.uniform(0.0, 3.0), rng.uniform(0.0, 3.0));
-                let v = Vector2::new(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0));
-                Ball::new(p, v, if step % 3 == 0 { 0.0 } else { 0.3 }).expect("valid")
-            })
-            .collect();
+        let friction = if step % 3 == 0 { 0.0 } else { 0.3 };
+        let new = random_balls(&mut rng, 2, |_| friction);
         // Refused: nothing changes, whichever check fails.
         let before = format!("{by_balls:?}");
         let refusals = [
