@@ -106,6 +106,7 @@ pub struct CollisionSchedule<const D: usize> {
     versions: Vec<u32>,
     /// Per ball: the box it covers up to its horizon, and the box's cells.
     boxes: Vec<Reach<D>>,
+    /// (Empty with a grid of one cell: no cell lists.)
     ranges: Vec<CellRange<D>>,
     /// Per ball: when its box must be moved on (`∞`: it covers the rest of the path, or up
     /// to `t_max`).
@@ -126,6 +127,9 @@ pub struct CollisionSchedule<const D: usize> {
     refreshed: Vec<u32>,
     clock: u32,
     searched: Vec<u64>,
+    /// Per ball, with a grid of one cell (else empty): the time of the best collision found
+    /// at its last refresh, which a re-check key's partner stands for.
+    best_times: Vec<f64>,
     candidates: Vec<u32>,
     /// Scratch, within an update of two balls: the ball whose pair with the one refreshed
     /// first is wanted (`u32::MAX`: none), and that pair's answer once searched.
@@ -160,6 +164,7 @@ enum Known {
         searched: u64,
         stamp: u32,
         partner: u32,
+        partner_time: f64,
     },
 }
 
@@ -288,7 +293,7 @@ impl<const D: usize> CollisionSchedule<D> {
             cell,
             versions: vec![0; n],
             boxes: Vec::with_capacity(n),
-            ranges: Vec::with_capacity(n),
+            ranges: Vec::new(),
             horizons: Vec::with_capacity(n),
             pairs: Queue::new(vec![PairKey::NOTHING; n]),
             wall_contacts: Queue::new(vec![WallKey::NOTHING; n]),
@@ -297,6 +302,7 @@ impl<const D: usize> CollisionSchedule<D> {
             refreshed: Vec::new(),
             clock: 0,
             searched: Vec::new(),
+            best_times: Vec::new(),
             mark: 0,
             candidates: Vec::new(),
             want: u32::MAX,
@@ -309,15 +315,23 @@ impl<const D: usize> CollisionSchedule<D> {
             time,
             paths,
         };
+        let one_cell = schedule.grid.is_one_cell();
+        if !one_cell {
+            schedule.ranges.reserve_exact(n);
+        }
         for i in 0..n {
             let (reach, horizon) = schedule.span_box(i, None);
-            let range = schedule.grid.range(&reach);
-            schedule.grid.insert(i as u32, &range);
+            // One cell: no cell lists (every box is compared with every other).
+            if !one_cell {
+                let range = schedule.grid.range(&reach);
+                schedule.grid.insert(i as u32, &range);
+                schedule.ranges.push(range);
+            }
             schedule.boxes.push(reach);
-            schedule.ranges.push(range);
             schedule.horizons.push(horizon);
         }
-        if schedule.grid.is_one_cell() {
+        if one_cell {
+            schedule.best_times = vec![f64::INFINITY; n];
             schedule.bounds = schedule
                 .paths
                 .iter()
@@ -649,6 +663,7 @@ impl<const D: usize> CollisionSchedule<D> {
             + self.updated.capacity() * size_of::<u32>()
             + self.refreshed.capacity() * size_of::<u32>()
             + self.searched.capacity() * size_of::<u64>()
+            + self.best_times.capacity() * size_of::<f64>()
             + self.candidates.capacity() * size_of::<u32>()
             + self.pairs.heap_bytes()
             + self.wall_contacts.heap_bytes();
@@ -785,11 +800,13 @@ impl<const D: usize> CollisionSchedule<D> {
 
     /// Moves ball `i`'s box in the grid.
     fn move_box(&mut self, i: usize, reach: Reach<D>, horizon: f64) {
-        let range = self.grid.range(&reach);
-        if range != self.ranges[i] {
-            self.grid.remove(i as u32, &self.ranges[i]);
-            self.grid.insert(i as u32, &range);
-            self.ranges[i] = range;
+        if let Some(old) = self.ranges.get(i).copied() {
+            let range = self.grid.range(&reach);
+            if range != old {
+                self.grid.remove(i as u32, &old);
+                self.grid.insert(i as u32, &range);
+                self.ranges[i] = range;
+            }
         }
         self.boxes[i] = reach;
         self.horizons[i] = horizon;
@@ -813,6 +830,7 @@ impl<const D: usize> CollisionSchedule<D> {
                 searched,
                 stamp: self.refreshed[i],
                 partner: key.hi,
+                partner_time: self.best_times[i],
             });
         let (reach, horizon) = self.span_box(i, Some(self.horizons[i]));
         self.move_box(i, reach, horizon);
@@ -863,16 +881,17 @@ impl<const D: usize> CollisionSchedule<D> {
                     searched,
                     stamp,
                     partner,
+                    ..
                 }) if k != partner => {
                     if searched >> k & 1 == 1 && self.updated[ku] <= stamp {
                         continue;
                     }
                     self.pair_time(i, ku)
                 }
-                Some(Known::Since { .. }) => {
-                    let t = self.pair_time(i, ku);
-                    partner_valid = t.is_some_and(|t| t >= self.time);
-                    t
+                Some(Known::Since { partner_time, .. }) => {
+                    // The same pair on the same paths: its answer as found then.
+                    partner_valid = partner_time >= self.time;
+                    Some(partner_time)
                 }
                 Some(Known::Pair(other, Some(answer))) if other == ku => answer,
                 _ => self.pair_time(i, ku),
@@ -901,6 +920,7 @@ impl<const D: usize> CollisionSchedule<D> {
                 return false;
             }
         }
+        let found_time = best.time;
         let horizon = self.horizons[i];
         if horizon < best.time || (horizon == best.time && horizon.is_finite()) {
             // The best collision's partner stays in the key, for the re-check.
@@ -923,11 +943,14 @@ impl<const D: usize> CollisionSchedule<D> {
                 partner_version,
             };
         }
-        if let (Some(refreshed), Some(searched)) =
-            (self.refreshed.get_mut(i), self.searched.get_mut(i))
-        {
+        if let (Some(refreshed), Some(searched), Some(best_time)) = (
+            self.refreshed.get_mut(i),
+            self.searched.get_mut(i),
+            self.best_times.get_mut(i),
+        ) {
             *refreshed = self.clock;
             *searched = self.candidates.iter().fold(0, |m, &k| m | 1 << k);
+            *best_time = found_time;
         }
         self.pairs.set(i, best);
         true
