@@ -8,7 +8,7 @@
 
 use ballcollide::path::{Path, Segment};
 use ballcollide::schedule::{
-    Collision, CollisionSchedule, Event, ScheduleOptions, Side, WallContact, Walls,
+    Collision, CollisionSchedule, Event, FrictionPath, ScheduleOptions, Side, WallContact, Walls,
 };
 use ballcollide::{Ball, CollisionOptions, InputErrorKind, path_collision_time};
 use nalgebra::{SVector, Vector2};
@@ -368,16 +368,21 @@ fn a_dense_frictionless_box_is_brute_force_over_a_thousand_events() {
     }
 }
 
-#[test]
-fn friction_balls_from_balls_are_their_paths_from_t() {
-    let mut rng = Rng(9);
-    let balls: Vec<Ball> = (0..30)
+/// `n` friction balls in `[0, 3]²` at up to 2 m/s on each axis, their friction from `friction`.
+fn random_balls(rng: &mut Rng, n: usize, mut friction: impl FnMut(&mut Rng) -> f64) -> Vec<Ball> {
+    (0..n)
         .map(|_| {
             let p = Vector2::new(rng.uniform(0.0, 3.0), rng.uniform(0.0, 3.0));
             let v = Vector2::new(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0));
-            Ball::new(p, v, rng.uniform(0.0, 0.5)).expect("valid")
+            Ball::new(p, v, friction(rng)).expect("valid")
         })
-        .collect();
+        .collect()
+}
+
+#[test]
+fn friction_balls_from_balls_are_their_paths_from_t() {
+    let mut rng = Rng(9);
+    let balls = random_balls(&mut rng, 30, |rng| rng.uniform(0.0, 0.5));
     let radii = vec![0.1; balls.len()];
     let mut s = CollisionSchedule::<2>::from_balls(&balls, &radii, 2.5, ScheduleOptions::default())
         .expect("valid");
@@ -397,6 +402,54 @@ fn friction_balls_from_balls_are_their_paths_from_t() {
         err.to_string(),
         "t: must not be before the calendar's time 3, got 2"
     );
+}
+
+#[test]
+fn friction_ball_updates_are_path_updates_and_refused_ones_change_nothing() {
+    let mut rng = Rng(11);
+    let balls = random_balls(&mut rng, 12, |rng| rng.uniform(0.0, 0.5));
+    let radii = vec![0.2; balls.len()];
+    let options = ScheduleOptions {
+        walls: Some(Walls::new([-1.0, -1.0], [4.0, 4.0]).expect("a box")),
+        ..Default::default()
+    };
+    let mut by_balls =
+        CollisionSchedule::<2>::from_balls(&balls, &radii, 0.0, options).expect("valid");
+    let mut by_paths = by_balls.clone();
+    let overflows = Ball::new(Vector2::zeros(), Vector2::new(1e5, 0.0), 2e-300).expect("valid");
+    let mut t = 0.0;
+    for step in 0..40 {
+        let i = rng.below(12) as usize;
+        let j = (i + 1 + rng.below(11) as usize) % 12;
+        let friction = if step % 3 == 0 { 0.0 } else { 0.3 };
+        let new = random_balls(&mut rng, 2, |_| friction);
+        // Refused: nothing changes, whichever check fails.
+        let before = format!("{by_balls:?}");
+        let refusals = [
+            (vec![i, i], new.clone(), "indices[1]"),
+            (vec![i, 12], new.clone(), "indices[1]"),
+            (vec![i], new.clone(), "paths"),
+            (vec![i, j], vec![new[0], overflows], "position[1]"),
+        ];
+        for (indices, balls, argument) in refusals {
+            let err = by_balls
+                .update_balls(&indices, t, &balls)
+                .expect_err("refused");
+            assert!(err.to_string().starts_with(argument), "{err}");
+            assert_eq!(format!("{by_balls:?}"), before);
+        }
+        let paths = new
+            .iter()
+            .map(|b| FrictionPath::<2>::path_from(b, t).expect("valid"))
+            .collect();
+        by_balls.update_balls(&[i, j], t, &new).expect("valid");
+        by_paths.update(&[i, j], paths).expect("valid");
+        for k in 0..12 {
+            assert_eq!(by_balls.path(k), by_paths.path(k));
+        }
+        assert_eq!(check(&mut by_balls), by_paths.next_event());
+        t += rng.uniform(0.0, 0.5);
+    }
 }
 
 #[test]

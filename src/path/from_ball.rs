@@ -31,9 +31,20 @@ impl Ball {
     /// # Ok::<(), ballcollide::InputError>(())
     /// ```
     pub fn path(&self) -> Result<Path2, InputError> {
+        let mut segments = Vec::new();
+        self.write_segments(&mut segments);
+        Path::new(segments)
+    }
+
+    /// The segments of [`Ball::path`], unchecked, written over `out`'s (its memory reused;
+    /// grown, if need be, to exactly what they take: paths stay small in memory).
+    pub(crate) fn write_segments(&self, out: &mut Vec<Segment<2>>) {
+        out.clear();
         // At rest means τ = 0, which includes a velocity so small that |v|/μ underflows.
         if self.is_at_rest() {
-            return Path::new(vec![Segment::at_rest(0.0, self.position())]);
+            out.reserve_exact(1);
+            out.push(Segment::at_rest(0.0, self.position()));
+            return;
         }
         let moving = Segment::new(
             0.0,
@@ -41,10 +52,18 @@ impl Ball {
             self.velocity(),
             self.friction_vector(),
         );
-        Path::new(match self.rest_position() {
-            Some(rest) => vec![moving, Segment::at_rest(self.stop_time(), rest)],
-            None => vec![moving], // never stops: a = 0
-        })
+        match self.rest_position() {
+            Some(rest) => {
+                out.reserve_exact(2);
+                out.push(moving);
+                out.push(Segment::at_rest(self.stop_time(), rest));
+            }
+            None => {
+                // It never stops (a = 0).
+                out.reserve_exact(1);
+                out.push(moving);
+            }
+        }
     }
 }
 

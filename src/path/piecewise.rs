@@ -52,6 +52,15 @@ pub(crate) struct Names {
     pub(crate) acceleration: &'static str,
 }
 
+/// The argument names of [`Path::new`]'s errors.
+const NAMES: Names = Names {
+    segments: "segments",
+    start: "start",
+    position: "position",
+    velocity: "velocity",
+    acceleration: "acceleration",
+};
+
 impl<const D: usize> Path<D> {
     /// The path made of `segments`, in order.
     ///
@@ -78,14 +87,19 @@ impl<const D: usize> Path<D> {
     /// assert_eq!(err.kind(), InputErrorKind::NoSegments);
     /// ```
     pub fn new(segments: Vec<Segment<D>>) -> Result<Self, InputError> {
-        const NAMES: Names = Names {
-            segments: "segments",
-            start: "start",
-            position: "position",
-            velocity: "velocity",
-            acceleration: "acceleration",
-        };
         Self::checked(segments, &NAMES)
+    }
+
+    /// Checks `segments` as [`Path::new`] does, without making a path of them.
+    pub(crate) fn check(segments: &[Segment<D>]) -> Result<(), InputError> {
+        check_segments(segments, &NAMES)
+    }
+
+    /// Makes this path the one of `segments`, which must have passed [`Path::check`], and
+    /// hands the old segments back in `segments`: a path rebuilt in memory it already holds.
+    pub(crate) fn swap_checked(&mut self, segments: &mut Vec<Segment<D>>) {
+        debug_assert!(Self::check(segments).is_ok());
+        std::mem::swap(&mut self.segments, segments);
     }
 
     /// The path made of `segments` if they are valid, else an error using `names`.

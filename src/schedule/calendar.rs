@@ -6,7 +6,8 @@ use super::grid::{CellRange, Grid};
 use super::queue::{Key, Queue};
 use super::reach::{Reach, reach};
 use super::walls::{Side, Walls, first_wall_contact};
-use crate::collision::path_contact::first_path_contact;
+use crate::collision::path_bounds::PathBounds;
+use crate::collision::path_contact::{first_bounded_contact, first_path_contact};
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::motion::Ball;
 use crate::path::{Path, Segment};
@@ -93,6 +94,10 @@ pub struct HeapBytes {
 #[derive(Clone, Debug)]
 pub struct CollisionSchedule<const D: usize> {
     paths: Vec<Path<D>>,
+    /// Per ball, with a grid of one cell (else empty): its path's bounds, for the pair search
+    /// (formed once per path, not per pair; with many balls, forming them again from the
+    /// segments the search reads anyway costs less than reading them from memory).
+    bounds: Vec<PathBounds<D>>,
     radii: Vec<f64>,
     walls: Option<Walls<D>>,
     t_max: f64,
@@ -101,6 +106,7 @@ pub struct CollisionSchedule<const D: usize> {
     versions: Vec<u32>,
     /// Per ball: the box it covers up to its horizon, and the box's cells.
     boxes: Vec<Reach<D>>,
+    /// (Empty with a grid of one cell: no cell lists.)
     ranges: Vec<CellRange<D>>,
     /// Per ball: when its box must be moved on (`∞`: it covers the rest of the path, or up
     /// to `t_max`).
@@ -113,7 +119,53 @@ pub struct CollisionSchedule<const D: usize> {
     /// Scratch: a mark per ball, to list each candidate partner once.
     marks: Vec<u32>,
     mark: u32,
+    /// Per ball, with a grid of one cell (else empty, as re-checks search every pair): the
+    /// stamps of its path's last change and of its key's last refresh (from `clock`,
+    /// counting path changes), and the balls that were candidates at that refresh (bit `k`
+    /// for ball `k`).
+    updated: Vec<u32>,
+    refreshed: Vec<u32>,
+    clock: u32,
+    searched: Vec<u64>,
+    /// Per ball, with a grid of one cell (else empty): the time of the best collision found
+    /// at its last refresh, which a re-check key's partner stands for.
+    best_times: Vec<f64>,
     candidates: Vec<u32>,
+    /// Scratch, within an update of two balls: the ball whose pair with the one refreshed
+    /// first is wanted (`u32::MAX`: none), and that pair's answer once searched.
+    want: u32,
+    pair_answer: Option<Option<f64>>,
+    /// Scratch: segment buffers for [`update_balls`](Self::update_balls)'s new paths.
+    spare: Scratch<Vec<Vec<Segment<D>>>>,
+}
+
+/// Memory kept between calls only to be reused: no part of the calendar's state, so not
+/// shown (a refused update may leave other contents in it).
+#[derive(Clone, Default)]
+struct Scratch<T>(T);
+
+impl<T> std::fmt::Debug for Scratch<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Scratch")
+    }
+}
+
+/// What a refresh of a ball's key may take as known.
+#[derive(Clone, Copy, Debug)]
+enum Known {
+    /// Nothing: every candidate's pair is searched.
+    Nothing,
+    /// Its pair with ball `.0` (whose path changed with its own) was found to be `.1` (if
+    /// found at all: `None` inside is no contact).
+    Pair(usize, Option<Option<f64>>),
+    /// At a re-check: its last refresh (stamped `stamp`) searched the balls of `searched`,
+    /// and its best collision was with `partner` (`u32::MAX`: none), unchanged since.
+    Since {
+        searched: u64,
+        stamp: u32,
+        partner: u32,
+        partner_time: f64,
+    },
 }
 
 /// What a ball's pending pair key is.
@@ -150,6 +202,14 @@ impl PairKey {
 
 impl Key for PairKey {
     fn before(&self, other: &Self) -> bool {
+        // Times that `<` or `>` tell apart decide at once (`total_cmp` agrees there); equal
+        // ones, `±0` and NaN go on to the full order: the same order, fewer steps.
+        if self.time < other.time {
+            return true;
+        }
+        if self.time > other.time {
+            return false;
+        }
         self.time
             .total_cmp(&other.time)
             .then(self.kind.cmp(&other.kind))
@@ -221,34 +281,68 @@ impl<const D: usize> CollisionSchedule<D> {
             .unwrap_or(0.0);
         let cell = cell_size(&paths, radii, options.walls.as_ref());
         let (lo, hi) = region(&paths, options.walls.as_ref(), cell);
+        let grid = Grid::new(lo, hi, cell, n);
+        // A grid of one cell lists each ball once: no marks needed.
+        let marks = if grid.is_one_cell() {
+            Vec::new()
+        } else {
+            vec![0; n]
+        };
         let mut schedule = Self {
-            grid: Grid::new(lo, hi, cell, n),
+            grid,
             cell,
             versions: vec![0; n],
             boxes: Vec::with_capacity(n),
-            ranges: Vec::with_capacity(n),
+            ranges: Vec::new(),
             horizons: Vec::with_capacity(n),
             pairs: Queue::new(vec![PairKey::NOTHING; n]),
             wall_contacts: Queue::new(vec![WallKey::NOTHING; n]),
-            marks: vec![0; n],
+            marks,
+            updated: Vec::new(),
+            refreshed: Vec::new(),
+            clock: 0,
+            searched: Vec::new(),
+            best_times: Vec::new(),
             mark: 0,
             candidates: Vec::new(),
+            want: u32::MAX,
+            pair_answer: None,
+            spare: Scratch::default(),
+            bounds: Vec::new(),
             radii: radii.to_vec(),
             walls: options.walls,
             t_max,
             time,
             paths,
         };
-        for i in 0..n {
-            let (reach, horizon) = schedule.span_box(i, None);
-            let range = schedule.grid.range(&reach);
-            schedule.grid.insert(i as u32, &range);
-            schedule.boxes.push(reach);
-            schedule.ranges.push(range);
-            schedule.horizons.push(horizon);
+        let one_cell = schedule.grid.is_one_cell();
+        if !one_cell {
+            schedule.ranges.reserve_exact(n);
         }
         for i in 0..n {
-            schedule.refresh(i);
+            let (reach, horizon) = schedule.span_box(i, None);
+            // One cell: no cell lists (every box is compared with every other).
+            if !one_cell {
+                let range = schedule.grid.range(&reach);
+                schedule.grid.insert(i as u32, &range);
+                schedule.ranges.push(range);
+            }
+            schedule.boxes.push(reach);
+            schedule.horizons.push(horizon);
+        }
+        if one_cell {
+            schedule.best_times = vec![f64::INFINITY; n];
+            schedule.bounds = schedule
+                .paths
+                .iter()
+                .map(|p| PathBounds::of(p.segments()))
+                .collect();
+            schedule.updated = vec![0; n];
+            schedule.refreshed = vec![0; n];
+            schedule.searched = vec![0; n];
+        }
+        for i in 0..n {
+            schedule.refresh(i, None);
             schedule.refresh_wall(i);
         }
         Ok(schedule)
@@ -346,7 +440,7 @@ impl<const D: usize> CollisionSchedule<D> {
                         key.lo
                     } as usize;
                     if key.time < self.time || self.versions[partner] != key.partner_version {
-                        self.refresh(owner);
+                        self.refresh(owner, None);
                     } else {
                         return Some(Collision {
                             time: key.time,
@@ -421,15 +515,48 @@ impl<const D: usize> CollisionSchedule<D> {
         self.time = t;
         for (&i, path) in indices.iter().zip(paths) {
             self.paths[i] = path;
-            self.versions[i] = self.versions[i].wrapping_add(1);
-            let (reach, horizon) = self.span_box(i, None);
-            self.move_box(i, reach, horizon);
+            self.replaced(i);
         }
-        for &i in indices {
-            self.refresh(i);
+        self.refresh_updated(indices);
+        Ok(())
+    }
+
+    /// After ball `i`'s path was replaced: its bounds, version and box.
+    fn replaced(&mut self, i: usize) {
+        if let Some(bounds) = self.bounds.get_mut(i) {
+            *bounds = PathBounds::of(self.paths[i].segments());
+        }
+        self.versions[i] = self.versions[i].wrapping_add(1);
+        if self.clock == u32::MAX {
+            // Wrapped: every ball counts as changed since every refresh.
+            self.refreshed.fill(0);
+            self.updated.fill(1);
+            self.clock = 1;
+        }
+        self.clock += 1;
+        if let Some(updated) = self.updated.get_mut(i) {
+            *updated = self.clock;
+        }
+        let (reach, horizon) = self.span_box(i, None);
+        self.move_box(i, reach, horizon);
+    }
+
+    /// After the balls `indices` were replaced: their keys.
+    fn refresh_updated(&mut self, indices: &[usize]) {
+        for (m, &i) in indices.iter().enumerate() {
+            // A collision's two balls: the second takes their pair's answer from the first.
+            let known = match (m, indices) {
+                (1, &[a, b]) => Known::Pair(a, self.pair_answer.take().filter(|_| b == i)),
+                _ => Known::Nothing,
+            };
+            if m == 0 && indices.len() == 2 {
+                self.pair_answer = None;
+                self.want = indices[1] as u32;
+            }
+            self.refresh(i, Some(known));
             self.refresh_wall(i);
         }
-        Ok(())
+        self.want = u32::MAX;
     }
 
     /// [`update`](Self::update) for friction balls given at time `t` (see
@@ -471,8 +598,33 @@ impl<const D: usize> CollisionSchedule<D> {
             };
             return Err(InputError::new("t", kind));
         }
-        let paths = friction_paths(balls, t)?;
-        self.update(indices, paths)
+        // The new segments in spare buffers first (the errors of `friction_paths`, in its
+        // order), swapped in once all are good: no allocation once the buffers have grown.
+        let mut spare = std::mem::take(&mut self.spare.0);
+        if spare.len() < balls.len() {
+            spare.resize_with(balls.len(), Vec::new);
+        }
+        let written = balls
+            .iter()
+            .zip(&mut spare)
+            .enumerate()
+            .try_for_each(|(m, (ball, out))| ball.write_path_from(t, out).map_err(|e| e.at(m)))
+            .and_then(|()| self.check_indices(indices, balls.len()));
+        let result = written.map(|()| {
+            if balls.is_empty() {
+                return;
+            }
+            self.time = t;
+            for (&i, segments) in indices.iter().zip(&mut spare) {
+                // Checked by `write_path_from` (`Ball`'s, the only one: the trait and
+                // `Ball` are this crate's).
+                self.paths[i].swap_checked(segments);
+                self.replaced(i);
+            }
+            self.refresh_updated(indices);
+        });
+        self.spare.0 = spare;
+        result
     }
 
     /// The heap memory the calendar holds.
@@ -493,13 +645,25 @@ impl<const D: usize> CollisionSchedule<D> {
                 .paths
                 .iter()
                 .map(|p| std::mem::size_of_val(p.segments()))
+                .sum::<usize>()
+            + self.spare.0.capacity() * size_of::<Vec<Segment<D>>>()
+            + self
+                .spare
+                .0
+                .iter()
+                .map(|s| s.capacity() * size_of::<Segment<D>>())
                 .sum::<usize>();
         let per_ball = self.radii.capacity() * size_of::<f64>()
+            + self.bounds.capacity() * size_of::<PathBounds<D>>()
             + self.versions.capacity() * size_of::<u32>()
             + self.boxes.capacity() * size_of::<Reach<D>>()
             + self.ranges.capacity() * size_of::<CellRange<D>>()
             + self.horizons.capacity() * size_of::<f64>()
             + self.marks.capacity() * size_of::<u32>()
+            + self.updated.capacity() * size_of::<u32>()
+            + self.refreshed.capacity() * size_of::<u32>()
+            + self.searched.capacity() * size_of::<u64>()
+            + self.best_times.capacity() * size_of::<f64>()
             + self.candidates.capacity() * size_of::<u32>()
             + self.pairs.heap_bytes()
             + self.wall_contacts.heap_bytes();
@@ -512,35 +676,7 @@ impl<const D: usize> CollisionSchedule<D> {
 
     /// The checks of [`update`](Self::update), before anything changes.
     fn check_update(&self, indices: &[usize], paths: &[Path<D>]) -> Result<(), InputError> {
-        if paths.len() != indices.len() {
-            let kind = InputErrorKind::LengthMismatch {
-                expected: indices.len(),
-                found: paths.len(),
-            };
-            return Err(InputError::new("paths", kind));
-        }
-        let n = self.len();
-        for (m, &i) in indices.iter().enumerate() {
-            if i >= n {
-                let kind = InputErrorKind::IndexOutOfRange {
-                    index: i64::try_from(i).unwrap_or(i64::MAX),
-                    len: n,
-                };
-                return Err(InputError::new("indices", kind).at(m));
-            }
-        }
-        // A repeat is reported at its second occurrence, the earliest such position.
-        let mut order: Vec<(usize, usize)> = indices.iter().copied().zip(0..).collect();
-        order.sort_unstable();
-        let repeat = order
-            .windows(2)
-            .filter(|w| w[0].0 == w[1].0)
-            .map(|w| w[1].1)
-            .min();
-        if let Some(m) = repeat {
-            let kind = InputErrorKind::RepeatedIndex(indices[m]);
-            return Err(InputError::new("indices", kind).at(m));
-        }
+        self.check_indices(indices, paths.len())?;
         let Some(first) = paths.first().map(Path::first_start) else {
             return Ok(());
         };
@@ -561,15 +697,55 @@ impl<const D: usize> CollisionSchedule<D> {
         Ok(())
     }
 
-    /// Ball `i`'s contact time with ball `j` (`i ≠ j`): the pair search on `(lo, hi)`.
+    /// The checks of an update's `indices`, for `count` new paths.
+    fn check_indices(&self, indices: &[usize], count: usize) -> Result<(), InputError> {
+        if count != indices.len() {
+            let kind = InputErrorKind::LengthMismatch {
+                expected: indices.len(),
+                found: count,
+            };
+            return Err(InputError::new("paths", kind));
+        }
+        let n = self.len();
+        for (m, &i) in indices.iter().enumerate() {
+            if i >= n {
+                let kind = InputErrorKind::IndexOutOfRange {
+                    index: i64::try_from(i).unwrap_or(i64::MAX),
+                    len: n,
+                };
+                return Err(InputError::new("indices", kind).at(m));
+            }
+        }
+        // A repeat is reported at its second occurrence, the earliest such position: by
+        // looking back for a few indices (an event's update, no allocation), else in order.
+        let repeat = if indices.len() <= 8 {
+            (1..indices.len()).find(|&m| indices[..m].contains(&indices[m]))
+        } else {
+            let mut order: Vec<(usize, usize)> = indices.iter().copied().zip(0..).collect();
+            order.sort_unstable();
+            order
+                .windows(2)
+                .filter(|w| w[0].0 == w[1].0)
+                .map(|w| w[1].1)
+                .min()
+        };
+        if let Some(m) = repeat {
+            let kind = InputErrorKind::RepeatedIndex(indices[m]);
+            return Err(InputError::new("indices", kind).at(m));
+        }
+        Ok(())
+    }
+
+    /// Ball `i`'s contact time with ball `j` (`i ≠ j`): the pair search on `(lo, hi)`, with
+    /// the paths' bounds (stored, or formed here: the same either way).
     fn pair_time(&self, i: usize, j: usize) -> Option<f64> {
         let (a, b) = (i.min(j), i.max(j));
-        first_path_contact(
-            self.paths[a].segments(),
-            self.paths[b].segments(),
-            [self.radii[a] + self.radii[b], 0.0],
-            self.t_max,
-        )
+        let (pa, pb) = (self.paths[a].segments(), self.paths[b].segments());
+        let radii = [self.radii[a] + self.radii[b], 0.0];
+        match (self.bounds.get(a), self.bounds.get(b)) {
+            (Some(ba), Some(bb)) => first_bounded_contact((pa, ba), (pb, bb), radii, self.t_max),
+            _ => first_path_contact(pa, pb, radii, self.t_max),
+        }
     }
 
     /// Ball `i`'s box from the current time, and its horizon (`∞` if the box covers the
@@ -602,7 +778,12 @@ impl<const D: usize> CollisionSchedule<D> {
             return f64::INFINITY;
         }
         let ahead = (from - last.start).max(0.0);
-        let speed = v + a * ahead + (a * self.cell).sqrt();
+        // (No acceleration: the same sum without the square root of 0.)
+        let speed = if a == 0.0 {
+            v + a * ahead
+        } else {
+            v + a * ahead + (a * self.cell).sqrt()
+        };
         let mut step = 0.25 * self.cell / speed;
         let base = previous.map_or(from, |h| h.max(from));
         if let Some(h) = previous {
@@ -619,26 +800,50 @@ impl<const D: usize> CollisionSchedule<D> {
 
     /// Moves ball `i`'s box in the grid.
     fn move_box(&mut self, i: usize, reach: Reach<D>, horizon: f64) {
-        let range = self.grid.range(&reach);
-        if range != self.ranges[i] {
-            self.grid.remove(i as u32, &self.ranges[i]);
-            self.grid.insert(i as u32, &range);
-            self.ranges[i] = range;
+        if let Some(old) = self.ranges.get(i).copied() {
+            let range = self.grid.range(&reach);
+            if range != old {
+                self.grid.remove(i as u32, &old);
+                self.grid.insert(i as u32, &range);
+                self.ranges[i] = range;
+            }
         }
         self.boxes[i] = reach;
         self.horizons[i] = horizon;
     }
 
     /// At ball `i`'s horizon: its box moved on, its key recomputed.
+    ///
+    /// With a grid of one cell, its pairs with the balls that were candidates at its last
+    /// refresh, paths unchanged since, are known to come no earlier than the best of that
+    /// refresh, whose partner the re-check key holds: only the other pairs are searched, and
+    /// the partner's, if the partner is still a candidate and its contact not past.
     fn recheck(&mut self, i: usize) {
+        let key = *self.pairs.key(i);
+        let partner_unchanged =
+            key.hi == u32::MAX || self.versions[key.hi as usize] == key.partner_version;
+        let known = self
+            .searched
+            .get(i)
+            .filter(|_| partner_unchanged)
+            .map(|&searched| Known::Since {
+                searched,
+                stamp: self.refreshed[i],
+                partner: key.hi,
+                partner_time: self.best_times[i],
+            });
         let (reach, horizon) = self.span_box(i, Some(self.horizons[i]));
         self.move_box(i, reach, horizon);
-        self.refresh(i);
+        if !self.refresh(i, known) {
+            self.refresh(i, None);
+        }
     }
 
     /// Recomputes ball `i`'s pair key: its earliest collision at or after the current time
-    /// with a ball whose box meets its own, or its re-check if that comes first.
-    fn refresh(&mut self, i: usize) {
+    /// with a ball whose box meets its own, or its re-check if that comes first. With
+    /// `known` ([`Known`]), some pairs are not searched again; `false` (nothing changed) if
+    /// what was known turned out not to settle the key.
+    fn refresh(&mut self, i: usize, known: Option<Known>) -> bool {
         self.mark = self.mark.wrapping_add(1);
         if self.mark == 0 {
             self.marks.fill(0);
@@ -648,25 +853,59 @@ impl<const D: usize> CollisionSchedule<D> {
         candidates.clear();
         let (marks, mark, boxes) = (&mut self.marks, self.mark, &self.boxes);
         let own = &boxes[i];
-        self.grid.for_each_ball(&self.ranges[i], |k| {
-            let ku = k as usize;
-            if ku != i && marks[ku] != mark {
-                marks[ku] = mark;
-                if boxes[ku].overlaps(own) {
-                    candidates.push(k);
+        if self.grid.is_one_cell() {
+            // Every ball is listed once, in order: no cell lists, no marks.
+            let others = boxes
+                .iter()
+                .zip(0u32..)
+                .filter(|&(b, k)| k as usize != i && b.overlaps(own));
+            candidates.extend(others.map(|(_, k)| k));
+        } else {
+            self.grid.for_each_ball(&self.ranges[i], |k| {
+                let ku = k as usize;
+                if ku != i && marks[ku] != mark {
+                    marks[ku] = mark;
+                    if boxes[ku].overlaps(own) {
+                        candidates.push(k);
+                    }
                 }
-            }
-        });
+            });
+        }
         let mut best = PairKey::NOTHING;
+        // Whether the re-check's partner was searched and its contact is not past.
+        let mut partner_valid = false;
         for &k in &candidates {
-            let k = k as usize;
-            if let Some(t) = self.pair_time(i, k).filter(|&t| t >= self.time) {
+            let ku = k as usize;
+            let t = match known {
+                Some(Known::Since {
+                    searched,
+                    stamp,
+                    partner,
+                    ..
+                }) if k != partner => {
+                    if searched >> k & 1 == 1 && self.updated[ku] <= stamp {
+                        continue;
+                    }
+                    self.pair_time(i, ku)
+                }
+                Some(Known::Since { partner_time, .. }) => {
+                    // The same pair on the same paths: its answer as found then.
+                    partner_valid = partner_time >= self.time;
+                    Some(partner_time)
+                }
+                Some(Known::Pair(other, Some(answer))) if other == ku => answer,
+                _ => self.pair_time(i, ku),
+            };
+            if k == self.want {
+                self.pair_answer = Some(t);
+            }
+            if let Some(t) = t.filter(|&t| t >= self.time) {
                 let key = PairKey {
                     time: t,
                     kind: Kind::Collision,
-                    lo: i.min(k) as u32,
-                    hi: i.max(k) as u32,
-                    partner_version: self.versions[k],
+                    lo: i.min(ku) as u32,
+                    hi: i.max(ku) as u32,
+                    partner_version: self.versions[ku],
                 };
                 if key.before(&best) {
                     best = key;
@@ -674,17 +913,47 @@ impl<const D: usize> CollisionSchedule<D> {
             }
         }
         self.candidates = candidates;
+        if let Some(Known::Since { partner, .. }) = known {
+            // The skipped pairs come no earlier than the partner's, which must be among
+            // those searched.
+            if partner != u32::MAX && !partner_valid {
+                return false;
+            }
+        }
+        let found_time = best.time;
         let horizon = self.horizons[i];
         if horizon < best.time || (horizon == best.time && horizon.is_finite()) {
+            // The best collision's partner stays in the key, for the re-check.
+            let (partner, partner_version) = match best.kind {
+                Kind::Collision => {
+                    let other = if best.lo as usize == i {
+                        best.hi
+                    } else {
+                        best.lo
+                    };
+                    (other, best.partner_version)
+                }
+                _ => (u32::MAX, 0),
+            };
             best = PairKey {
                 time: horizon,
                 kind: Kind::Recheck,
                 lo: i as u32,
-                hi: i as u32,
-                partner_version: 0,
+                hi: partner,
+                partner_version,
             };
         }
+        if let (Some(refreshed), Some(searched), Some(best_time)) = (
+            self.refreshed.get_mut(i),
+            self.searched.get_mut(i),
+            self.best_times.get_mut(i),
+        ) {
+            *refreshed = self.clock;
+            *searched = self.candidates.iter().fold(0, |m, &k| m | 1 << k);
+            *best_time = found_time;
+        }
         self.pairs.set(i, best);
+        true
     }
 
     /// Recomputes ball `i`'s wall key.
@@ -721,21 +990,50 @@ pub trait FrictionPath<const D: usize> {
     /// assert_eq!(path.segments()[1].start, 5.0);
     /// # Ok::<(), ballcollide::InputError>(())
     /// ```
-    fn path_from(&self, t: f64) -> Result<Path<D>, InputError>;
+    fn path_from(&self, t: f64) -> Result<Path<D>, InputError> {
+        let mut segments = Vec::new();
+        self.write_path_from(t, &mut segments)?;
+        Path::new(segments)
+    }
+
+    /// The segments of [`path_from`](Self::path_from)`(t)` written over `out`'s (its memory
+    /// reused: what a calendar's update does), checked as `path_from` checks them.
+    ///
+    /// # Errors
+    /// As [`path_from`](Self::path_from); `out` then holds no path.
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use ballcollide::path::Path2;
+    /// use ballcollide::schedule::FrictionPath;
+    /// use nalgebra::Vector2;
+    /// let ball = Ball::new(Vector2::zeros(), Vector2::new(1.0, 0.0), 0.5)?;
+    /// let mut segments = Vec::new();
+    /// FrictionPath::<2>::write_path_from(&ball, 3.0, &mut segments)?;
+    /// assert_eq!(Path2::new(segments)?, FrictionPath::<2>::path_from(&ball, 3.0)?);
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
+    fn write_path_from(&self, t: f64, out: &mut Vec<Segment<D>>) -> Result<(), InputError>;
 }
 
 impl FrictionPath<2> for Ball {
-    fn path_from(&self, t: f64) -> Result<Path<2>, InputError> {
-        let segments = self
-            .path()?
-            .segments()
-            .iter()
-            .map(|s| Segment {
-                start: s.start + t,
-                ..*s
-            })
-            .collect();
-        Path::new(segments)
+    fn write_path_from(&self, t: f64, out: &mut Vec<Segment<2>>) -> Result<(), InputError> {
+        let shift = |out: &mut Vec<Segment<2>>| {
+            for segment in out.iter_mut() {
+                segment.start += t;
+            }
+        };
+        self.write_segments(out);
+        shift(out);
+        // Valid moved on, valid from 0 (the same values; starts 0 ≤ τ finite, as τ + t is):
+        // one check. Else the error `Ball::path` reports first, if any, as `path_from` does.
+        if Path::check(out).is_ok() {
+            return Ok(());
+        }
+        self.write_segments(out);
+        Path::check(out)?;
+        shift(out);
+        Path::check(out)
     }
 }
 

@@ -98,8 +98,11 @@ fn range_on(p: f64, v: f64, a: f64, from: f64, to: f64) -> (f64, f64, f64) {
     let at = |s: f64| p + (v + 0.5 * a * s) * s;
     let start = at(from);
     let (mut lo, mut hi) = (start, start);
-    let turn = -v / a;
-    let vertex_inside = turn > from && turn < to;
+    // No acceleration, no vertex (and no division: `-v / 0` would be `±∞` or NaN, outside).
+    let vertex_inside = a != 0.0 && {
+        let turn = -v / a;
+        turn > from && turn < to
+    };
     if vertex_inside {
         let vertex = p - 0.5 * v * (v / a);
         lo = lo.min(vertex);

@@ -188,6 +188,11 @@ fn first_plane_contact<const D: usize>(
 /// any: the smaller of two distinct roots when `q > 0`, the larger when `q < 0`, the root of
 /// a falling line when `q = 0`. A double root is a tangency: none.
 fn entry_root(c: f64, b: f64, q: f64) -> Option<f64> {
+    if q == 0.0 {
+        // `solve_quadratic`'s linear case, without its general checks: the root of a falling
+        // line (`b < 0`; finite values only).
+        return (b < 0.0 && b.is_finite() && c.is_finite()).then(|| -c / b);
+    }
     let roots = solve_quadratic(q, b, c);
     match *roots.as_slice() {
         [r1, r2] if r1 < r2 => Some(if q > 0.0 { r1 } else { r2 }),
