@@ -15,9 +15,11 @@ use super::length_unit::{LengthUnit, largest};
 use super::window_box::{MARGIN, with_underflow};
 use crate::path::Segment;
 
-/// How many segments, from a path's first, keep a box of their own ([`PathBounds::segment`]):
-/// enough for a pool ball's slide, roll and rest, and for the seed's friction ball; later
-/// segments share the box of the whole path, which is still a bound, if a loose one.
+/// How many segments, from a path's first, keep a box of their own by default
+/// ([`PathBounds::segments_apart`]): enough for a pool ball's slide, roll and rest, and for
+/// the seed's friction ball; later segments share the box of the whole path, which is still a
+/// bound, if a loose one. Bounds kept for long (the calendar's, one per ball) keep none, for
+/// memory.
 pub(crate) const SEGMENT_BOXES: usize = 4;
 
 /// An axis-aligned box: the least and greatest value on each axis.
@@ -60,13 +62,13 @@ impl<const D: usize> AxisBox<D> {
 }
 
 /// What the screens need of one valid path: the box its centre stays in from its first start
-/// on, and the box of each of its first [`SEGMENT_BOXES`] segments; a bound on the magnitudes
-/// that formed the boxes (for the margin), and the largest magnitude of any of its segments'
-/// components (for the pair's unit of length).
+/// on, and the box of each of its first `S` segments ([`SEGMENT_BOXES`] unless said); a bound
+/// on the magnitudes that formed the boxes (for the margin), and the largest magnitude of any
+/// of its segments' components (for the pair's unit of length).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct PathBounds<const D: usize> {
+pub(crate) struct PathBounds<const D: usize, const S: usize = SEGMENT_BOXES> {
     whole: AxisBox<D>,
-    segments: [AxisBox<D>; SEGMENT_BOXES],
+    segments: [AxisBox<D>; S],
     size: f64,
     /// What underflow can cost the boxes ([`with_underflow`]).
     spread: f64,
@@ -92,7 +94,7 @@ fn greater(x: f64, y: f64) -> f64 {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Reach(f64);
 
-impl<const D: usize> PathBounds<D> {
+impl<const D: usize, const S: usize> PathBounds<D, S> {
     /// The bounds of a valid path (checked segments, [`Path::segments`](crate::Path::segments)).
     ///
     /// Per segment and axis, the coordinate `p + v·s + ½·a·s²` over the segment's span
@@ -105,7 +107,7 @@ impl<const D: usize> PathBounds<D> {
     pub(crate) fn of(segments: &[Segment<D>]) -> Self {
         let mut bounds = Self {
             whole: AxisBox::EMPTY,
-            segments: [AxisBox::EVERYWHERE; SEGMENT_BOXES],
+            segments: [AxisBox::EVERYWHERE; S],
             size: 0.0,
             spread: 0.0,
             largest: 0.0,
@@ -205,7 +207,7 @@ impl<const D: usize> PathBounds<D> {
 
     /// Whether balls on segment `i` of this path and segment `j` of the other's provably keep
     /// out of the reach of each other while both are on them (a window of the pair): their
-    /// boxes (the whole path's, for a segment past the first [`SEGMENT_BOXES`]), grown by it,
+    /// boxes (the whole path's, for a segment past the first `S`), grown by it,
     /// are disjoint on some axis.
     #[inline(always)]
     pub(crate) fn segments_apart(&self, i: usize, other: &Self, j: usize, reach: Reach) -> bool {
@@ -227,8 +229,11 @@ mod tests {
     use super::*;
     use nalgebra::Vector2 as V;
 
+    /// Bounds with the default segment boxes.
+    type Bounds = PathBounds<2>;
+
     fn apart(a: &[Segment<2>], b: &[Segment<2>], radius: f64) -> bool {
-        let (a, b) = (PathBounds::of(a), PathBounds::of(b));
+        let (a, b) = (Bounds::of(a), Bounds::of(b));
         a.apart(&b, a.reach(&b, radius))
     }
 
@@ -268,8 +273,8 @@ mod tests {
         // A rests at x = 0 and then at x = 10, B the other way round: the whole boxes overlap,
         // the boxes of the segments active together do not.
         let rest = |start: f64, x: f64| Segment::at_rest(start, V::new(x, 0.0));
-        let a = PathBounds::of(&[rest(0.0, 0.0), rest(1.0, 10.0)]);
-        let b = PathBounds::of(&[rest(0.0, 10.0), rest(1.0, 0.0)]);
+        let a = Bounds::of(&[rest(0.0, 0.0), rest(1.0, 10.0)]);
+        let b = Bounds::of(&[rest(0.0, 10.0), rest(1.0, 0.0)]);
         let reach = a.reach(&b, 1.0);
         assert!(!a.apart(&b, reach));
         assert!(a.segments_apart(0, &b, 0, reach) && a.segments_apart(1, &b, 1, reach));
@@ -278,7 +283,7 @@ mod tests {
         let many: Vec<_> = (0..6)
             .map(|k| rest(k as f64, 10.0 * (k % 2) as f64))
             .collect();
-        let many = PathBounds::of(&many);
+        let many = Bounds::of(&many);
         assert!(many.segments_apart(0, &b, 0, reach)); // x = 0 against x = 10
         assert!(!many.segments_apart(SEGMENT_BOXES, &b, 0, reach)); // [0, 10] against 10
     }
@@ -290,7 +295,7 @@ mod tests {
             Segment::new(1.0, V::new(1e9, 0.0), V::zeros(), V::zeros()), // empty
             Segment::at_rest(1.0, V::new(0.0, 0.0)),
         ];
-        let bounds = PathBounds::of(&a);
+        let bounds = Bounds::of(&a);
         assert_eq!(
             bounds.whole,
             AxisBox {

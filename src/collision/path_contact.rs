@@ -11,7 +11,7 @@
 //! ([`length_unit`](super::length_unit)), so that the answer does not depend on it.
 
 use super::length_unit::LengthUnit;
-use super::path_bounds::PathBounds;
+use super::path_bounds::{PathBounds, SEGMENT_BOXES};
 use super::stage_counts::{Stage, count};
 use super::straight::straight_window;
 use super::window_box::apart_on_window;
@@ -82,7 +82,7 @@ pub(crate) fn first_path_contact<const D: usize>(
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
-    first_bounded_contact(
+    first_bounded_contact::<D, SEGMENT_BOXES>(
         (a, &PathBounds::of(a)),
         (b, &PathBounds::of(b)),
         radii,
@@ -103,7 +103,7 @@ pub fn path_collision_time_unscreened<const D: usize>(
 ) -> Result<Option<f64>, InputError> {
     let (radius, t_max) = checked(radius, options)?;
     let (a, b) = (a.segments(), b.segments());
-    Ok(first_screened_contact::<D, false>(
+    Ok(first_screened_contact::<D, SEGMENT_BOXES, false>(
         (a, &PathBounds::of(a)),
         (b, &PathBounds::of(b)),
         [radius, 0.0],
@@ -114,20 +114,20 @@ pub fn path_collision_time_unscreened<const D: usize>(
 /// [`first_path_contact`] with each path's bounds given (a batch computes a broadcast path's
 /// once); inlined into each vector copy of the batch.
 #[inline(always)]
-pub(crate) fn first_bounded_contact<const D: usize>(
-    a: (&[Segment<D>], &PathBounds<D>),
-    b: (&[Segment<D>], &PathBounds<D>),
+pub(crate) fn first_bounded_contact<const D: usize, const S: usize>(
+    a: (&[Segment<D>], &PathBounds<D, S>),
+    b: (&[Segment<D>], &PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
-    first_screened_contact::<D, true>(a, b, radii, t_max)
+    first_screened_contact::<D, S, true>(a, b, radii, t_max)
 }
 
 /// The search, with the screens that prove balls apart (`SCREENS`) or without them.
 #[inline(always)]
-fn first_screened_contact<const D: usize, const SCREENS: bool>(
-    (a, bounds_a): (&[Segment<D>], &PathBounds<D>),
-    (b, bounds_b): (&[Segment<D>], &PathBounds<D>),
+fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
+    (a, bounds_a): (&[Segment<D>], &PathBounds<D, S>),
+    (b, bounds_b): (&[Segment<D>], &PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {

@@ -96,8 +96,9 @@ pub struct CollisionSchedule<const D: usize> {
     paths: Vec<Path<D>>,
     /// Per ball, with a grid of one cell (else empty): its path's bounds, for the pair search
     /// (formed once per path, not per pair; with many balls, forming them again from the
-    /// segments the search reads anyway costs less than reading them from memory).
-    bounds: Vec<PathBounds<D>>,
+    /// segments the search reads anyway costs less than reading them from memory). Without
+    /// segment boxes (`0`): the calendar keeps them for long, and its paths are short.
+    bounds: Vec<PathBounds<D, 0>>,
     radii: Vec<f64>,
     walls: Option<Walls<D>>,
     t_max: f64,
@@ -654,7 +655,7 @@ impl<const D: usize> CollisionSchedule<D> {
                 .map(|s| s.capacity() * size_of::<Segment<D>>())
                 .sum::<usize>();
         let per_ball = self.radii.capacity() * size_of::<f64>()
-            + self.bounds.capacity() * size_of::<PathBounds<D>>()
+            + self.bounds.capacity() * size_of::<PathBounds<D, 0>>()
             + self.versions.capacity() * size_of::<u32>()
             + self.boxes.capacity() * size_of::<Reach<D>>()
             + self.ranges.capacity() * size_of::<CellRange<D>>()
