@@ -53,10 +53,32 @@ impl<K: Key> Queue<K> {
     /// Sets ball `i`'s key.
     pub(crate) fn set(&mut self, i: usize, key: K) {
         self.keys[i] = key;
-        let mut node = (self.leaves + i) / 2;
-        while node >= 1 {
-            self.tree[node] = self.winner(2 * node, 2 * node + 1);
+        // Up from the leaf, each node's winner from the one coming up and its sibling's
+        // (the only child that did not change).
+        let mut node = self.leaves + i;
+        let mut up = i as u32;
+        while node > 1 {
+            let sibling = self.tree[node ^ 1];
+            up = match sibling {
+                NONE => up,
+                // Ties go left: to the lower ball.
+                s if node & 1 == 0 => {
+                    if self.keys[s as usize].before(&self.keys[up as usize]) {
+                        s
+                    } else {
+                        up
+                    }
+                }
+                s => {
+                    if self.keys[up as usize].before(&self.keys[s as usize]) {
+                        up
+                    } else {
+                        s
+                    }
+                }
+            };
             node /= 2;
+            self.tree[node] = up;
         }
     }
 
