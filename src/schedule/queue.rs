@@ -118,6 +118,33 @@ mod tests {
         }
     }
 
+    /// A key that orders by time only: ties are the queue's to break.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    struct Coarse(f64);
+
+    impl Key for Coarse {
+        fn before(&self, other: &Self) -> bool {
+            self.0 < other.0
+        }
+    }
+
+    #[test]
+    fn equal_keys_go_to_the_lowest_ball() {
+        let mut rng = Rng(11);
+        for n in [2usize, 3, 7, 16, 33] {
+            let mut keys = vec![Coarse(1.0); n];
+            let mut queue = Queue::new(keys.clone());
+            for _ in 0..300 {
+                let i = (rng.uniform(0.0, n as f64) as usize).min(n - 1);
+                keys[i] = Coarse(rng.uniform(0.0, 3.0).floor());
+                queue.set(i, keys[i]);
+                let least = keys.iter().map(|k| k.0).fold(f64::INFINITY, f64::min);
+                let lowest = keys.iter().position(|k| k.0 == least);
+                assert_eq!(queue.first(), lowest);
+            }
+        }
+    }
+
     #[test]
     fn the_first_key_is_always_the_least_after_random_changes() {
         let mut rng = Rng(7);
