@@ -202,13 +202,8 @@ mod tests {
 
     #[test]
     fn one_straight_segment_covers_what_the_general_sweep_does() {
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut draw = |lo: f64, hi: f64| {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1);
-            lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
-        };
+        let mut rng = crate::test_rng::Rng(17);
+        let mut draw = |lo: f64, hi: f64| rng.uniform(lo, hi);
         for n in 0..1000 {
             let v = [
                 draw(-3.0, 3.0),

@@ -330,13 +330,8 @@ mod tests {
             }
             best
         };
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut draw = |lo: f64, hi: f64| {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1);
-            lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
-        };
+        let mut rng = crate::test_rng::Rng(13);
+        let mut draw = |lo: f64, hi: f64| rng.uniform(lo, hi);
         let walls = unit_box();
         let mut hits = 0;
         for n in 0..2000 {
