@@ -53,10 +53,32 @@ impl<K: Key> Queue<K> {
     /// Sets ball `i`'s key.
     pub(crate) fn set(&mut self, i: usize, key: K) {
         self.keys[i] = key;
-        let mut node = (self.leaves + i) / 2;
-        while node >= 1 {
-            self.tree[node] = self.winner(2 * node, 2 * node + 1);
+        // Up from the leaf, each node's winner from the one coming up and its sibling's
+        // (the only child that did not change).
+        let mut node = self.leaves + i;
+        let mut up = i as u32;
+        while node > 1 {
+            let sibling = self.tree[node ^ 1];
+            up = match sibling {
+                NONE => up,
+                // Ties go left: to the lower ball.
+                s if node & 1 == 0 => {
+                    if self.keys[s as usize].before(&self.keys[up as usize]) {
+                        s
+                    } else {
+                        up
+                    }
+                }
+                s => {
+                    if self.keys[up as usize].before(&self.keys[s as usize]) {
+                        up
+                    } else {
+                        s
+                    }
+                }
+            };
             node /= 2;
+            self.tree[node] = up;
         }
     }
 
@@ -93,6 +115,33 @@ mod tests {
                 .total_cmp(&other.0)
                 .then(self.1.cmp(&other.1))
                 .is_lt()
+        }
+    }
+
+    /// A key that orders by time only: ties are the queue's to break.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    struct Coarse(f64);
+
+    impl Key for Coarse {
+        fn before(&self, other: &Self) -> bool {
+            self.0 < other.0
+        }
+    }
+
+    #[test]
+    fn equal_keys_go_to_the_lowest_ball() {
+        let mut rng = Rng(11);
+        for n in [2usize, 3, 7, 16, 33] {
+            let mut keys = vec![Coarse(1.0); n];
+            let mut queue = Queue::new(keys.clone());
+            for _ in 0..300 {
+                let i = (rng.uniform(0.0, n as f64) as usize).min(n - 1);
+                keys[i] = Coarse(rng.uniform(0.0, 3.0).floor());
+                queue.set(i, keys[i]);
+                let least = keys.iter().map(|k| k.0).fold(f64::INFINITY, f64::min);
+                let lowest = keys.iter().position(|k| k.0 == least);
+                assert_eq!(queue.first(), lowest);
+            }
         }
     }
 

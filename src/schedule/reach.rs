@@ -47,8 +47,22 @@ pub(crate) fn reach<const D: usize>(
     t0: f64,
     t1: f64,
 ) -> Reach<D> {
-    let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
     let late = t0.abs().max(if t1.is_finite() { t1.abs() } else { 0.0 });
+    if let [segment] = segments
+        && segment.start <= t0
+        && t0 <= t1
+        && t1 < f64::INFINITY
+        && segment.acceleration.iter().all(|&a| a == 0.0)
+    {
+        return straight_reach(
+            segment,
+            radius,
+            t0 - segment.start,
+            t1 - segment.start,
+            late,
+        );
+    }
+    let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
     let mut size = 0.0;
     for (segment, end) in spans(segments) {
         if segment.start > t1 {
@@ -72,6 +86,33 @@ pub(crate) fn reach<const D: usize>(
             size += magnitude + late * (v.abs() + a.abs() * length);
         }
     }
+    grown(lo, hi, size, radius)
+}
+
+/// [`reach`] of one segment without acceleration over `[from, to]` after its start
+/// (`0 ≤ from ≤ to < ∞`, `late` as there): the same box, each coordinate's range between
+/// its two ends.
+fn straight_reach<const D: usize>(
+    segment: &Segment<D>,
+    radius: f64,
+    from: f64,
+    to: f64,
+    late: f64,
+) -> Reach<D> {
+    let (mut lo, mut hi) = ([0.0; D], [0.0; D]);
+    let mut size = 0.0;
+    for k in 0..D {
+        let (p, v) = (segment.position[k], segment.velocity[k]);
+        let (start, end) = (p + v * from, p + v * to);
+        (lo[k], hi[k]) = if v >= 0.0 { (start, end) } else { (end, start) };
+        size += (p.abs() + v.abs() * to) + late * v.abs();
+    }
+    grown(lo, hi, size, radius)
+}
+
+/// The box from `lo` to `hi` grown by the radius and the margin, `size` the sum of the
+/// magnitudes that formed it so far.
+fn grown<const D: usize>(lo: [f64; D], hi: [f64; D], mut size: f64, radius: f64) -> Reach<D> {
     let mut extent = 0.0_f64;
     for k in 0..D {
         size += lo[k].abs().max(hi[k].abs());
@@ -157,6 +198,31 @@ mod tests {
         let r = reach(&up, 0.1, 0.0, f64::INFINITY);
         assert_eq!(r.lo[1], f64::NEG_INFINITY);
         assert_eq!(r.lo[0], f64::NEG_INFINITY); // an unbounded box prunes nothing
+    }
+
+    #[test]
+    fn one_straight_segment_covers_what_the_general_sweep_does() {
+        let mut rng = crate::test_rng::Rng(17);
+        let mut draw = |lo: f64, hi: f64| rng.uniform(lo, hi);
+        for n in 0..1000 {
+            let v = [
+                draw(-3.0, 3.0),
+                if n % 5 == 0 { 0.0 } else { draw(-3.0, 3.0) },
+            ];
+            let one = segment(
+                draw(0.0, 2.0),
+                [draw(-1.0, 1.0), draw(-1.0, 1.0)],
+                v,
+                [0.0; 2],
+            );
+            let t0 = one.start + if n % 7 == 0 { 0.0 } else { draw(0.0, 1.0) };
+            let t1 = t0 + if n % 11 == 0 { 0.0 } else { draw(0.0, 1.0) };
+            // The same motion with a later segment that starts after the span: the general
+            // sweep over segments, which stops before that one.
+            let later = segment(t1 + 1.0, [5.0, 5.0], [0.0; 2], [0.0; 2]);
+            let expected = reach(&[one, later], 0.25, t0, t1);
+            assert_eq!(reach(&[one], 0.25, t0, t1), expected, "{one:?} {t0} {t1}");
+        }
     }
 
     #[test]

@@ -113,14 +113,31 @@ pub(crate) fn first_wall_contact<const D: usize>(
     t_max: f64,
 ) -> Option<(f64, usize, Side)> {
     let mut best: Option<(f64, usize, Side)> = None;
+    // Strictly earlier only: the loops visit axes and sides in tie order.
+    let mut consider = |hit: Option<(f64, Side)>, axis: usize| {
+        if let Some((t, side)) = hit
+            && best.is_none_or(|(b, _, _)| t < b)
+        {
+            best = Some((t, axis, side));
+        }
+    };
+    let straight = match segments {
+        [segment] => Some(segment),
+        _ => None,
+    };
     for axis in 0..D {
+        if let Some(segment) = straight.filter(|s| s.acceleration[axis] == 0.0) {
+            // One segment, no acceleration on this axis: only the wall the velocity points
+            // to can be reached (the other plane's distance never falls).
+            consider(
+                straight_plane_contact(segment, radius, walls, axis, t_max),
+                axis,
+            );
+            continue;
+        }
         for side in [Side::Low, Side::High] {
-            if let Some(t) = first_plane_contact(segments, radius, walls, axis, side, t_max) {
-                // Strictly earlier only: the loops visit axes and sides in tie order.
-                if best.is_none_or(|(b, _, _)| t < b) {
-                    best = Some((t, axis, side));
-                }
-            }
+            let hit = first_plane_contact(segments, radius, walls, axis, side, t_max);
+            consider(hit.map(|t| (t, side)), axis);
         }
     }
     best
@@ -144,6 +161,37 @@ fn plane_distance<const D: usize>(
         Side::Low => ((x - walls.lo[axis]) - radius, v, 0.5 * a),
         Side::High => ((walls.hi[axis] - x) - radius, -v, -0.5 * a),
     }
+}
+
+/// [`first_plane_contact`] on the one wall of `axis` that a one-segment path without
+/// acceleration on that axis can reach: the same answer, for that wall, without the other's
+/// search (which finds none).
+fn straight_plane_contact<const D: usize>(
+    segment: &Segment<D>,
+    radius: f64,
+    walls: &Walls<D>,
+    axis: usize,
+    t_max: f64,
+) -> Option<(f64, Side)> {
+    if segment.start >= t_max {
+        return None;
+    }
+    let v = segment.velocity[axis];
+    let side = if v < 0.0 {
+        Side::Low
+    } else if v > 0.0 {
+        Side::High
+    } else {
+        return None;
+    };
+    let (c, b, q) = plane_distance(segment, radius, walls, axis, side);
+    if c <= 0.0 {
+        // On or beyond the plane at the first start, moving towards the wall.
+        return Some((segment.start, side));
+    }
+    let s = entry_root(c, b, q).filter(|&s| s > 0.0 && s < f64::INFINITY)?;
+    let t = segment.start + s;
+    (t < t_max).then_some((t, side))
 }
 
 /// The first entry of one wall's plane, from the path's first start.
@@ -264,6 +312,48 @@ mod tests {
         assert_eq!(hit, Some((3.0, 0, Side::High)));
         // Not before the horizon.
         assert_eq!(first_wall_contact(&p, 0.25, &unit_box(), 3.0), None);
+    }
+
+    #[test]
+    fn one_straight_segment_gets_the_answer_of_every_plane_searched() {
+        // The general search over all four planes, in tie order.
+        let general = |p: &[Segment<2>], r: f64, w: &Walls<2>, t_max: f64| {
+            let mut best: Option<(f64, usize, Side)> = None;
+            for axis in 0..2 {
+                for side in [Side::Low, Side::High] {
+                    if let Some(t) = first_plane_contact(p, r, w, axis, side, t_max)
+                        && best.is_none_or(|(b, _, _)| t < b)
+                    {
+                        best = Some((t, axis, side));
+                    }
+                }
+            }
+            best
+        };
+        let mut rng = crate::test_rng::Rng(13);
+        let mut draw = |lo: f64, hi: f64| rng.uniform(lo, hi);
+        let walls = unit_box();
+        let mut hits = 0;
+        for n in 0..2000 {
+            // Some axes at rest, some balls beyond a plane, some with an acceleration.
+            let pick = |x: f64, k: usize| if n % (3 + k) == 0 { 0.0 } else { x };
+            let v = [pick(draw(-2.0, 2.0), 0), pick(draw(-2.0, 2.0), 1)];
+            let a = [if n % 2 == 0 { 0.0 } else { draw(-1.0, 1.0) }, 0.0];
+            let p = path(&[(draw(0.0, 2.0), [draw(-0.1, 1.1), draw(-0.1, 1.1)], v, a)]);
+            let t_max = if n % 4 == 0 {
+                draw(0.0, 3.0)
+            } else {
+                f64::INFINITY
+            };
+            let expected = general(&p, 0.125, &walls, t_max);
+            hits += usize::from(expected.is_some());
+            assert_eq!(
+                first_wall_contact(&p, 0.125, &walls, t_max),
+                expected,
+                "{p:?}"
+            );
+        }
+        assert!(hits > 1000);
     }
 
     #[test]
