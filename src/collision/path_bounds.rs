@@ -43,13 +43,15 @@ impl<const D: usize> AxisBox<D> {
         hi: [f64::INFINITY; D],
     };
 
-    /// The smallest box holding both.
+    /// The smallest box holding both. `min` and `max` may drop a NaN: harmless here, because
+    /// a box value is NaN only where a product overflowed, and then the path's `size` is
+    /// infinite or NaN too, so that no box of it proves anything.
     #[inline(always)]
     fn union(self, other: Self) -> Self {
         let mut out = self;
         for i in 0..D {
-            out.lo[i] = lesser(self.lo[i], other.lo[i]);
-            out.hi[i] = greater(self.hi[i], other.hi[i]);
+            out.lo[i] = self.lo[i].min(other.lo[i]);
+            out.hi[i] = self.hi[i].max(other.hi[i]);
         }
         out
     }
@@ -73,20 +75,6 @@ pub(crate) struct PathBounds<const D: usize, const S: usize = SEGMENT_BOXES> {
     /// What underflow can cost the boxes ([`with_underflow`]).
     spread: f64,
     largest: f64,
-}
-
-/// The smaller of two numbers; it may drop a NaN (harmless here: a box value is NaN only
-/// where a product overflowed, and then `size` is infinite or NaN too, so that no box proves
-/// anything).
-#[inline(always)]
-fn lesser(x: f64, y: f64) -> f64 {
-    x.min(y)
-}
-
-/// The larger of two numbers (NaNs as in [`lesser`]).
-#[inline(always)]
-fn greater(x: f64, y: f64) -> f64 {
-    x.max(y)
 }
 
 /// The distance beyond which two balls are proven apart: the contact distance `radius` and
@@ -153,8 +141,9 @@ impl<const D: usize, const S: usize> PathBounds<D, S> {
                 let middle = p[i] + 0.5 * v[i] * length;
                 let end = p[i] + (v[i] + 0.5 * a[i] * length) * length;
                 size += p[i].abs() + (v[i].abs() + a[i].abs() * length) * length;
-                hull.lo[i] = lesser(lesser(p[i], middle), end);
-                hull.hi[i] = greater(greater(p[i], middle), end);
+                // (NaNs as in `AxisBox::union`.)
+                hull.lo[i] = p[i].min(middle).min(end);
+                hull.hi[i] = p[i].max(middle).max(end);
             }
             if let Some(slot) = slot {
                 *slot = hull;

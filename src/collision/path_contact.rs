@@ -56,20 +56,27 @@ pub fn path_collision_time<const D: usize>(
     radius: f64,
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
-    let (radius, t_max) = checked(radius, options)?;
-    Ok(first_path_contact(
-        a.segments(),
-        b.segments(),
-        [radius, 0.0],
-        t_max,
-    ))
+    single_query::<D, true>(a, b, radius, options)
 }
 
-/// A single query's radius and horizon, checked.
-fn checked(radius: f64, options: &CollisionOptions) -> Result<(f64, f64), InputError> {
-    Ok((
-        check_radius("radius", radius)?,
-        check_horizon("t_max", options.t_max)?,
+/// A single query: its radius and horizon checked, then the search, with the screens that
+/// prove balls apart (`SCREENS`) or without them.
+fn single_query<const D: usize, const SCREENS: bool>(
+    a: &Path<D>,
+    b: &Path<D>,
+    radius: f64,
+    options: &CollisionOptions,
+) -> Result<Option<f64>, InputError> {
+    let radius = check_radius("radius", radius)?;
+    let t_max = check_horizon("t_max", options.t_max)?;
+    let (a, b) = (a.segments(), b.segments());
+    let bounds = (PathBounds::of(a), PathBounds::of(b));
+    let (a, b) = ((a, &bounds.0), (b, &bounds.1));
+    Ok(first_screened_contact::<D, SEGMENT_BOXES, SCREENS>(
+        a,
+        b,
+        [radius, 0.0],
+        t_max,
     ))
 }
 
@@ -101,14 +108,7 @@ pub fn path_collision_time_unscreened<const D: usize>(
     radius: f64,
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
-    let (radius, t_max) = checked(radius, options)?;
-    let (a, b) = (a.segments(), b.segments());
-    Ok(first_screened_contact::<D, SEGMENT_BOXES, false>(
-        (a, &PathBounds::of(a)),
-        (b, &PathBounds::of(b)),
-        [radius, 0.0],
-        t_max,
-    ))
+    single_query::<D, false>(a, b, radius, options)
 }
 
 /// [`first_path_contact`] with each path's bounds given (a batch computes a broadcast path's

@@ -129,10 +129,10 @@ pub(crate) fn first_wall_contact<const D: usize>(
         if let Some(segment) = straight.filter(|s| s.acceleration[axis] == 0.0) {
             // One segment, no acceleration on this axis: only the wall the velocity points
             // to can be reached (the other plane's distance never falls).
-            consider(
-                straight_plane_contact(segment, radius, walls, axis, t_max),
-                axis,
-            );
+            if let Some(side) = facing(segment.velocity[axis]) {
+                let hit = first_plane_contact(segments, radius, walls, axis, side, t_max);
+                consider(hit.map(|t| (t, side)), axis);
+            }
             continue;
         }
         for side in [Side::Low, Side::High] {
@@ -163,35 +163,15 @@ fn plane_distance<const D: usize>(
     }
 }
 
-/// [`first_plane_contact`] on the one wall of `axis` that a one-segment path without
-/// acceleration on that axis can reach: the same answer, for that wall, without the other's
-/// search (which finds none).
-fn straight_plane_contact<const D: usize>(
-    segment: &Segment<D>,
-    radius: f64,
-    walls: &Walls<D>,
-    axis: usize,
-    t_max: f64,
-) -> Option<(f64, Side)> {
-    if segment.start >= t_max {
-        return None;
-    }
-    let v = segment.velocity[axis];
-    let side = if v < 0.0 {
-        Side::Low
+/// The wall a velocity component `v` points to (none for 0).
+fn facing(v: f64) -> Option<Side> {
+    if v < 0.0 {
+        Some(Side::Low)
     } else if v > 0.0 {
-        Side::High
+        Some(Side::High)
     } else {
-        return None;
-    };
-    let (c, b, q) = plane_distance(segment, radius, walls, axis, side);
-    if c <= 0.0 {
-        // On or beyond the plane at the first start, moving towards the wall.
-        return Some((segment.start, side));
+        None
     }
-    let s = entry_root(c, b, q).filter(|&s| s > 0.0 && s < f64::INFINITY)?;
-    let t = segment.start + s;
-    (t < t_max).then_some((t, side))
 }
 
 /// The first entry of one wall's plane, from the path's first start.
