@@ -34,4 +34,11 @@ proptest! {
     fn paths_keep_their_invariants((case, k) in path_strategies::path_case()) {
         path_invariants::path(&case, k).map_err(TestCaseError::fail)?;
     }
+
+    #[test]
+    fn paths_keep_their_invariants_at_the_chord_screens_edge(
+        (case, k) in path_strategies::grazing_case()
+    ) {
+        path_invariants::path(&case, k).map_err(TestCaseError::fail)?;
+    }
 }

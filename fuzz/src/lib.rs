@@ -332,7 +332,7 @@ pub fn poly_case(u: &mut Unstructured) -> Result<(Vec<f64>, i32, i32)> {
 /// (0, small, or any) by durations that are small, table-like or any size (now and then
 /// one that goes back in time; now and then 2²⁰…2⁴⁵ long), positions and velocities like
 /// [`ball`]'s, accelerations like frictions of either sign (now and then subnormal); one path
-/// in eight has one value no path may hold (NaN, ±∞), so
+/// in three ends at rest; one path in eight has one value no path may hold (NaN, ±∞), so
 /// that the checks of invalid paths are fuzzed too.
 fn path(u: &mut Unstructured, s: i32) -> Result<Vec<SegmentInput>> {
     let n = u.int_in_range(1..=6)?;
@@ -369,6 +369,10 @@ fn path(u: &mut Unstructured, s: i32) -> Result<Vec<SegmentInput>> {
             *x = if u.arbitrary()? { -a } else { a };
         }
         segments.push(row);
+    }
+    // One path in three ends at rest, as a ball that stops (the chord screen's case).
+    if u.ratio(1, 3)? {
+        segments[n - 1][4..].fill(0.0);
     }
     if u.ratio(1, 8)? {
         let bad = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY][u.int_in_range(0..=2)?];

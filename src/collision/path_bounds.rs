@@ -82,6 +82,24 @@ pub(crate) struct PathBounds<const D: usize, const S: usize = SEGMENT_BOXES> {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Reach(f64);
 
+impl Reach {
+    /// The distance itself.
+    #[inline(always)]
+    pub(crate) fn distance(self) -> f64 {
+        self.0
+    }
+}
+
+/// The least and greatest Bernstein control values of `p + v·s + ½·a·s²` over `s ∈ [0, L]`:
+/// `p`, `p + ½·v·L` and `p + v·L + ½·a·L²`, whose hull holds the quadratic's values there.
+/// `min` and `max` may drop a NaN (see [`AxisBox::union`]).
+#[inline(always)]
+pub(crate) fn bernstein_hull(p: f64, v: f64, a: f64, length: f64) -> [f64; 2] {
+    let middle = p + 0.5 * v * length;
+    let end = p + (v + 0.5 * a * length) * length;
+    [p.min(middle).min(end), p.max(middle).max(end)]
+}
+
 impl<const D: usize, const S: usize> PathBounds<D, S> {
     /// The bounds of a valid path (checked segments, [`Path::segments`](crate::Path::segments)).
     ///
@@ -138,12 +156,8 @@ impl<const D: usize, const S: usize> PathBounds<D, S> {
             spread += D as f64 * reach * reach;
             let mut hull = AxisBox::EMPTY;
             for i in 0..D {
-                let middle = p[i] + 0.5 * v[i] * length;
-                let end = p[i] + (v[i] + 0.5 * a[i] * length) * length;
                 size += p[i].abs() + (v[i].abs() + a[i].abs() * length) * length;
-                // (NaNs as in `AxisBox::union`.)
-                hull.lo[i] = p[i].min(middle).min(end);
-                hull.hi[i] = p[i].max(middle).max(end);
+                [hull.lo[i], hull.hi[i]] = bernstein_hull(p[i], v[i], a[i], length);
             }
             if let Some(slot) = slot {
                 *slot = hull;

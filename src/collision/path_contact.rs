@@ -10,6 +10,7 @@
 //! full accuracy; and every length is first divided by the pair's unit of length
 //! ([`length_unit`](super::length_unit)), so that the answer does not depend on it.
 
+use super::chord_normals::apart_across_chords;
 use super::length_unit::LengthUnit;
 use super::path_bounds::{PathBounds, SEGMENT_BOXES};
 use super::stage_counts::{Stage, count};
@@ -137,6 +138,10 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
     let reach = bounds_a.reach(bounds_b, radii[0] + radii[1]);
     if SCREENS && bounds_a.apart(bounds_b, reach) {
         count(Stage::BoundsApart);
+        return None;
+    }
+    if SCREENS && apart_across_chords(a, b, reach) {
+        count(Stage::ChordsApart);
         return None;
     }
     let unit = bounds_a.pair_unit(bounds_b, radii);

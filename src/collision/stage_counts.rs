@@ -21,6 +21,8 @@ pub struct StageCounts {
     pub path_pairs: u64,
     /// Of those, the pairs whose whole-path bounds are apart (`path_bounds`): no window.
     pub bounds_apart: u64,
+    /// Of the others, the pairs apart across either path's chord (`chord_normals`): no window.
+    pub chords_apart: u64,
     /// Windows formed for the pairs left (`path_contact`).
     pub windows: u64,
     /// Windows whose two segments' boxes (`path_bounds`) are apart: no motion formed.
@@ -41,6 +43,7 @@ pub struct StageCounts {
 pub(crate) enum Stage {
     PathPair,
     BoundsApart,
+    ChordsApart,
     Window,
     WindowSegmentsApart,
     WindowBoxApart,
@@ -50,7 +53,7 @@ pub(crate) enum Stage {
 }
 
 #[cfg(feature = "stage-counts")]
-static COUNTS: [AtomicU64; 8] = [const { AtomicU64::new(0) }; 8];
+static COUNTS: [AtomicU64; 9] = [const { AtomicU64::new(0) }; 9];
 
 /// Counts one event of `stage` (nothing without the feature).
 #[inline(always)]
@@ -84,12 +87,13 @@ pub(crate) fn count(stage: Stage) {
 /// ```
 pub fn take() -> StageCounts {
     #[cfg(feature = "stage-counts")]
-    let c: [u64; 8] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
+    let c: [u64; 9] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
     #[cfg(not(feature = "stage-counts"))]
-    let c = [0u64; 8];
+    let c = [0u64; 9];
     StageCounts {
         path_pairs: c[Stage::PathPair as usize],
         bounds_apart: c[Stage::BoundsApart as usize],
+        chords_apart: c[Stage::ChordsApart as usize],
         windows: c[Stage::Window as usize],
         windows_segments_apart: c[Stage::WindowSegmentsApart as usize],
         windows_box_apart: c[Stage::WindowBoxApart as usize],

@@ -12,8 +12,8 @@ use super::strategies::{case_scale, friction, length, radius, small, t_max, tabl
 /// decoder draws them: starts from a first one (0, small or any) by durations that are
 /// small, table-like or any size (now and then one back in time), positions and velocities
 /// like a ball's, accelerations like frictions of either sign (now and then subnormal, on
-/// segments now and then 2²⁰…2⁴⁵ long); one path in eight has one
-/// value no path may hold (NaN, ±∞).
+/// segments now and then 2²⁰…2⁴⁵ long); one path in three ends at rest; one path in eight
+/// has one value no path may hold (NaN, ±∞).
 pub fn path(s: i32) -> impl Strategy<Value = Vec<SegmentInput>> {
     let first = prop_oneof![2 => Just(0.0), 1 => small(), 1 => wide()];
     let step = prop_oneof![
@@ -37,28 +37,38 @@ pub fn path(s: i32) -> impl Strategy<Value = Vec<SegmentInput>> {
         1 => (0usize..60, prop_oneof![Just(f64::NAN), Just(f64::INFINITY), Just(f64::NEG_INFINITY)])
             .prop_map(Some),
     ];
-    (first, prop::collection::vec((step, values), 1..=6), bad).prop_map(|(first, rows, bad)| {
-        let mut start = first;
-        let mut path: Vec<SegmentInput> = rows
-            .into_iter()
-            .enumerate()
-            .map(|(k, (step, (lengths, accelerations)))| {
-                if k > 0 {
-                    start += step;
-                }
-                let mut row = [0.0; 10];
-                row[0] = start;
-                row[1..7].copy_from_slice(&lengths);
-                row[7..].copy_from_slice(&accelerations);
-                row
-            })
-            .collect();
-        if let Some((at, x)) = bad {
-            let n = path.len();
-            path[(at / 10) % n][at % 10] = x;
-        }
-        path
-    })
+    let rests = prop_oneof![2 => Just(false), 1 => Just(true)];
+    (
+        first,
+        prop::collection::vec((step, values), 1..=6),
+        rests,
+        bad,
+    )
+        .prop_map(|(first, rows, rests, bad)| {
+            let mut start = first;
+            let mut path: Vec<SegmentInput> = rows
+                .into_iter()
+                .enumerate()
+                .map(|(k, (step, (lengths, accelerations)))| {
+                    if k > 0 {
+                        start += step;
+                    }
+                    let mut row = [0.0; 10];
+                    row[0] = start;
+                    row[1..7].copy_from_slice(&lengths);
+                    row[7..].copy_from_slice(&accelerations);
+                    row
+                })
+                .collect();
+            if rests && let Some(last) = path.last_mut() {
+                last[4..].fill(0.0);
+            }
+            if let Some((at, x)) = bad {
+                let n = path.len();
+                path[(at / 10) % n][at % 10] = x;
+            }
+            path
+        })
 }
 /// A query on two paths sharing one scale, 2-D or 3-D, and the exponent of a length scaling.
 pub fn path_case() -> impl Strategy<Value = (PathCase, i32)> {
@@ -84,4 +94,104 @@ pub fn path_case() -> impl Strategy<Value = (PathCase, i32)> {
                 )
             })
     })
+}
+
+/// A pair aimed at the edge of the chord screen (`collision/chord_normals.rs`), where its
+/// proof and the search's answer meet: A rolls straight to rest along `v` (a friction ball),
+/// now and then after a slide that curls it off that line; B rests beside A's chord, or rolls
+/// alongside it, `h` from A's chord line; the contact distance is `h·(1 ± δ)`, `δ` from
+/// 10⁻¹⁵ to 10⁻², so that the balls just touch or just miss (or overlap at the start) where
+/// B is level with A's run. Lengths are scaled by `2^s` for `s` across most of the float range,
+/// times start from 0 or a late time; 2-D or 3-D (at one height).
+pub fn grazing_case() -> impl Strategy<Value = (PathCase, i32)> {
+    let run = (
+        (-1.0f64..1.0, -1.0f64..1.0),
+        0.0f64..std::f64::consts::TAU,
+        0.1f64..3.0,
+        0.05f64..5.0,
+        prop_oneof![2 => Just(None), 1 => (0.01f64..0.3, -5.0f64..5.0, -5.0f64..5.0).prop_map(Some)],
+    );
+    let beside = (
+        -0.3f64..1.3,
+        1e-3f64..0.5,
+        any::<bool>(),
+        prop_oneof![Just(None), (-1.0f64..1.0).prop_map(Some)],
+    );
+    let closeness = (-15.0f64..-2.0, any::<bool>());
+    (
+        run,
+        beside,
+        closeness,
+        -500i32..=500,
+        prop_oneof![Just(0.0), Just(1e4), 0.0f64..100.0],
+        any::<bool>(),
+        -1100i32..=1100,
+    )
+        .prop_map(
+            |((p, angle, speed, mu, slide), (f, h, left, rolls), (d, wider), s, t0, three_d, k)| {
+                let scale = 2f64.powi(s);
+                let row = |start: f64, p: [f64; 2], v: [f64; 2], a: [f64; 2]| -> SegmentInput {
+                    let mut r = [0.0; 10];
+                    r[0] = t0 + start;
+                    for i in 0..2 {
+                        r[1 + i] = p[i] * scale;
+                        r[4 + i] = v[i] * scale;
+                        r[7 + i] = a[i] * scale;
+                    }
+                    r
+                };
+                // A: the slide (if any), then the straight roll to rest.
+                let mut a = Vec::new();
+                let (mut at, mut pos) = (0.0, [p.0, p.1]);
+                let mut vel = [speed * angle.cos(), speed * angle.sin()];
+                if let Some((length, ax, ay)) = slide {
+                    a.push(row(0.0, pos, vel, [ax, ay]));
+                    pos = [
+                        pos[0] + vel[0] * length + 0.5 * ax * length * length,
+                        pos[1] + vel[1] * length + 0.5 * ay * length * length,
+                    ];
+                    vel = [vel[0] + ax * length, vel[1] + ay * length];
+                    at = length;
+                }
+                let u = vel[0].hypot(vel[1]).max(1e-3);
+                let stop = u / mu;
+                let decel = [-mu * vel[0] / u, -mu * vel[1] / u];
+                a.push(row(at, pos, vel, decel));
+                let rest = [pos[0] + 0.5 * vel[0] * stop, pos[1] + 0.5 * vel[1] * stop];
+                a.push(row(at + stop, rest, [0.0; 2], [0.0; 2]));
+                // B: `h` off A's chord, level with the point a fraction `f` along it.
+                let chord = [rest[0] - p.0, rest[1] - p.1];
+                let length = chord[0].hypot(chord[1]).max(1e-300);
+                let side = if left { 1.0 } else { -1.0 };
+                let normal = [-chord[1] / length * side, chord[0] / length * side];
+                let beside = [
+                    p.0 + f * chord[0] + h * normal[0],
+                    p.1 + f * chord[1] + h * normal[1],
+                ];
+                let b = match rolls {
+                    None => vec![row(0.0, beside, [0.0; 2], [0.0; 2])],
+                    // Rolling alongside, started `lag` s later (or earlier), to rest.
+                    Some(lag) => {
+                        let start = [
+                            beside[0] - 0.5 * vel[0] * stop,
+                            beside[1] - 0.5 * vel[1] * stop,
+                        ];
+                        vec![
+                            row(lag.max(0.0), start, vel, decel),
+                            row(lag.max(0.0) + stop, beside, [0.0; 2], [0.0; 2]),
+                        ]
+                    }
+                };
+                let delta = 10f64.powf(d);
+                let radius = h * scale * if wider { 1.0 + delta } else { 1.0 - delta };
+                let case = PathCase {
+                    a,
+                    b,
+                    radius,
+                    t_max: f64::INFINITY,
+                    three_d,
+                };
+                (case, k)
+            },
+        )
 }
