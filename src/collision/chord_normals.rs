@@ -104,7 +104,7 @@ fn chord_normal<const D: usize>(segments: &[Segment<D>]) -> Option<[f64; D]> {
     let most = dx.abs().max(dy.abs());
     // A normal extent, so that the scale is finite and the components at most 1: a
     // subnormal chord (or a NaN or infinite one) has no normal.
-    if !(most >= f64::MIN_POSITIVE && most < f64::INFINITY) {
+    if !(f64::MIN_POSITIVE..f64::INFINITY).contains(&most) {
         return None;
     }
     let scale = 1.0 / most;

@@ -90,6 +90,28 @@ impl Reach {
     }
 }
 
+/// `radius` grown by the margin for the roundings made in forming boxes of the given `size`
+/// (the sum of the two paths'), before what underflow can cost them ([`with_underflow`]).
+#[inline(always)]
+fn reach_of(radius: f64, size: f64) -> f64 {
+    radius + MARGIN * (size + radius)
+}
+
+/// A segment's part, on one axis, of its path's size: a bound on the magnitudes that form its
+/// box there (`|p| + (|v| + |a|·L)·L`), from which the margin comes.
+#[inline(always)]
+fn axis_size(p: f64, v: f64, a: f64, length: f64) -> f64 {
+    p.abs() + (v.abs() + a.abs() * length) * length
+}
+
+/// A segment's part of its path's spread: what underflowing products can cost its box
+/// ([`with_underflow`]: at most `2⁻¹⁰⁷⁴·(1 + L)²` per axis, nothing divided here).
+#[inline(always)]
+fn segment_spread<const D: usize>(length: f64) -> f64 {
+    let reach = 1.0 + length;
+    D as f64 * reach * reach
+}
+
 /// The least and greatest Bernstein control values of `p + v·s + ½·a·s²` over `s ∈ [0, L]`:
 /// `p`, `p + ½·v·L` and `p + v·L + ½·a·L²`, whose hull holds the quadratic's values there.
 /// `min` and `max` may drop a NaN (see [`AxisBox::union`]).
@@ -150,13 +172,10 @@ impl<const D: usize, const S: usize> PathBounds<D, S> {
             for i in 0..D {
                 most[i] = largest([most[i], p[i], v[i], a[i]]);
             }
-            // The margin covers relative roundings, and what underflowing products can cost
-            // ([`with_underflow`]: at most `2⁻¹⁰⁷⁴·(1 + L)²` per axis, nothing divided here).
-            let reach = 1.0 + length;
-            spread += D as f64 * reach * reach;
+            spread += segment_spread::<D>(length);
             let mut hull = AxisBox::EMPTY;
             for i in 0..D {
-                size += p[i].abs() + (v[i].abs() + a[i].abs() * length) * length;
+                size += axis_size(p[i], v[i], a[i], length);
                 [hull.lo[i], hull.hi[i]] = bernstein_hull(p[i], v[i], a[i], length);
             }
             if let Some(slot) = slot {
@@ -196,7 +215,7 @@ impl<const D: usize, const S: usize> PathBounds<D, S> {
     #[inline(always)]
     pub(crate) fn reach(&self, other: &Self, radius: f64) -> Reach {
         Reach(with_underflow(
-            radius + MARGIN * (self.size + other.size + radius),
+            reach_of(radius, self.size + other.size),
             self.spread + other.spread,
         ))
     }
