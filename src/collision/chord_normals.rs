@@ -133,13 +133,19 @@ fn span<const D: usize>(segments: &[Segment<D>], normal: &[f64; D]) -> [f64; 2] 
                 along(normal, &s.acceleration),
                 length,
             );
-            hull = [hull[0].min(lo), hull[1].max(hi)];
+            hull = [
+                if lo < hull[0] { lo } else { hull[0] },
+                if hi > hull[1] { hi } else { hull[1] },
+            ];
         }
     }
     // The resting point (the last segment's position, where the ball stays for ever).
     if let Some(last) = segments.last() {
         let p = along(normal, &last.position);
-        hull = [hull[0].min(p), hull[1].max(p)];
+        hull = [
+            if p < hull[0] { p } else { hull[0] },
+            if p > hull[1] { p } else { hull[1] },
+        ];
     }
     hull
 }
