@@ -7,7 +7,7 @@ use super::queue::{Key, Queue};
 use super::reach::{Reach, reach};
 use super::walls::{Side, Walls, first_wall_contact};
 use crate::collision::path_bounds::PathBounds;
-use crate::collision::path_contact::{first_bounded_contact, first_path_contact};
+use crate::collision::path_contact::{first_bounded_contact_one, first_path_contact};
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::motion::Ball;
 use crate::path::{Path, Segment};
@@ -744,7 +744,9 @@ impl<const D: usize> CollisionSchedule<D> {
         let (pa, pb) = (self.paths[a].segments(), self.paths[b].segments());
         let radii = [self.radii[a] + self.radii[b], 0.0];
         match (self.bounds.get(a), self.bounds.get(b)) {
-            (Some(ba), Some(bb)) => first_bounded_contact((pa, ba), (pb, bb), radii, self.t_max),
+            (Some(ba), Some(bb)) => {
+                first_bounded_contact_one((pa, ba), (pb, bb), radii, self.t_max)
+            }
             _ => first_path_contact(pa, pb, radii, self.t_max),
         }
     }

@@ -54,7 +54,8 @@ impl<K: Key> Queue<K> {
     pub(crate) fn set(&mut self, i: usize, key: K) {
         self.keys[i] = key;
         // Up from the leaf, each node's winner from the one coming up and its sibling's
-        // (the only child that did not change).
+        // (the only child that did not change), until a node keeps a winner other than `i`:
+        // from there up nothing changes (the same winners, with the same keys).
         let mut node = self.leaves + i;
         let mut up = i as u32;
         while node > 1 {
@@ -78,6 +79,9 @@ impl<K: Key> Queue<K> {
                 }
             };
             node /= 2;
+            if up != i as u32 && self.tree[node] == up {
+                return;
+            }
             self.tree[node] = up;
         }
     }
@@ -162,6 +166,8 @@ mod tests {
                     .expect("n ≥ 1");
                 assert_eq!(queue.first(), Some(least));
                 assert_eq!(queue.key(least), &keys[least]);
+                // Every inner node too (the replay stops early): as built from scratch.
+                assert_eq!(queue.tree, Queue::new(keys.clone()).tree);
             }
         }
         assert_eq!(Queue::<(f64, u32)>::new(Vec::new()).first(), None);
