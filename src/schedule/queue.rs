@@ -60,24 +60,17 @@ impl<K: Key> Queue<K> {
         let mut up = i as u32;
         while node > 1 {
             let sibling = self.tree[node ^ 1];
-            up = match sibling {
-                NONE => up,
-                // Ties go left: to the lower ball.
-                s if node & 1 == 0 => {
-                    if self.keys[s as usize].before(&self.keys[up as usize]) {
-                        s
-                    } else {
-                        up
-                    }
-                }
-                s => {
-                    if self.keys[up as usize].before(&self.keys[s as usize]) {
-                        up
-                    } else {
-                        s
-                    }
-                }
-            };
+            if sibling != NONE {
+                // Ties go left: to the lower ball. (Selects, not branches: which side wins
+                // is hard to predict.)
+                let (left, right) = if node & 1 == 0 {
+                    (up, sibling)
+                } else {
+                    (sibling, up)
+                };
+                let right_first = self.keys[right as usize].before(&self.keys[left as usize]);
+                up = if right_first { right } else { left };
+            }
             node /= 2;
             if up != i as u32 && self.tree[node] == up {
                 return;
