@@ -69,7 +69,7 @@ impl<K: Key> Queue<K> {
                     (sibling, up)
                 };
                 let right_first = self.keys[right as usize].before(&self.keys[left as usize]);
-                up = if right_first { right } else { left };
+                up = std::hint::select_unpredictable(right_first, right, left);
             }
             node /= 2;
             if up != i as u32 && self.tree[node] == up {
