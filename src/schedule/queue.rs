@@ -158,7 +158,7 @@ mod tests {
     #[test]
     fn the_first_key_is_always_the_least_after_random_changes() {
         let mut rng = Rng(7);
-        for n in [1usize, 2, 3, 5, 16, 17, 100] {
+        for n in [1usize, 2, 3, 5, 16, 17, 100, SMALL_TREE + 1] {
             let mut keys: Vec<(f64, u32)> =
                 (0..n).map(|i| (rng.uniform(0.0, 10.0), i as u32)).collect();
             let mut queue = Queue::new(keys.clone());
