@@ -90,12 +90,44 @@ pub(crate) fn first_path_contact<const D: usize>(
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
-    first_bounded_contact::<D, SEGMENT_BOXES>(
+    first_bounded_contact_one::<D, SEGMENT_BOXES>(
         (a, &PathBounds::of(a)),
         (b, &PathBounds::of(b)),
         radii,
         t_max,
     )
+}
+
+/// [`first_bounded_contact`] for one pair at a time (the calendar's), with fused
+/// multiply-adds in hardware where the CPU has them: one instruction rather than a library
+/// call, the same exact result, so the same bits.
+pub(crate) fn first_bounded_contact_one<const D: usize, const S: usize>(
+    a: (&[Segment<D>], &PathBounds<D, S>),
+    b: (&[Segment<D>], &PathBounds<D, S>),
+    radii: [f64; 2],
+    t_max: f64,
+) -> Option<f64> {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU supports FMA, just detected.
+        return unsafe { first_bounded_contact_fma(a, b, radii, t_max) };
+    }
+    first_bounded_contact(a, b, radii, t_max)
+}
+
+/// [`first_bounded_contact`] compiled with FMA enabled.
+///
+/// # Safety
+/// The CPU must support FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn first_bounded_contact_fma<const D: usize, const S: usize>(
+    a: (&[Segment<D>], &PathBounds<D, S>),
+    b: (&[Segment<D>], &PathBounds<D, S>),
+    radii: [f64; 2],
+    t_max: f64,
+) -> Option<f64> {
+    first_bounded_contact(a, b, radii, t_max)
 }
 
 /// [`path_collision_time`] without the stages that only prove balls apart (the path bounds
@@ -149,6 +181,28 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
     // `+ 0.0` makes a first time of −0 a +0: `max` leaves the sign of equal zeros to the
     // order of its operands, and the answer must not depend on which path is A.
     let mut start = a.first()?.start.max(b.first()?.start) + 0.0;
+    if let ([sa], [sb]) = (a, b) {
+        // One segment each (frictionless balls, say): their one window, for ever, without
+        // the walk over segments (the loop below with its single turn).
+        if start >= t_max {
+            return None;
+        }
+        count(Stage::Window);
+        if SCREENS && bounds_a.segments_apart(0, bounds_b, 0, reach) {
+            count(Stage::WindowSegmentsApart);
+            return None;
+        }
+        let window = Window {
+            a: sa,
+            b: sb,
+            start,
+            end: f64::INFINITY,
+        };
+        return match window.search::<SCREENS>(unit, radius, None) {
+            WindowStep::Contact(t) => (t < t_max).then_some(t),
+            WindowStep::NoEntry { .. } => None,
+        };
+    }
     let (mut i, mut j) = (active(a, 0, start), active(b, 0, start));
     let mut previous_positive = None;
     loop {
@@ -165,45 +219,16 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
             count(Stage::WindowSegmentsApart);
             previous_positive = Some(true);
         } else {
-            let gap = window_gap(&scaled(&a[i], unit), &scaled(&b[j], unit), start, radius);
-            let before = match previous_positive {
-                Some(positive) => positive,
-                None => {
-                    // At the first time: touching or overlapping balls collide only if they
-                    // approach; otherwise only a later re-entry counts.
-                    let apart = apart_at_start(&gap);
-                    if !apart && approaching(&gap) {
-                        count(Stage::Contact);
-                        return Some(start);
-                    }
-                    apart
-                }
+            let window = Window {
+                a: &a[i],
+                b: &b[j],
+                start,
+                end,
             };
-            let length = end - start;
-            // No relative acceleration: a straight line, in closed form where it is clear (before
-            // the box, which it makes unnecessary). Most other windows of balls on paths are
-            // proven apart by the box the separation sweeps; the rest are searched.
-            let answer = if let Some(straight) = straight_window(&gap, length, before) {
-                count(Stage::WindowStraight);
-                straight
-            } else if SCREENS && apart_on_window(&gap, bounded_length(&gap, length)) {
-                count(Stage::WindowBoxApart);
-                WindowSearch::NoEntry {
-                    ends_positive: true,
-                }
-            } else {
-                count(Stage::WindowSearched);
-                search_window(&gap, length, before)
-            };
-            match answer {
-                WindowSearch::Entry(s) => {
-                    count(Stage::Contact);
-                    let t = start + s;
-                    return (t < t_max).then_some(t);
-                }
-                WindowSearch::NoEntry { ends_positive } => {
-                    previous_positive = Some(ends_positive);
-                }
+            match window.search::<SCREENS>(unit, radius, previous_positive) {
+                // (At the window's start, which is before `t_max`, or on it.)
+                WindowStep::Contact(t) => return (t < t_max).then_some(t),
+                WindowStep::NoEntry { ends_positive } => previous_positive = Some(ends_positive),
             }
         }
         if end == f64::INFINITY {
@@ -215,6 +240,74 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
         }
         if end_b == end {
             j = active(b, j, end);
+        }
+    }
+}
+
+/// One window of a pair: the two active segments, from `start` to `end`.
+struct Window<'a, const D: usize> {
+    a: &'a Segment<D>,
+    b: &'a Segment<D>,
+    start: f64,
+    end: f64,
+}
+
+/// What a window's search found.
+enum WindowStep {
+    /// The balls start to interpenetrate at this (absolute) time.
+    Contact(f64),
+    /// No entry; whether the gap ends the window positive (see [`WindowSearch::NoEntry`]).
+    NoEntry { ends_positive: bool },
+}
+
+impl<const D: usize> Window<'_, D> {
+    /// The window's search, in the pair's `unit` of length, at contact distance `radius` (in
+    /// that unit); `previous_positive`: whether the gap was positive just before the window
+    /// (`None` at the pair's first time).
+    #[inline(always)]
+    fn search<const SCREENS: bool>(
+        &self,
+        unit: LengthUnit,
+        radius: f64,
+        previous_positive: Option<bool>,
+    ) -> WindowStep {
+        let (start, end) = (self.start, self.end);
+        let gap = window_gap(&scaled(self.a, unit), &scaled(self.b, unit), start, radius);
+        let before = match previous_positive {
+            Some(positive) => positive,
+            None => {
+                // At the first time: touching or overlapping balls collide only if they
+                // approach; otherwise only a later re-entry counts.
+                let apart = apart_at_start(&gap);
+                if !apart && approaching(&gap) {
+                    count(Stage::Contact);
+                    return WindowStep::Contact(start);
+                }
+                apart
+            }
+        };
+        let length = end - start;
+        // No relative acceleration: a straight line, in closed form where it is clear (before
+        // the box, which it makes unnecessary). Most other windows of balls on paths are
+        // proven apart by the box the separation sweeps; the rest are searched.
+        let answer = if let Some(straight) = straight_window(&gap, length, before) {
+            count(Stage::WindowStraight);
+            straight
+        } else if SCREENS && apart_on_window(&gap, bounded_length(&gap, length)) {
+            count(Stage::WindowBoxApart);
+            WindowSearch::NoEntry {
+                ends_positive: true,
+            }
+        } else {
+            count(Stage::WindowSearched);
+            search_window(&gap, length, before)
+        };
+        match answer {
+            WindowSearch::Entry(s) => {
+                count(Stage::Contact);
+                WindowStep::Contact(start + s)
+            }
+            WindowSearch::NoEntry { ends_positive } => WindowStep::NoEntry { ends_positive },
         }
     }
 }
@@ -278,5 +371,61 @@ mod tests {
             let t = path_collision_time(x, y, 1.0, &options).expect("valid");
             assert_eq!(t.map(f64::to_bits), Some(0f64.to_bits()));
         }
+    }
+
+    #[test]
+    fn one_segment_each_gives_the_bits_of_the_walk_over_segments() {
+        // The same paths behind an empty first segment (never active, no part of the bounds
+        // or the unit) go through the walk over segments, one window: the same answer.
+        let mut rng = crate::test_rng::Rng(31);
+        let mut draw =
+            |scale: f64| Vector2::new(rng.uniform(-scale, scale), rng.uniform(-scale, scale));
+        let (mut contacts, mut cases) = (0, 0);
+        for k in 0..4000 {
+            let start = |x: f64| if k % 3 == 0 { 0.0 } else { x.abs() };
+            let accelerated = k % 4 == 0;
+            let mut segment = |t: f64| {
+                let a = if accelerated {
+                    draw(0.5)
+                } else {
+                    Vector2::zeros()
+                };
+                Segment2::new(start(t), draw(1.0), draw(2.0), a)
+            };
+            let (sa, sb) = (segment(0.3), segment(0.2));
+            let hidden = |s: Segment2| {
+                Path2::new(vec![Segment2::at_rest(s.start, Vector2::new(5.0, -7.0)), s])
+            };
+            let (Ok(a), Ok(b), Ok(a2), Ok(b2)) = (
+                Path2::new(vec![sa]),
+                Path2::new(vec![sb]),
+                hidden(sa),
+                hidden(sb),
+            ) else {
+                panic!("valid paths")
+            };
+            let t_max = if k % 5 == 0 { 0.4 } else { f64::INFINITY };
+            let options = CollisionOptions { t_max };
+            let radius = 0.05 + 0.2 * (k % 7) as f64;
+            let bits = |x: Result<Option<f64>, InputError>| x.map(|t| t.map(f64::to_bits));
+            for (x, y, x2, y2) in [(&a, &b, &a2, &b2), (&b, &a, &b2, &a2)] {
+                let one = path_collision_time(x, y, radius, &options);
+                assert_eq!(
+                    bits(one),
+                    bits(path_collision_time(x2, y2, radius, &options))
+                );
+                assert_eq!(
+                    bits(path_collision_time_unscreened(x, y, radius, &options)),
+                    bits(path_collision_time_unscreened(x2, y2, radius, &options))
+                );
+                contacts += usize::from(one.is_ok_and(|t| t.is_some()));
+                cases += 1;
+            }
+        }
+        // Both kinds of answer, often.
+        assert!(
+            contacts > cases / 10 && contacts < cases * 9 / 10,
+            "{contacts} of {cases}"
+        );
     }
 }

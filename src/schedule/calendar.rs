@@ -7,7 +7,7 @@ use super::queue::{Key, Queue};
 use super::reach::{Reach, reach};
 use super::walls::{Side, Walls, first_wall_contact};
 use crate::collision::path_bounds::PathBounds;
-use crate::collision::path_contact::{first_bounded_contact, first_path_contact};
+use crate::collision::path_contact::{first_bounded_contact_one, first_path_contact};
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::motion::Ball;
 use crate::path::{Path, Segment};
@@ -204,12 +204,12 @@ impl PairKey {
 impl Key for PairKey {
     fn before(&self, other: &Self) -> bool {
         // Times that `<` or `>` tell apart decide at once (`total_cmp` agrees there); equal
-        // ones, `±0` and NaN go on to the full order: the same order, fewer steps.
-        if self.time < other.time {
-            return true;
-        }
-        if self.time > other.time {
-            return false;
+        // ones, `±0` and NaN go on to the full order: the same order, fewer steps. One branch,
+        // on whether the times differ (nearly always), not on which comes first (hard to
+        // predict).
+        let (earlier, later) = (self.time < other.time, self.time > other.time);
+        if earlier | later {
+            return earlier;
         }
         self.time
             .total_cmp(&other.time)
@@ -744,7 +744,9 @@ impl<const D: usize> CollisionSchedule<D> {
         let (pa, pb) = (self.paths[a].segments(), self.paths[b].segments());
         let radii = [self.radii[a] + self.radii[b], 0.0];
         match (self.bounds.get(a), self.bounds.get(b)) {
-            (Some(ba), Some(bb)) => first_bounded_contact((pa, ba), (pb, bb), radii, self.t_max),
+            (Some(ba), Some(bb)) => {
+                first_bounded_contact_one((pa, ba), (pb, bb), radii, self.t_max)
+            }
             _ => first_path_contact(pa, pb, radii, self.t_max),
         }
     }
@@ -855,12 +857,15 @@ impl<const D: usize> CollisionSchedule<D> {
         let (marks, mark, boxes) = (&mut self.marks, self.mark, &self.boxes);
         let own = &boxes[i];
         if self.grid.is_one_cell() {
-            // Every ball is listed once, in order: no cell lists, no marks.
-            let others = boxes
-                .iter()
-                .zip(0u32..)
-                .filter(|&(b, k)| k as usize != i && b.overlaps(own));
-            candidates.extend(others.map(|(_, k)| k));
+            // Every ball is listed once, in order: no cell lists, no marks; each written in
+            // the next slot and kept if its box overlaps (no branch to mispredict).
+            candidates.resize(boxes.len(), 0);
+            let mut kept = 0;
+            for (b, k) in boxes.iter().zip(0u32..) {
+                candidates[kept] = k;
+                kept += usize::from((k as usize != i) & b.overlaps(own));
+            }
+            candidates.truncate(kept);
         } else {
             self.grid.for_each_ball(&self.ranges[i], |k| {
                 let ku = k as usize;
@@ -1101,4 +1106,51 @@ fn region<const D: usize>(
         None => first_positions_box(paths),
     };
     (lo.map(|x| x - cell), hi.map(|x| x + cell))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_rng::Rng;
+
+    #[test]
+    fn pair_keys_order_by_time_then_kind_then_balls() {
+        let times = [
+            f64::NEG_INFINITY,
+            -1.0,
+            -0.0,
+            0.0,
+            f64::MIN_POSITIVE,
+            1.0,
+            1.0 + f64::EPSILON,
+            f64::INFINITY,
+            f64::NAN,
+            -f64::NAN,
+        ];
+        let kinds = [Kind::Recheck, Kind::Collision, Kind::Nothing];
+        let balls = [0, 1, 7, u32::MAX - 1, u32::MAX];
+        let mut rng = Rng(5);
+        let mut pick = |n: usize| rng.below(n as u64) as usize;
+        let mut draw = || PairKey {
+            time: times[pick(times.len())],
+            kind: kinds[pick(kinds.len())],
+            lo: balls[pick(balls.len())],
+            hi: balls[pick(balls.len())],
+            partner_version: 0,
+        };
+        let (mut before, mut after) = (0, 0);
+        for _ in 0..20_000 {
+            let (a, b) = (draw(), draw());
+            let order = a
+                .time
+                .total_cmp(&b.time)
+                .then(a.kind.cmp(&b.kind))
+                .then(a.lo.cmp(&b.lo))
+                .then(a.hi.cmp(&b.hi));
+            assert_eq!(a.before(&b), order.is_lt(), "{a:?} {b:?}");
+            before += usize::from(order.is_lt());
+            after += usize::from(order.is_gt());
+        }
+        assert!(before > 5_000 && after > 5_000);
+    }
 }

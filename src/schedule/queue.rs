@@ -24,6 +24,9 @@ pub(crate) struct Queue<K> {
 
 const NONE: u32 = u32::MAX;
 
+/// The most leaves of a tree whose winners are chosen by selects ([`Queue::set`]).
+const SMALL_TREE: usize = 4096;
+
 impl<K: Key> Queue<K> {
     /// The queue holding `keys` (fewer than `u32::MAX`).
     pub(crate) fn new(keys: Vec<K>) -> Self {
@@ -54,30 +57,37 @@ impl<K: Key> Queue<K> {
     pub(crate) fn set(&mut self, i: usize, key: K) {
         self.keys[i] = key;
         // Up from the leaf, each node's winner from the one coming up and its sibling's
-        // (the only child that did not change).
+        // (the only child that did not change), until a node keeps a winner other than `i`:
+        // from there up nothing changes (the same winners, with the same keys).
         let mut node = self.leaves + i;
         let mut up = i as u32;
+        // A small tree's keys are in the cache: each level's winner as a select (which side
+        // wins is hard to predict). A large one's are not: a branch, so that the CPU goes on
+        // to the next level's loads without waiting for this level's (measured: N = 16 and
+        // 1,000 faster with selects, 100,000 slower).
+        let small = self.leaves <= SMALL_TREE;
         while node > 1 {
             let sibling = self.tree[node ^ 1];
-            up = match sibling {
-                NONE => up,
+            if sibling != NONE {
                 // Ties go left: to the lower ball.
-                s if node & 1 == 0 => {
-                    if self.keys[s as usize].before(&self.keys[up as usize]) {
-                        s
-                    } else {
-                        up
-                    }
-                }
-                s => {
-                    if self.keys[up as usize].before(&self.keys[s as usize]) {
-                        up
-                    } else {
-                        s
-                    }
-                }
-            };
+                let (left, right) = if node & 1 == 0 {
+                    (up, sibling)
+                } else {
+                    (sibling, up)
+                };
+                let right_first = self.keys[right as usize].before(&self.keys[left as usize]);
+                up = if small {
+                    std::hint::select_unpredictable(right_first, right, left)
+                } else if right_first {
+                    right
+                } else {
+                    left
+                };
+            }
             node /= 2;
+            if up != i as u32 && self.tree[node] == up {
+                return;
+            }
             self.tree[node] = up;
         }
     }
@@ -148,7 +158,7 @@ mod tests {
     #[test]
     fn the_first_key_is_always_the_least_after_random_changes() {
         let mut rng = Rng(7);
-        for n in [1usize, 2, 3, 5, 16, 17, 100] {
+        for n in [1usize, 2, 3, 5, 16, 17, 100, SMALL_TREE + 1] {
             let mut keys: Vec<(f64, u32)> =
                 (0..n).map(|i| (rng.uniform(0.0, 10.0), i as u32)).collect();
             let mut queue = Queue::new(keys.clone());
@@ -162,6 +172,8 @@ mod tests {
                     .expect("n ≥ 1");
                 assert_eq!(queue.first(), Some(least));
                 assert_eq!(queue.key(least), &keys[least]);
+                // Every inner node too (the replay stops early): as built from scratch.
+                assert_eq!(queue.tree, Queue::new(keys.clone()).tree);
             }
         }
         assert_eq!(Queue::<(f64, u32)>::new(Vec::new()).first(), None);

@@ -35,7 +35,11 @@ pub(crate) struct Reach<const D: usize> {
 impl<const D: usize> Reach<D> {
     /// Whether the two boxes overlap (touching counts) on every axis.
     pub(crate) fn overlaps(&self, other: &Self) -> bool {
-        (0..D).all(|k| self.lo[k] <= other.hi[k] && other.lo[k] <= self.hi[k])
+        // `&` rather than `&&`: no branch (a refresh asks this of every box in turn, and
+        // which boxes overlap is hard to predict).
+        (0..D).fold(true, |all, k| {
+            all & (self.lo[k] <= other.hi[k]) & (other.lo[k] <= self.hi[k])
+        })
     }
 }
 
