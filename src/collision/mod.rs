@@ -300,7 +300,9 @@ fn first_contact_in_unit(
 }
 
 /// Whether the balls are apart at the window's start (`g(0) > 0`), decided in the unit of
-/// the larger of the distance and the radius.
+/// the larger of the distance and the radius. Inlined, so that the vector and FMA copies of
+/// the searches that call it form its fused products in hardware, not by a library call.
+#[inline(always)]
 pub(crate) fn apart_at_start<const D: usize>(gap: &Gap<D>) -> bool {
     let unit = LengthUnit::of(largest([gap.offset.amax(), gap.radius]));
     gap_value_of(&gap.offset.map(|x| unit.apply(x)), unit.apply(gap.radius)) > 0.0

@@ -328,6 +328,7 @@ fn end_of<const D: usize>(segments: &[Segment<D>], k: usize) -> f64 {
 }
 
 /// A segment in the pair's unit of length.
+#[inline(always)]
 fn scaled<const D: usize>(s: &Segment<D>, unit: LengthUnit) -> Segment<D> {
     Segment {
         start: s.start,
@@ -339,6 +340,7 @@ fn scaled<const D: usize>(s: &Segment<D>, unit: LengthUnit) -> Segment<D> {
 
 /// The relative motion on the window starting at `start`, from the two active segments (in
 /// the pair's unit of length), each evaluated in time since its own start.
+#[inline(always)]
 fn window_gap<const D: usize>(a: &Segment<D>, b: &Segment<D>, start: f64, radius: f64) -> Gap<D> {
     Gap {
         offset: a.position_at(start) - b.position_at(start),
