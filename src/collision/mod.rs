@@ -304,7 +304,7 @@ fn first_contact_in_unit(
 /// the searches that call it form its fused products in hardware, not by a library call.
 #[inline(always)]
 pub(crate) fn apart_at_start<const D: usize>(gap: &Gap<D>) -> bool {
-    let unit = LengthUnit::of(largest([gap.offset.amax(), gap.radius]));
+    let unit = LengthUnit::of(largest([largest(gap.offset.into()), gap.radius]));
     gap_value_of(&gap.offset.map(|x| unit.apply(x)), unit.apply(gap.radius)) > 0.0
 }
 
@@ -314,9 +314,9 @@ pub(crate) fn apart_at_start<const D: usize>(gap: &Gap<D>) -> bool {
 /// search, whose every decision is homogeneous in lengths, takes the same steps.
 fn in_own_unit<const D: usize>(gap: &Gap<D>) -> Gap<D> {
     gap.in_unit(LengthUnit::of(largest([
-        gap.offset.amax(),
-        gap.velocity.amax(),
-        gap.acceleration.amax(),
+        largest(gap.offset.into()),
+        largest(gap.velocity.into()),
+        largest(gap.acceleration.into()),
         gap.radius,
     ])))
 }
@@ -329,9 +329,9 @@ pub(crate) fn approaching<const D: usize>(gap: &Gap<D>) -> bool {
     // are taken in the unit of the motion's own largest length: balls whose centres are far
     // closer than their radii are long (overlapping deeply) do not lose the signs to underflow.
     let size = largest([
-        gap.offset.amax(),
-        gap.velocity.amax(),
-        gap.acceleration.amax(),
+        largest(gap.offset.into()),
+        largest(gap.velocity.into()),
+        largest(gap.acceleration.into()),
     ]);
     let gap = gap.in_unit(LengthUnit::of(size));
     let slope = gap.half_slope(0.0);
