@@ -8,7 +8,8 @@
 //! as the path bounds' boxes are on the coordinate axes. On random pool-table pairs that
 //! settles about half the pairs the boxes leave (a pair of balls rolling side by side or
 //! away from each other along a diagonal: their boxes overlap, their strips do not), for a
-//! handful of products per segment, and no square root.
+//! handful of products per segment, and a square root only for the pairs that pass a first
+//! test on the paths' ends.
 //!
 //! A span is the hull of a segment's Bernstein control values (as for the boxes), here of
 //! the projected coordinate `n·p + n·v·s + ½·n·a·s²`. Only paths that end at rest (last
@@ -65,7 +66,8 @@ fn apart_across_chord_of<const D: usize>(
     // The spans hold the paths' ends: unless the other path starts and ends on the same side
     // of where this one starts, beyond the reach (on a normal at least 1 long), the spans
     // cannot be apart. Most pairs that the boxes leave stop here, before any span or square
-    // root is formed.
+    // root is formed. (An empty first segment's position is no part of its path: this test
+    // may then give up on a pair the spans would prove, never the other way round.)
     let centre = along(&normal, &start.position);
     let ends = [
         along(&normal, &other_start.position),
