@@ -419,30 +419,66 @@ const SPLITS: u32 = 4096;
 /// window search if it is plain even measured by the radius alone ([`plain_piece`]: then it
 /// is plain wherever the balls may touch in it); otherwise its two halves in turn, while the
 /// `budget` of halvings lasts.
+///
+/// The halving is depth first, first halves before second halves, each second half
+/// re-expanded at its own start from the motion of the piece it halves. It runs on an
+/// explicit stack rather than by recursion: the budget allows thousands of nested halvings,
+/// which frames on the call stack would pay for in stack space (a thread of 1 MiB could not
+/// hold them). An entry found in a second half is `half + s` at each level, innermost first,
+/// as the nesting gives it.
 fn search_piece<const D: usize>(
     piece: &Gap<D>,
     length: f64,
     previous_positive: bool,
     budget: &mut u32,
 ) -> WindowSearch {
-    if apart_on_window(piece, length) {
-        return WindowSearch::NoEntry {
-            ends_positive: true,
+    /// No second half above: the entry time needs nothing added.
+    const TOP: usize = usize::MAX;
+    // Pieces still to search (last first): the motion, its length and the innermost second
+    // half it lies in (an index into `halves`).
+    let mut pending: Vec<(Gap<D>, f64, usize)> = Vec::new();
+    // Second halves: the half to add to an entry found in them, and the one they lie in.
+    let mut halves: Vec<(f64, usize)> = Vec::new();
+    let mut previous_positive = previous_positive;
+    let (mut piece, mut length, mut within) = (*piece, length, TOP);
+    loop {
+        let leaf = if apart_on_window(&piece, length) {
+            Some(WindowSearch::NoEntry {
+                ends_positive: true,
+            })
+        } else if *budget == 0 || plain_piece(&piece, length) || length.is_nan() || length <= 0.0 {
+            Some(search_plain_window(&piece, length, previous_positive))
+        } else {
+            None
         };
-    }
-    if *budget == 0 || plain_piece(piece, length) || length.is_nan() || length <= 0.0 {
-        return search_plain_window(piece, length, previous_positive);
-    }
-    *budget -= 1;
-    let half = 0.5 * length;
-    match search_piece(piece, half, previous_positive, budget) {
-        WindowSearch::NoEntry { ends_positive } => {
-            match search_piece(&piece.shifted(half), length - half, ends_positive, budget) {
-                WindowSearch::Entry(s) => WindowSearch::Entry(half + s),
-                no_entry => no_entry,
+        match leaf {
+            Some(WindowSearch::Entry(mut s)) => {
+                while within != TOP {
+                    let (half, outer) = halves[within];
+                    s += half;
+                    within = outer;
+                }
+                return WindowSearch::Entry(s);
+            }
+            Some(WindowSearch::NoEntry { ends_positive }) => {
+                previous_positive = ends_positive;
+                match pending.pop() {
+                    Some(next) => (piece, length, within) = next,
+                    None => {
+                        return WindowSearch::NoEntry {
+                            ends_positive: previous_positive,
+                        };
+                    }
+                }
+            }
+            None => {
+                *budget -= 1;
+                let half = 0.5 * length;
+                halves.push((half, within));
+                pending.push((piece.shifted(half), length - half, halves.len() - 1));
+                length = half;
             }
         }
-        entry => entry,
     }
 }
 
