@@ -18,10 +18,11 @@
 //! other path proves nothing here.
 //!
 //! The projections are formed on the caller's numbers with the path bounds' [`Reach`]: the
-//! normal's components are at most 1 in magnitude, so that the projected values are no larger
-//! than the magnitudes the bounds' size sums and their roundings (and underflows) are covered
-//! by the same margin, as one more axis would be. Where a projection overflows, so does the
-//! pair's size, and an infinite or NaN reach proves nothing.
+//! normal's components are at most ½ in magnitude, so that every projected value and every
+//! intermediate of its hull is no larger than the largest per-axis term of the bounds' size,
+//! and their roundings (and underflows) are covered by the same margin, as one more axis
+//! would be. Where a projection overflows, so does the pair's size, and an infinite or NaN
+//! reach proves nothing.
 
 use super::path_bounds::{Reach, bernstein_hull};
 use crate::path::Segment;
@@ -31,9 +32,10 @@ use crate::path::Segment;
 /// their spans are farther apart than it (times the normal's length, for it is not
 /// normalised to 1, see [`chord_normal`]).
 ///
-/// Rigour: the normal `n` has components of magnitude at most 1 (+ a rounding), so that each
+/// Rigour: the normal `n` has components of magnitude at most ½ (+ a rounding), so that each
 /// projection `n·x` is off by no more than a few roundings of the magnitudes the path
-/// bounds' size sums, far below the margin in `reach`; its length, `√(n·n)` to a few
+/// bounds' size sums, far below the margin in `reach`, and overflows only where that size
+/// does; its length, `√(n·n)` to a few
 /// roundings (far below that margin too), turns a proof on `n` into one on the unit normal.
 #[inline(always)]
 pub(crate) fn apart_across_chords<const D: usize>(
@@ -64,7 +66,7 @@ fn apart_across_chord_of<const D: usize>(
         return false;
     };
     // The spans hold the paths' ends: unless the other path starts and ends on the same side
-    // of where this one starts, beyond the reach (on a normal at least 1 long), the spans
+    // of where this one starts, beyond the reach (on a normal at least ½ long), the spans
     // cannot be apart. Most pairs that the boxes leave stop here, before any span or square
     // root is formed. (An empty first segment's position is no part of its path: this test
     // may then give up on a pair the spans would prove, never the other way round.)
@@ -73,13 +75,14 @@ fn apart_across_chord_of<const D: usize>(
         along(&normal, &other_start.position),
         along(&normal, &other_end.position),
     ];
-    let reach = reach.distance();
-    let above = ends[0].min(ends[1]) - centre > reach;
-    let below = centre - ends[0].max(ends[1]) > reach;
+    // (Against less than half the reach: the normal is at least ½ long, less a rounding.)
+    let least = 0.49 * reach.distance();
+    let above = ends[0].min(ends[1]) - centre > least;
+    let below = centre - ends[0].max(ends[1]) > least;
     if !(above | below) {
         return false;
     }
-    let reach = reach * (normal[0] * normal[0] + normal[1] * normal[1]).sqrt();
+    let reach = reach.distance() * (normal[0] * normal[0] + normal[1] * normal[1]).sqrt();
     let (own, other) = (span(own, &normal), span(other, &normal));
     (own[0] - other[1] > reach) | (other[0] - own[1] > reach)
 }
@@ -93,7 +96,7 @@ fn rests_at_end<const D: usize>(segments: &[Segment<D>]) -> bool {
 }
 
 /// The normal of the path's chord in the first two coordinates (in 3-D, the horizontal one:
-/// the cloth's plane), scaled so that its larger component is ±1 (a division, where a unit
+/// the cloth's plane), scaled so that its larger component is ±½ (a division, where a unit
 /// normal would need a square root too); `None` for a chord with no extent there (a ball that
 /// ends where it started, or moves only vertically), or a subnormal, NaN or infinite one.
 #[inline(always)]
@@ -109,7 +112,11 @@ fn chord_normal<const D: usize>(segments: &[Segment<D>]) -> Option<[f64; D]> {
     if !(f64::MIN_POSITIVE..f64::INFINITY).contains(&most) {
         return None;
     }
-    let scale = 1.0 / most;
+    // Components of at most ½ (halving is exact): a projected value then sums two halves of
+    // per-axis terms that the path bounds' size bounds, so that none overflows while that
+    // size is finite (with components of 1, `n·a` could overflow where no `aᵢ` does, and
+    // an infinite intermediate of the wrong sign narrow a span).
+    let scale = 0.5 / most;
     let mut normal = [0.0; D];
     normal[0] = -dy * scale;
     normal[1] = dx * scale;
@@ -228,6 +235,39 @@ mod tests {
     }
 
     #[test]
+    fn the_margin_is_kept() {
+        // A rolls along x from 0 to 4; B rests 1 from its line: apart by 1 exactly. A radius
+        // within the margin of 1 is no proof (a screen without the margin would give one).
+        let a = roll([0.0, 0.0], [4.0, 0.0]);
+        let b = [Segment::at_rest(0.0, V::new(2.0, 1.0))];
+        assert!(apart(&a, &b, 1.0 - 1e-6));
+        assert!(!apart(&a, &b, 1.0 - 2f64.powi(-45)) && !apart(&b, &a, 1.0 - 2f64.powi(-45)));
+    }
+
+    #[test]
+    fn a_projected_acceleration_near_the_float_range_does_not_narrow_the_span() {
+        // Each acceleration component is finite, but on a normal of components ±1 their sum
+        // overflowed to −∞ and cut the span short of B, which A passes through (found in
+        // review). The size, which multiplies by the length before summing, stays finite.
+        let m = f64::MAX;
+        let a = vec![
+            Segment::new(
+                0.0,
+                V::zeros(),
+                V::new(0.35 * m, 0.35 * m),
+                V::new(-0.6 * m, -0.6 * m),
+            ),
+            Segment::at_rest(0.5, V::new(1.0, -1.0)),
+        ];
+        let b = [Segment::at_rest(0.0, V::new(0.095 * m, 0.095 * m))];
+        for radius in [1e306, 1e300] {
+            assert!(!apart(&a, &b, radius) && !apart(&b, &a, radius));
+            let [screened, unscreened] = answers(&a, &b, radius);
+            assert!(unscreened.is_some() && screened == unscreened, "{radius}");
+        }
+    }
+
+    #[test]
     fn a_path_that_does_not_end_at_rest_proves_nothing_here() {
         let a = roll([0.0, 0.0], [4.0, 4.0]);
         let drift = [Segment::new(
@@ -260,7 +300,7 @@ mod tests {
             ),
             Segment::at_rest(2.0, Vector3::new(4.0, 4.0, 0.0)),
         ];
-        assert_eq!(chord_normal(&run), Some([-1.0, 1.0, 0.0]));
+        assert_eq!(chord_normal(&run), Some([-0.5, 0.5, 0.0]));
         // A subnormal chord has none: its scale would overflow.
         let tiny: Vec<_> = run
             .iter()
