@@ -90,32 +90,10 @@ impl Reach {
     }
 }
 
-/// `radius` grown by the margin for the roundings made in forming boxes of the given `size`
-/// (the sum of the two paths'), before what underflow can cost them ([`with_underflow`]).
-#[inline(always)]
-fn reach_of(radius: f64, size: f64) -> f64 {
-    radius + MARGIN * (size + radius)
-}
-
-/// A segment's part, on one axis, of its path's size: a bound on the magnitudes that form its
-/// box there (`|p| + (|v| + |a|·L)·L`), from which the margin comes.
-#[inline(always)]
-fn axis_size(p: f64, v: f64, a: f64, length: f64) -> f64 {
-    p.abs() + (v.abs() + a.abs() * length) * length
-}
-
-/// A segment's part of its path's spread: what underflowing products can cost its box
-/// ([`with_underflow`]: at most `2⁻¹⁰⁷⁴·(1 + L)²` per axis, nothing divided here).
-#[inline(always)]
-fn segment_spread<const D: usize>(length: f64) -> f64 {
-    let reach = 1.0 + length;
-    D as f64 * reach * reach
-}
-
 /// The least and greatest Bernstein control values of `p + v·s + ½·a·s²` over `s ∈ [0, L]`:
 /// `p`, `p + ½·v·L` and `p + v·L + ½·a·L²`, whose hull holds the quadratic's values there.
-/// As selects, which may drop a NaN (see [`AxisBox::union`]); measured 3 % faster per
-/// pool-table pair than `min` and `max` here (and 10 % slower in the union).
+/// As selects, which may drop a NaN (see [`AxisBox::union`]): faster here than `min` and
+/// `max` (which the union keeps, being faster there).
 #[inline(always)]
 pub(crate) fn bernstein_hull(p: f64, v: f64, a: f64, length: f64) -> [f64; 2] {
     let middle = p + 0.5 * v * length;
@@ -178,10 +156,13 @@ impl<const D: usize, const S: usize> PathBounds<D, S> {
             for i in 0..D {
                 most[i] = largest([most[i], p[i], v[i], a[i]]);
             }
-            spread += segment_spread::<D>(length);
+            // The margin covers relative roundings, and what underflowing products can cost
+            // ([`with_underflow`]: at most `2⁻¹⁰⁷⁴·(1 + L)²` per axis, nothing divided here).
+            let reach = 1.0 + length;
+            spread += D as f64 * reach * reach;
             let mut hull = AxisBox::EMPTY;
             for i in 0..D {
-                size += axis_size(p[i], v[i], a[i], length);
+                size += p[i].abs() + (v[i].abs() + a[i].abs() * length) * length;
                 [hull.lo[i], hull.hi[i]] = bernstein_hull(p[i], v[i], a[i], length);
             }
             if let Some(slot) = slot {
@@ -221,7 +202,7 @@ impl<const D: usize, const S: usize> PathBounds<D, S> {
     #[inline(always)]
     pub(crate) fn reach(&self, other: &Self, radius: f64) -> Reach {
         Reach(with_underflow(
-            reach_of(radius, self.size + other.size),
+            radius + MARGIN * (self.size + other.size + radius),
             self.spread + other.spread,
         ))
     }

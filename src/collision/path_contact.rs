@@ -181,28 +181,6 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
     // `+ 0.0` makes a first time of −0 a +0: `max` leaves the sign of equal zeros to the
     // order of its operands, and the answer must not depend on which path is A.
     let mut start = a.first()?.start.max(b.first()?.start) + 0.0;
-    if let ([sa], [sb]) = (a, b) {
-        // One segment each (frictionless balls, say): their one window, for ever, without
-        // the walk over segments (the loop below with its single turn).
-        if start >= t_max {
-            return None;
-        }
-        count(Stage::Window);
-        if SCREENS && bounds_a.segments_apart(0, bounds_b, 0, reach) {
-            count(Stage::WindowSegmentsApart);
-            return None;
-        }
-        let window = Window {
-            a: sa,
-            b: sb,
-            start,
-            end: f64::INFINITY,
-        };
-        return match window.search::<SCREENS>(unit, radius, None) {
-            WindowStep::Contact(t) => (t < t_max).then_some(t),
-            WindowStep::NoEntry { .. } => None,
-        };
-    }
     let (mut i, mut j) = (active(a, 0, start), active(b, 0, start));
     let mut previous_positive = None;
     loop {

@@ -82,7 +82,7 @@ pub(crate) fn segments_from_rows<const D: usize>(
     buffer: &mut Vec<Segment<D>>,
 ) -> Result<usize, InputError> {
     // The common case in one pass: starts in order, then padding (+∞) only, every used value
-    // finite. Anything else is checked
+    // finite (`0·x` is ±0 for finite `x`, NaN otherwise). Anything else is checked
     // again below, slowly, to name the first offending value.
     let mut previous = f64::NEG_INFINITY;
     let mut plain = true;
@@ -99,7 +99,11 @@ pub(crate) fn segments_from_rows<const D: usize>(
             used = k;
             break;
         }
-        plain &= (s >= previous) & row_is_finite(s, &pos[k], &vel[k], &acc[k]);
+        let mut zero = 0.0 * s;
+        for i in 0..D {
+            zero += 0.0 * pos[k][i] + 0.0 * vel[k][i] + 0.0 * acc[k][i];
+        }
+        plain &= (s >= previous) & (zero == 0.0);
         previous = s;
         segment.start = s;
         segment.position = pos[k].into();
@@ -116,22 +120,6 @@ pub(crate) fn segments_from_rows<const D: usize>(
     );
     check_segments(buffer, names)?;
     Ok(used)
-}
-
-/// Whether a row's start and components are all finite, without a branch: `0·x` is ±0 for a
-/// finite `x` and NaN otherwise.
-#[inline(always)]
-fn row_is_finite<const D: usize>(
-    start: f64,
-    pos: &[f64; D],
-    vel: &[f64; D],
-    acc: &[f64; D],
-) -> bool {
-    let mut zero = 0.0 * start;
-    for i in 0..D {
-        zero += 0.0 * pos[i] + 0.0 * vel[i] + 0.0 * acc[i];
-    }
-    zero == 0.0
 }
 
 /// The number of used rows: all but the trailing ones whose start is `+∞`.
