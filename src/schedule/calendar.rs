@@ -218,6 +218,10 @@ impl Key for PairKey {
             .then(self.hi.cmp(&other.hi))
             .is_lt()
     }
+
+    fn time(&self) -> f64 {
+        self.time
+    }
 }
 
 /// A ball's pending wall contact (`time = ∞` for none).
@@ -240,6 +244,10 @@ impl Key for WallKey {
     fn before(&self, other: &Self) -> bool {
         // Equal times go to the lower ball: the queue breaks ties to the left.
         self.time < other.time
+    }
+
+    fn time(&self) -> f64 {
+        self.time
     }
 }
 

@@ -7,10 +7,14 @@
 //! partner has since changed, are found when they reach the root (lazy invalidation: see the
 //! calendar).
 
-/// A key that orders events: `before` is a strict total order on keys.
+/// A key that orders events: `before` is a strict total order on keys, in which of two keys
+/// whose times `<` tells apart the earlier comes first.
 pub(crate) trait Key: Copy {
     /// Whether `self` comes strictly before `other`.
     fn before(&self, other: &Self) -> bool;
+
+    /// The event's time.
+    fn time(&self) -> f64;
 }
 
 /// The tournament tree over `keys` (one per ball).
@@ -57,35 +61,55 @@ impl<K: Key> Queue<K> {
     pub(crate) fn set(&mut self, i: usize, key: K) {
         self.keys[i] = key;
         // Up from the leaf, each node's winner from the one coming up and its sibling's
-        // (the only child that did not change), until a node keeps a winner other than `i`:
-        // from there up nothing changes (the same winners, with the same keys).
+        // (the only child that did not change). The time coming up is carried along, not read
+        // again through the winner just chosen: each level reads only its sibling's, whose
+        // place does not wait for the level below, so that a level costs a comparison and a
+        // select rather than a dependent load as well (measured: the calendar 7 % faster at
+        // N = 16, 8 % at 1,000, 11 % at 100,000). Equal times (rare) go to the keys' whole
+        // order.
+        //
+        // A small tree's keys are in the cache: each level's winner as a select (which side
+        // wins is hard to predict), and every level replayed, so that the loop always runs
+        // the same number of turns (where it could stop is as hard to predict: measured, 5 %
+        // faster at N = 16, 3 % at 1,000). A large tree's are not: a branch, so that the CPU
+        // goes on to the next level's loads without waiting for this level's (measured: N = 16
+        // and 1,000 faster with selects, 100,000 slower), and a stop at the first node that
+        // keeps a winner other than `i` (from there up nothing changes), which saves loads.
         let mut node = self.leaves + i;
         let mut up = i as u32;
-        // A small tree's keys are in the cache: each level's winner as a select (which side
-        // wins is hard to predict). A large one's are not: a branch, so that the CPU goes on
-        // to the next level's loads without waiting for this level's (measured: N = 16 and
-        // 1,000 faster with selects, 100,000 slower).
         let small = self.leaves <= SMALL_TREE;
+        let mut up_time = key.time();
         while node > 1 {
             let sibling = self.tree[node ^ 1];
             if sibling != NONE {
-                // Ties go left: to the lower ball.
-                let (left, right) = if node & 1 == 0 {
-                    (up, sibling)
+                let sibling_time = self.keys[sibling as usize].time();
+                let (earlier, later) = (sibling_time < up_time, sibling_time > up_time);
+                let sibling_first = if earlier | later {
+                    earlier
                 } else {
-                    (sibling, up)
+                    // Equal times (or NaN): ties go left, to the lower ball.
+                    let (left, right) = if node & 1 == 0 {
+                        (up, sibling)
+                    } else {
+                        (sibling, up)
+                    };
+                    let right_first = self.keys[right as usize].before(&self.keys[left as usize]);
+                    right_first == (right == sibling)
                 };
-                let right_first = self.keys[right as usize].before(&self.keys[left as usize]);
-                up = if small {
-                    std::hint::select_unpredictable(right_first, right, left)
-                } else if right_first {
-                    right
-                } else {
-                    left
-                };
+                if small {
+                    up = std::hint::select_unpredictable(sibling_first, sibling, up);
+                    // (On the bits: a select of two `f64`s compiles to a branch.)
+                    up_time = f64::from_bits(std::hint::select_unpredictable(
+                        sibling_first,
+                        sibling_time.to_bits(),
+                        up_time.to_bits(),
+                    ));
+                } else if sibling_first {
+                    (up, up_time) = (sibling, sibling_time);
+                }
             }
             node /= 2;
-            if up != i as u32 && self.tree[node] == up {
+            if !small && up != i as u32 && self.tree[node] == up {
                 return;
             }
             self.tree[node] = up;
@@ -126,6 +150,10 @@ mod tests {
                 .then(self.1.cmp(&other.1))
                 .is_lt()
         }
+
+        fn time(&self) -> f64 {
+            self.0
+        }
     }
 
     /// A key that orders by time only: ties are the queue's to break.
@@ -135,6 +163,10 @@ mod tests {
     impl Key for Coarse {
         fn before(&self, other: &Self) -> bool {
             self.0 < other.0
+        }
+
+        fn time(&self) -> f64 {
+            self.0
         }
     }
 
