@@ -167,6 +167,9 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
     // Paths whose boxes keep apart need no window: a proof (its margin far above the
     // search's rounding), so its answer is the search's, in any unit.
     count(Stage::PathPair);
+    if let ([sa], [sb]) = (a, b) {
+        return one_window_each::<D, S, SCREENS>(sa, sb, (bounds_a, bounds_b), radii, t_max);
+    }
     let reach = bounds_a.reach(bounds_b, radii[0] + radii[1]);
     if SCREENS && bounds_a.apart(bounds_b, reach) {
         count(Stage::BoundsApart);
@@ -176,11 +179,8 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
         count(Stage::ChordsApart);
         return None;
     }
-    let unit = bounds_a.pair_unit(bounds_b, radii);
-    let radius = unit.apply(radii[0]) + unit.apply(radii[1]);
-    // `+ 0.0` makes a first time of −0 a +0: `max` leaves the sign of equal zeros to the
-    // order of its operands, and the answer must not depend on which path is A.
-    let mut start = a.first()?.start.max(b.first()?.start) + 0.0;
+    let (unit, radius) = pair_unit(bounds_a, bounds_b, radii);
+    let mut start = first_time(a.first()?, b.first()?);
     let (mut i, mut j) = (active(a, 0, start), active(b, 0, start));
     let mut previous_positive = None;
     loop {
@@ -220,6 +220,56 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
             j = active(b, j, end);
         }
     }
+}
+
+/// Two paths of one segment each (frictionless balls, say): their one window, from the later
+/// start on, for ever. The whole-path screens and the walk over segments are left out: the
+/// window's own stages (the straight window's closed form, the window box) settle it at least
+/// as soon, and with them the search of one pair of disks ran about 40 % more instructions (calendar,
+/// N = 16).
+#[inline(always)]
+fn one_window_each<const D: usize, const S: usize, const SCREENS: bool>(
+    a: &Segment<D>,
+    b: &Segment<D>,
+    (bounds_a, bounds_b): (&PathBounds<D, S>, &PathBounds<D, S>),
+    radii: [f64; 2],
+    t_max: f64,
+) -> Option<f64> {
+    let (unit, radius) = pair_unit(bounds_a, bounds_b, radii);
+    let start = first_time(a, b);
+    if start >= t_max {
+        return None;
+    }
+    count(Stage::Window);
+    let window = Window {
+        a,
+        b,
+        start,
+        end: f64::INFINITY,
+    };
+    match window.search::<SCREENS>(unit, radius, None) {
+        WindowStep::Contact(t) => (t < t_max).then_some(t),
+        WindowStep::NoEntry { .. } => None,
+    }
+}
+
+/// The pair's unit of length, and the contact distance (the sum of `radii`) in it.
+#[inline(always)]
+fn pair_unit<const D: usize, const S: usize>(
+    bounds_a: &PathBounds<D, S>,
+    bounds_b: &PathBounds<D, S>,
+    radii: [f64; 2],
+) -> (LengthUnit, f64) {
+    let unit = bounds_a.pair_unit(bounds_b, radii);
+    (unit, unit.apply(radii[0]) + unit.apply(radii[1]))
+}
+
+/// The pair's first time: the later of the two first starts. `+ 0.0` makes a first time of −0
+/// a +0: `max` leaves the sign of equal zeros to the order of its operands, and the answer
+/// must not depend on which path is A.
+#[inline(always)]
+fn first_time<const D: usize>(a: &Segment<D>, b: &Segment<D>) -> f64 {
+    a.start.max(b.start) + 0.0
 }
 
 /// One window of a pair: the two active segments, from `start` to `end`.
