@@ -17,7 +17,7 @@
 //! | moving entry | `moving_entry.rs` | both moving, a plain crossing in the first window: the contact by fixed Newton steps | `collision_time`, scene, batch lanes |
 //! | after stop | `after_stop.rs` | after the first stop, the mover against a ball at rest: closed form | `collision_time`, scene, batch lanes |
 //! | **paths** | | | |
-//! | path bounds | `path_bounds.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch) |
+//! | path bounds | `path_bounds.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch); not for two paths of one segment each, whose one window goes straight to the window's stages |
 //! | chord normals | `chord_normals.rs` | on the normal of either path's chord (from where its ball starts to where it rests), the two paths' spans are apart: never a contact | `path_collision_time`, `path_collision_times`, after the path bounds |
 //! | segment boxes | `path_bounds.rs` (`segments_apart`) | the boxes of the two segments active on a window (kept with the path bounds) are apart: no contact on the window, and no motion formed | path windows |
 //! | path contact | `path_contact.rs` | the window loop: windows between segment starts of either path, each formed from the two active segments in time since their own starts | `path_collision_time`, `path_collision_times` |
@@ -65,7 +65,9 @@
 //! end at rest, their spans across each one's chord (`chord_normals`); the pairs left are
 //! searched window by window (`path_contact`): the boxes of the window's two segments, then
 //! its separation box (`window_box`), settle most windows, and the rest go to the same window
-//! search as the friction balls'.
+//! search as the friction balls'. Two paths of one segment each (frictionless balls, say) have
+//! one window, for ever: it goes straight to the window's stages (the straight window's closed
+//! form, the separation box, the search), which settle it as soon as the screens would.
 //!
 //! ## Semantics (SPEC)
 //! - touching or overlapping at `t = 0` is a collision at `0` only if the balls approach

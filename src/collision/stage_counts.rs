@@ -73,12 +73,16 @@ pub(crate) fn count(stage: Stage) {
 /// use nalgebra::Vector2;
 ///
 /// stage_counts::take();
-/// let a = Path2::new(vec![Segment2::at_rest(0.0, Vector2::zeros())])?;
+/// // A ball rolling to rest at (0.5, 0), another at rest at (5, 0).
+/// let a = Path2::new(vec![
+///     Segment2::new(0.0, Vector2::zeros(), Vector2::new(1.0, 0.0), Vector2::new(-1.0, 0.0)),
+///     Segment2::at_rest(1.0, Vector2::new(0.5, 0.0)),
+/// ])?;
 /// let b = Path2::new(vec![Segment2::at_rest(0.0, Vector2::new(5.0, 0.0))])?;
 /// path_collision_time(&a, &b, 1.0, &CollisionOptions::default())?;
 /// let counts = stage_counts::take();
 /// if cfg!(feature = "stage-counts") {
-///     // Two balls at rest 5 apart: the path bounds settle the pair.
+///     // Their paths' boxes are far apart: the path bounds settle the pair.
 ///     assert_eq!((counts.path_pairs, counts.bounds_apart, counts.windows), (1, 1, 0));
 /// } else {
 ///     assert_eq!(counts, Default::default());
