@@ -213,12 +213,10 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
             return None;
         }
         start = end;
-        if end_a == end {
-            i = active(a, i, end);
-        }
-        if end_b == end {
-            j = active(b, j, end);
-        }
+        // On to the next segment of the path (or both) whose segment ended, without a branch
+        // on which it was (hard to predict); past it, any empty ones (rare).
+        i = active(a, i + usize::from(end_a == end), end);
+        j = active(b, j + usize::from(end_b == end), end);
     }
 }
 
