@@ -41,4 +41,11 @@ proptest! {
     ) {
         path_invariants::path(&case, k).map_err(TestCaseError::fail)?;
     }
+
+    #[test]
+    fn paths_keep_their_invariants_at_the_window_boxs_edge(
+        (case, k) in path_strategies::window_box_edge_case()
+    ) {
+        path_invariants::path(&case, k).map_err(TestCaseError::fail)?;
+    }
 }

@@ -195,3 +195,69 @@ pub fn grazing_case() -> impl Strategy<Value = (PathCase, i32)> {
             },
         )
 }
+
+/// A pair aimed at the edge of the window box (`collision/window_box.rs`), where its proof and
+/// the search's answer meet: B rests at the origin; A's centre passes it on a parabola whose
+/// closest point, `h` from B, is where the box is tight: A crosses the line through B along
+/// the x axis (at speed `w`) at the time `s*` its y coordinate turns (`y = h + c·(s − s*)²`),
+/// so that the box's nearest point to B is `h` itself, formed from numbers far larger than `h`
+/// (`c·s*²` against `h` from 2⁻¹ to 2⁻⁴⁰). The contact distance is `h·(1 ± 2⁻ᵏ)`, `k` from 10
+/// to 52: the balls just touch or just miss, by far less than the box's roundings, which only
+/// its margin keeps from proving a touching pair apart. A runs for ever, or rests from a time
+/// after `s*`; lengths scaled by `2^s` (`s` from −1000 to 1000), times from 0 or later;
+/// 2-D or 3-D (at one height).
+pub fn window_box_edge_case() -> impl Strategy<Value = (PathCase, i32)> {
+    (
+        (0.05f64..10.0, 0.1f64..5.0, 0.1f64..5.0),
+        (1i32..=40, 10i32..=52, any::<bool>()),
+        prop_oneof![Just(None), (1.2f64..4.0).prop_map(Some)],
+        (
+            -1000i32..=1000,
+            prop_oneof![Just(0.0), Just(1e4), 0.0f64..100.0],
+        ),
+        (any::<bool>(), any::<bool>(), -1100i32..=1100),
+    )
+        .prop_map(
+            |((turn, w, reach), (m, k, wider), rests, (s, t0), (flip, three_d, k2))| {
+                let scale = 2f64.powi(s);
+                let h = 2f64.powi(-m);
+                // `c·s*²` of about `reach`: far above `h`.
+                let c = reach / (turn * turn);
+                let side = if flip { -1.0 } else { 1.0 };
+                let (p, v, a) = (
+                    [-w * turn, side * (h + c * turn * turn)],
+                    [w, -side * 2.0 * c * turn],
+                    [0.0, side * 2.0 * c],
+                );
+                let row = |start: f64, p: [f64; 2], v: [f64; 2], a: [f64; 2]| -> SegmentInput {
+                    let mut r = [0.0; 10];
+                    r[0] = t0 + start;
+                    for i in 0..2 {
+                        r[1 + i] = p[i] * scale;
+                        r[4 + i] = v[i] * scale;
+                        r[7 + i] = a[i] * scale;
+                    }
+                    r
+                };
+                let mut path_a = vec![row(0.0, p, v, a)];
+                if let Some(f) = rests {
+                    let s1 = turn * f;
+                    let end = [
+                        p[0] + v[0] * s1 + 0.5 * a[0] * s1 * s1,
+                        p[1] + v[1] * s1 + 0.5 * a[1] * s1 * s1,
+                    ];
+                    path_a.push(row(s1, end, [0.0; 2], [0.0; 2]));
+                }
+                let delta = 2f64.powi(-k);
+                let radius = h * scale * if wider { 1.0 + delta } else { 1.0 - delta };
+                let case = PathCase {
+                    a: path_a,
+                    b: vec![row(0.0, [0.0; 2], [0.0; 2], [0.0; 2])],
+                    radius,
+                    t_max: f64::INFINITY,
+                    three_d,
+                };
+                (case, k2)
+            },
+        )
+}
