@@ -202,8 +202,9 @@ pub fn grazing_case() -> impl Strategy<Value = (PathCase, i32)> {
 /// the x axis (at speed `w`) at the time `s*` its y coordinate turns (`y = h + c·(s − s*)²`),
 /// so that the box's nearest point to B is `h` itself, formed from numbers far larger than `h`
 /// (`c·s*²` against `h` from 2⁻¹ to 2⁻⁴⁰). The contact distance is `h·(1 ± 2⁻ᵏ)`, `k` from 10
-/// to 52: the balls just touch or just miss, by far less than the box's roundings, which only
-/// its margin keeps from proving a touching pair apart. A runs for ever, or rests from a time
+/// to 52: the balls just touch or just miss, by amounts from well above the box's margin (the
+/// box then proves a miss) down to far below its roundings (where only the margin keeps it
+/// from proving a touching pair apart). A runs for ever, or rests from a time
 /// after `s*`; lengths scaled by `2^s` (`s` from −1000 to 1000), times from 0 or later;
 /// 2-D or 3-D (at one height).
 pub fn window_box_edge_case() -> impl Strategy<Value = (PathCase, i32)> {
