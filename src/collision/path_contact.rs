@@ -164,12 +164,12 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
-    // Paths whose boxes keep apart need no window: a proof (its margin far above the
-    // search's rounding), so its answer is the search's, in any unit.
     count(Stage::PathPair);
     if let ([sa], [sb]) = (a, b) {
         return one_window_each::<D, S, SCREENS>(sa, sb, (bounds_a, bounds_b), radii, t_max);
     }
+    // Paths whose boxes keep apart need no window: a proof (its margin far above the
+    // search's rounding), so its answer is the search's, in any unit.
     let reach = bounds_a.reach(bounds_b, radii[0] + radii[1]);
     if SCREENS && bounds_a.apart(bounds_b, reach) {
         count(Stage::BoundsApart);
@@ -223,8 +223,8 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
 /// Two paths of one segment each (frictionless balls, say): their one window, from the later
 /// start on, for ever. The whole-path screens and the walk over segments are left out: the
 /// window's own stages (the straight window's closed form, the window box) settle it at least
-/// as soon, and with them the search of one pair of disks ran about 40 % more instructions (calendar,
-/// N = 16).
+/// as soon, and with them the search of one pair of disks ran about 40 % more instructions
+/// (calendar, N = 16).
 #[inline(always)]
 fn one_window_each<const D: usize, const S: usize, const SCREENS: bool>(
     a: &Segment<D>,

@@ -65,7 +65,8 @@ const NORMAL_FLOOR: f64 = f64::from_bits((1023 - 1000) << 52);
 /// and its spread (what underflow can cost it, [`UNDERFLOW`]).
 #[inline(always)]
 fn axis_range(p: f64, v: f64, a: f64, length: f64) -> (f64, f64, f64, f64) {
-    let end = p + (v + 0.5 * a * length) * length;
+    let at = |s: f64| p + (v + 0.5 * a * s) * s;
+    let end = at(length);
     let (mut lo, mut hi) = (p.min(end), p.max(end));
     // The vertex, where the motion along the axis turns, if it comes inside the span: the
     // value at the turn `−v/a` held to the span (`max` and `min`, no branch: whether the turn
@@ -77,7 +78,7 @@ fn axis_range(p: f64, v: f64, a: f64, length: f64) -> (f64, f64, f64, f64) {
     // counts only at second order, the motion being flat there), which the margin covers,
     // and its underflow the spread, as for `end`.
     let turn = (-(v / a)).max(0.0).min(length);
-    let vertex = p + (v + 0.5 * a * turn) * turn;
+    let vertex = at(turn);
     lo = lo.min(vertex);
     hi = hi.max(vertex);
     let magnitude = p.abs() + (v.abs() + a.abs() * length) * length;

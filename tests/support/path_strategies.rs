@@ -130,16 +130,7 @@ pub fn grazing_case() -> impl Strategy<Value = (PathCase, i32)> {
         .prop_map(
             |((p, angle, speed, mu, slide), (f, h, left, rolls), (d, wider), s, t0, three_d, k)| {
                 let scale = 2f64.powi(s);
-                let row = |start: f64, p: [f64; 2], v: [f64; 2], a: [f64; 2]| -> SegmentInput {
-                    let mut r = [0.0; 10];
-                    r[0] = t0 + start;
-                    for i in 0..2 {
-                        r[1 + i] = p[i] * scale;
-                        r[4 + i] = v[i] * scale;
-                        r[7 + i] = a[i] * scale;
-                    }
-                    r
-                };
+                let row = |start, p, v, a| planar_row(t0 + start, scale, p, v, a);
                 // A: the slide (if any), then the straight roll to rest.
                 let mut a = Vec::new();
                 let (mut at, mut pos) = (0.0, [p.0, p.1]);
@@ -230,16 +221,7 @@ pub fn window_box_edge_case() -> impl Strategy<Value = (PathCase, i32)> {
                     [w, -side * 2.0 * c * turn],
                     [0.0, side * 2.0 * c],
                 );
-                let row = |start: f64, p: [f64; 2], v: [f64; 2], a: [f64; 2]| -> SegmentInput {
-                    let mut r = [0.0; 10];
-                    r[0] = t0 + start;
-                    for i in 0..2 {
-                        r[1 + i] = p[i] * scale;
-                        r[4 + i] = v[i] * scale;
-                        r[7 + i] = a[i] * scale;
-                    }
-                    r
-                };
+                let row = |start, p, v, a| planar_row(t0 + start, scale, p, v, a);
                 let mut path_a = vec![row(0.0, p, v, a)];
                 if let Some(f) = rests {
                     let s1 = turn * f;
@@ -261,4 +243,17 @@ pub fn window_box_edge_case() -> impl Strategy<Value = (PathCase, i32)> {
                 (case, k2)
             },
         )
+}
+
+/// A segment's inputs in the plane (z = 0): starting at `start`, position, velocity and
+/// acceleration scaled by `scale`.
+fn planar_row(start: f64, scale: f64, p: [f64; 2], v: [f64; 2], a: [f64; 2]) -> SegmentInput {
+    let mut r = [0.0; 10];
+    r[0] = start;
+    for i in 0..2 {
+        r[1 + i] = p[i] * scale;
+        r[4 + i] = v[i] * scale;
+        r[7 + i] = a[i] * scale;
+    }
+    r
 }
