@@ -207,6 +207,21 @@ impl<const D: usize, const S: usize> PathBounds<D, S> {
         ))
     }
 
+    /// The whole path's box: its least and greatest values on each axis (for tests).
+    #[cfg(test)]
+    pub(crate) fn whole(&self) -> ([f64; D], [f64; D]) {
+        (self.whole.lo, self.whole.hi)
+    }
+
+    /// Whether the reach of these two paths is `radius + MARGIN·(sizes + radius)` itself, of
+    /// finite sizes, untouched by underflow: what the lane-wise bounds take (their tests' oracle).
+    #[cfg(test)]
+    pub(crate) fn plain_reach(&self, other: &Self, radius: f64) -> bool {
+        let sizes = self.size + other.size + radius;
+        let reach = radius + MARGIN * sizes;
+        sizes.is_finite() && reach >= super::window_box::NORMAL_FLOOR * (self.spread + other.spread)
+    }
+
     /// Whether balls on the two paths provably never come within the reach of each other: the
     /// boxes of the whole paths, grown by it, are disjoint on some axis.
     #[inline(always)]

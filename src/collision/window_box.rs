@@ -58,7 +58,7 @@ const SQUARE_SLACK: f64 = f64::from_bits(1 << 4); // 16·2⁻¹⁰⁷⁴
 
 /// `2⁻¹⁰⁰⁰`: numbers above it (a reach, a square) are far above what underflow can cost
 /// them, and products of it with the spreads stay normal.
-const NORMAL_FLOOR: f64 = f64::from_bits((1023 - 1000) << 52);
+pub(crate) const NORMAL_FLOOR: f64 = f64::from_bits((1023 - 1000) << 52);
 
 /// The range `(lo, hi)` of `p + v·s + ½·a·s²` over `s ∈ [0, length]` (its values at the ends
 /// and at its vertex, if inside), a bound on the magnitudes that form it (for the margin),

@@ -65,7 +65,7 @@ pub struct HeapBytes {
 ///   at or after the current time).
 ///
 /// ## How
-/// Each ball keeps one pending key in a tournament tree ([`Queue`]): its earliest collision
+/// Each ball keeps one pending key in a tournament tree (`Queue`): its earliest collision
 /// with the balls whose boxes meet its own, found through a uniform grid of boxes (the box a
 /// ball covers, grown by its radius and a rounding margin, over the span from the current
 /// time to its *horizon*: for ever for a path that comes to rest, a little further ahead for
