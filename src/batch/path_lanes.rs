@@ -158,21 +158,19 @@ unsafe fn lane_bounds<const D: usize, const K: usize>(
     let v: [[__m512d; D]; K] = std::array::from_fn(|k| row(vel, k));
     let a: [[__m512d; D]; K] = std::array::from_fn(|k| row(acc, k));
 
-    // Every value finite (`0·x` is 0 then, NaN otherwise), starts increasing strictly.
-    let mut nought = zero;
-    let mut taken: __mmask8 = !0;
-    for k in 0..K {
-        nought = _mm512_add_pd(nought, _mm512_mul_pd(zero, s[k]));
-        for i in 0..D {
-            for x in [p[k][i], v[k][i], a[k][i]] {
-                nought = _mm512_add_pd(nought, _mm512_mul_pd(zero, x));
-            }
-        }
-        if k > 0 {
-            taken &= _mm512_cmp_pd_mask(s[k], s[k - 1], _CMP_GT_OQ);
-        }
+    // Starts increasing strictly (NaN fails), from a first above −∞ to a last below +∞: all
+    // finite. The other values of every segment but the last are in the size, whose
+    // finiteness [`settled`] checks; the last segment's velocity and acceleration here.
+    let infinity = _mm512_set1_pd(f64::INFINITY);
+    let mut taken = _mm512_cmp_pd_mask(s[0], _mm512_set1_pd(f64::NEG_INFINITY), _CMP_GT_OQ)
+        & _mm512_cmp_pd_mask(s[K - 1], infinity, _CMP_LT_OQ);
+    for k in 1..K {
+        taken &= _mm512_cmp_pd_mask(s[k], s[k - 1], _CMP_GT_OQ);
     }
-    taken &= !_mm512_cmp_pd_mask(nought, zero, _CMP_NEQ_UQ);
+    for i in 0..D {
+        let last = _mm512_add_pd(_mm512_abs_pd(v[K - 1][i]), _mm512_abs_pd(a[K - 1][i]));
+        taken &= _mm512_cmp_pd_mask(last, infinity, _CMP_LT_OQ);
+    }
 
     let half = _mm512_set1_pd(0.5);
     let one = _mm512_set1_pd(1.0);
@@ -271,8 +269,9 @@ mod tests {
                 // A few rows the lanes cannot take.
                 for _ in 0..rng.below(3) {
                     let at = rng.below((LANES * K) as u64) as usize;
-                    match rng.below(4) {
+                    match rng.below(5) {
                         0 => start[at] = f64::INFINITY,
+                        4 => start[at] = f64::NEG_INFINITY,
                         1 if !at.is_multiple_of(K) => start[at] = start[at - 1],
                         2 => rows[rng.below(3) as usize][at][1] = f64::NAN,
                         _ => rows[0][at][0] = f64::INFINITY,
