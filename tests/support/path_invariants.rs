@@ -156,6 +156,19 @@ fn path_in<const D: usize>(case: &PathCase, k: i32) -> Check {
         if batch.is_ok() {
             return Err(format!("invalid input accepted by the batch: {case:?}"));
         }
+        // Nine pairs of it, a block of the batch's lanes: refused too.
+        let (nine_a, nine_b) = (rows_a.pick(&[0; 9]), rows_b.pick(&[0; 9]));
+        let pairs = PathPairs {
+            a: nine_a.side(),
+            b: nine_b.side(),
+            radius: PerPair::All(radius),
+            t_max: PerPair::All(t_max),
+        };
+        if path_collision_times(&pairs, &mut [f64::NAN; 9], Threads::All).is_ok() {
+            return Err(format!(
+                "invalid input accepted in a batch of nine: {case:?}"
+            ));
+        }
         // Valid paths with an invalid radius or horizon: the single query refuses it too.
         if let (Ok(pa), Ok(pb)) = (path_of(&rows_a), path_of(&rows_b)) {
             let single = path_collision_time(&pa, &pb, radius, &CollisionOptions { t_max });
@@ -246,13 +259,16 @@ fn path_in<const D: usize>(case: &PathCase, k: i32) -> Check {
         }
     }
     // Broadcasts: A against three copies of B, three copies of A against B, one against one;
-    // per-pair radii; on one thread and on two.
+    // nine copies against nine (a block of the batch's lanes, where it has them); per-pair
+    // radii; on one thread and on two.
     let (copies_a, copies_b) = (rows_a.pick(&[0, 0, 0]), rows_b.pick(&[0, 0, 0]));
-    let radii = [radius; 3];
+    let (nine_a, nine_b) = (rows_a.pick(&[0; 9]), rows_b.pick(&[0; 9]));
+    let radii = [radius; 9];
     let sides = [
         (rows_a.side(), copies_b.side(), 3),
         (copies_a.side(), rows_b.side(), 3),
         (rows_a.side(), rows_b.side(), 1),
+        (nine_a.side(), nine_b.side(), 9),
     ];
     for (side_a, side_b, n) in sides {
         let pairs = PathPairs {
