@@ -1,29 +1,32 @@
-//! The path bounds' screen ([`PathBounds::apart`]), eight pairs at a time with AVX-512: a
-//! block of pairs of paths read from their rows, every value checked and every path's box
-//! formed in the vector registers, one pair per lane, without a branch on the data
-//! ([`settled`]). The pairs it settles (valid, their boxes apart) answer "none" at once; the
-//! others go on to the pair's own search, which reads them again and reports any error.
+//! The whole-path screens ([`PathBounds::apart`], then [`apart_across_chords`]), eight pairs
+//! at a time with AVX-512: a block of pairs of paths read from their rows, every value checked
+//! and every path's box and chord spans formed in the vector registers, one pair per lane,
+//! without a branch on the data ([`settled`]). The pairs they settle (valid, proven apart)
+//! answer "none" at once; the others go on to the pair's own search, which reads them again
+//! and reports any error.
 //!
-//! It is the path bounds' proof, computed the way [`PathBounds::set_to`] and
-//! [`PathBounds::reach`] compute it: the same operations in the same order on the same
-//! numbers, so that a lane is settled exactly when the pair's own screen would settle it, and
-//! the batch's answers are the same bits with or without it. It takes the paths it can take
-//! whole: both sides with a path per pair and `K` rows each, every row used with starts that
-//! increase strictly, every value finite, a finite size, and no reach that underflow could
-//! touch; anything else is left to the pair's own path (which settles it, or names its error).
+//! They are the two screens' proofs, computed the way [`PathBounds::set_to`],
+//! [`PathBounds::reach`] and [`apart_across_chords`] compute them: the same operations in the
+//! same order on the same numbers, so that a lane is settled exactly when the pair's own
+//! screens would settle it, and the batch's answers are the same bits with or without them.
+//! They take the paths they can take whole: both sides with a path per pair and `K` rows each,
+//! every row used with starts that increase strictly, every value finite, a finite size, and
+//! no reach that underflow could touch; anything else is left to the pair's own path (which
+//! settles it, or names its error).
 //!
-//! On a pool table half the pairs are settled here, at a few nanoseconds a pair instead of the
-//! fifty or so that reading, checking and bounding them one at a time costs.
+//! On a pool table three pairs in four are settled here, at a few nanoseconds a pair instead
+//! of the fifty to eighty that reading, checking and screening them one at a time costs.
 //!
 //! [`PathBounds::apart`]: crate::collision::path_bounds::PathBounds
 //! [`PathBounds::set_to`]: crate::collision::path_bounds::PathBounds
 //! [`PathBounds::reach`]: crate::collision::path_bounds::PathBounds
+//! [`apart_across_chords`]: crate::collision::chord_normals
 
 use core::arch::x86_64::{
-    __m512d, __m512i, __mmask8, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm512_abs_pd,
-    _mm512_add_pd, _mm512_cmp_pd_mask, _mm512_i64gather_pd, _mm512_loadu_epi64,
-    _mm512_mask_blend_pd, _mm512_max_pd, _mm512_min_pd, _mm512_mul_pd, _mm512_set1_pd,
-    _mm512_setzero_pd, _mm512_sub_pd,
+    __m512d, __m512i, __mmask8, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ,
+    _mm512_abs_pd, _mm512_add_pd, _mm512_cmp_pd_mask, _mm512_div_pd, _mm512_i64gather_pd,
+    _mm512_loadu_epi64, _mm512_mask_blend_pd, _mm512_max_pd, _mm512_min_pd, _mm512_mul_pd,
+    _mm512_set1_pd, _mm512_setzero_pd, _mm512_sqrt_pd, _mm512_sub_pd,
 };
 
 use super::PerPair;
@@ -33,8 +36,27 @@ use crate::collision::window_box::{MARGIN, NORMAL_FLOOR};
 /// Pairs per block: one vector of eight `f64`s.
 pub(crate) const LANES: usize = 8;
 
+/// The pairs of a block that the lanes settle, by screen (bit `l` for the block's pair `l`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Settled {
+    /// The path bounds are apart.
+    pub(crate) bounds: __mmask8,
+    /// The path bounds are not, the spans across a chord are.
+    pub(crate) chords: __mmask8,
+}
+
+/// One side's rows of a block, a lane each: row `k`'s start and its position, velocity and
+/// acceleration on each axis.
+struct LaneRows<const D: usize, const K: usize> {
+    s: [__m512d; K],
+    p: [[__m512d; D]; K],
+    v: [[__m512d; D]; K],
+    a: [[__m512d; D]; K],
+}
+
 /// One side's paths of a block, a lane each: which are taken (valid, every row used, starts
-/// increasing strictly), and the box, size and spread [`PathBounds`] forms for them.
+/// increasing strictly, finite size), and the box, size and spread [`PathBounds`] forms for
+/// them.
 ///
 /// [`PathBounds`]: crate::collision::path_bounds::PathBounds
 struct LaneBounds<const D: usize> {
@@ -45,9 +67,9 @@ struct LaneBounds<const D: usize> {
     spread: __m512d,
 }
 
-/// Which of pairs `first..first + LANES` are settled (bit `l` for pair `first + l`): both
-/// paths taken, radius and horizon valid, and the two paths' boxes farther apart on some axis
-/// than the reach.
+/// Which of pairs `first..first + LANES` are settled: both paths taken, radius and horizon
+/// valid, and the two paths' boxes farther apart on some axis than the reach, or else both
+/// paths ending at rest and apart across a chord.
 ///
 /// # Safety
 /// Both sides must hold a path per pair in rows of `K ≥ 1` segments (`start` of `n·K` values,
@@ -57,14 +79,15 @@ struct LaneBounds<const D: usize> {
 pub(crate) unsafe fn settled<const D: usize, const K: usize>(
     pairs: &PathPairs<'_, D>,
     first: usize,
-) -> __mmask8 {
+) -> Settled {
     // SAFETY: the caller's promise, passed on.
-    let (a, b) = unsafe {
+    let (rows_a, rows_b) = unsafe {
         (
-            lane_bounds::<D, K>(&pairs.a, first),
-            lane_bounds::<D, K>(&pairs.b, first),
+            lane_rows::<D, K>(&pairs.a, first),
+            lane_rows::<D, K>(&pairs.b, first),
         )
     };
+    let (a, b) = (lane_bounds(&rows_a), lane_bounds(&rows_b));
     let radius = lanes_of(pairs.radius, first);
     let t_max = lanes_of(pairs.t_max, first);
     let zero = _mm512_setzero_pd();
@@ -81,14 +104,29 @@ pub(crate) unsafe fn settled<const D: usize, const K: usize>(
         apart |= _mm512_cmp_pd_mask(_mm512_sub_pd(b.lo[i], a.hi[i]), reach, _CMP_GT_OQ);
     }
     // A radius that is positive and finite, a horizon ≥ 0 (NaN fails both); sizes finite.
-    let finite = |x: __m512d| {
-        _mm512_cmp_pd_mask(_mm512_abs_pd(x), _mm512_set1_pd(f64::INFINITY), _CMP_LT_OQ)
-    };
     let valid = _mm512_cmp_pd_mask(radius, zero, _CMP_GT_OQ)
         & finite(radius)
         & _mm512_cmp_pd_mask(t_max, zero, _CMP_GE_OQ)
         & finite(sizes);
-    a.taken & b.taken & valid & plain_reach & apart
+    let taken = a.taken & b.taken & valid & plain_reach;
+    // The chords, only where some lane is left for them.
+    let open = taken & !apart & rests_at_end(&rows_a) & rests_at_end(&rows_b);
+    let chords = if open != 0 {
+        open & (apart_across_chord(&rows_a, &rows_b, reach)
+            | apart_across_chord(&rows_b, &rows_a, reach))
+    } else {
+        0
+    };
+    Settled {
+        bounds: taken & apart,
+        chords,
+    }
+}
+
+/// Lanes whose value is finite.
+#[target_feature(enable = "avx512f")]
+fn finite(x: __m512d) -> __mmask8 {
+    _mm512_cmp_pd_mask(_mm512_abs_pd(x), _mm512_set1_pd(f64::INFINITY), _CMP_LT_OQ)
 }
 
 /// The per-pair values of pairs `first..first + LANES`, a lane each.
@@ -125,20 +163,16 @@ fn prefetch(values: &[f64], from: usize, len: usize) {
     }
 }
 
-/// The bounds of paths `first..first + LANES` of `side`, as `PathBounds::set_to` forms them
-/// for paths whose rows are all used and whose segments are all non-empty, and the checks of
-/// `Path::from_rows` in that case (every value finite, starts increasing).
+/// The rows of paths `first..first + LANES` of `side`, a lane each (and those of the block
+/// `AHEAD` asked for in the cache).
 ///
 /// # Safety
 /// As [`settled`]: the side's rows hold paths `first..first + LANES`, `K` rows each.
 #[target_feature(enable = "avx512f")]
-unsafe fn lane_bounds<const D: usize, const K: usize>(
+unsafe fn lane_rows<const D: usize, const K: usize>(
     side: &PathRows<'_, D>,
     first: usize,
-) -> LaneBounds<D> {
-    let zero = _mm512_setzero_pd();
-    // Row `k` of every lane: its start, and its position, velocity and acceleration on
-    // each axis.
+) -> LaneRows<D, K> {
     let gather = |values: *const f64, k: usize, width: usize, i: usize| {
         // SAFETY: the caller's promise: the block's rows are in range of `values`.
         unsafe { _mm512_i64gather_pd(offsets::<K>(k, width, i), values, 8) }
@@ -150,17 +184,27 @@ unsafe fn lane_bounds<const D: usize, const K: usize>(
     let start = side.start[first * K..].as_ptr();
     let rows = |array: &[[f64; D]]| array[first * K..].as_ptr().cast::<f64>();
     let (pos, vel, acc) = (rows(side.pos), rows(side.vel), rows(side.acc));
-    let s: [__m512d; K] = std::array::from_fn(|k| gather(start, k, 1, 0));
     let row = |values: *const f64, k: usize| -> [__m512d; D] {
         std::array::from_fn(|i| gather(values, k, D, i))
     };
-    let p: [[__m512d; D]; K] = std::array::from_fn(|k| row(pos, k));
-    let v: [[__m512d; D]; K] = std::array::from_fn(|k| row(vel, k));
-    let a: [[__m512d; D]; K] = std::array::from_fn(|k| row(acc, k));
+    LaneRows {
+        s: std::array::from_fn(|k| gather(start, k, 1, 0)),
+        p: std::array::from_fn(|k| row(pos, k)),
+        v: std::array::from_fn(|k| row(vel, k)),
+        a: std::array::from_fn(|k| row(acc, k)),
+    }
+}
 
+/// The bounds of a block's paths, as `PathBounds::set_to` forms them for paths whose rows are
+/// all used and whose segments are all non-empty, and the checks of `Path::from_rows` in that
+/// case (every value finite, starts increasing).
+#[target_feature(enable = "avx512f")]
+fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBounds<D> {
+    let LaneRows { s, p, v, a } = rows;
+    let zero = _mm512_setzero_pd();
     // Starts increasing strictly (NaN fails), from a first above −∞ to a last below +∞: all
     // finite. The other values of every segment but the last are in the size, whose
-    // finiteness [`settled`] checks; the last segment's velocity and acceleration here.
+    // finiteness is checked below; the last segment's velocity and acceleration here.
     let infinity = _mm512_set1_pd(f64::INFINITY);
     let mut taken = _mm512_cmp_pd_mask(s[0], _mm512_set1_pd(f64::NEG_INFINITY), _CMP_GT_OQ)
         & _mm512_cmp_pd_mask(s[K - 1], infinity, _CMP_LT_OQ);
@@ -172,12 +216,11 @@ unsafe fn lane_bounds<const D: usize, const K: usize>(
         taken &= _mm512_cmp_pd_mask(last, infinity, _CMP_LT_OQ);
     }
 
-    let half = _mm512_set1_pd(0.5);
     let one = _mm512_set1_pd(1.0);
     let axes = _mm512_set1_pd(D as f64);
     let mut bounds = LaneBounds {
         taken,
-        lo: [_mm512_set1_pd(f64::INFINITY); D],
+        lo: [infinity; D],
         hi: [_mm512_set1_pd(f64::NEG_INFINITY); D],
         size: zero,
         spread: zero,
@@ -185,24 +228,15 @@ unsafe fn lane_bounds<const D: usize, const K: usize>(
     for k in 0..K - 1 {
         let length = _mm512_sub_pd(s[k + 1], s[k]);
         let reach = _mm512_add_pd(one, length);
-        bounds.spread = _mm512_add_pd(
-            bounds.spread,
-            _mm512_mul_pd(_mm512_mul_pd(axes, reach), reach),
-        );
+        let spread = _mm512_mul_pd(_mm512_mul_pd(axes, reach), reach);
+        bounds.spread = _mm512_add_pd(bounds.spread, spread);
         for i in 0..D {
             let (p, v, a) = (p[k][i], v[k][i], a[k][i]);
             // |p| + (|v| + |a|·L)·L
-            let far = _mm512_mul_pd(
-                _mm512_add_pd(_mm512_abs_pd(v), _mm512_mul_pd(_mm512_abs_pd(a), length)),
-                length,
-            );
-            bounds.size = _mm512_add_pd(bounds.size, _mm512_add_pd(_mm512_abs_pd(p), far));
-            // The Bernstein hull: p, p + ½·v·L, p + (v + ½·a·L)·L.
-            let middle = _mm512_add_pd(p, _mm512_mul_pd(_mm512_mul_pd(half, v), length));
-            let slope = _mm512_add_pd(v, _mm512_mul_pd(_mm512_mul_pd(half, a), length));
-            let end = _mm512_add_pd(p, _mm512_mul_pd(slope, length));
-            let lo = _mm512_min_pd(end, _mm512_min_pd(middle, p));
-            let hi = _mm512_max_pd(end, _mm512_max_pd(middle, p));
+            let far = _mm512_add_pd(_mm512_abs_pd(v), _mm512_mul_pd(_mm512_abs_pd(a), length));
+            let part = _mm512_add_pd(_mm512_abs_pd(p), _mm512_mul_pd(far, length));
+            bounds.size = _mm512_add_pd(bounds.size, part);
+            let [lo, hi] = bernstein_hull(p, v, a, length);
             bounds.lo[i] = _mm512_min_pd(bounds.lo[i], lo);
             bounds.hi[i] = _mm512_max_pd(bounds.hi[i], hi);
         }
@@ -218,16 +252,116 @@ unsafe fn lane_bounds<const D: usize, const K: usize>(
         let down = lt(towards) | (gt(a) & lt(v));
         let up = gt(towards) | (lt(a) & gt(v));
         let lo = _mm512_mask_blend_pd(down, p, _mm512_set1_pd(f64::NEG_INFINITY));
-        let hi = _mm512_mask_blend_pd(up, p, _mm512_set1_pd(f64::INFINITY));
+        let hi = _mm512_mask_blend_pd(up, p, infinity);
         bounds.lo[i] = _mm512_min_pd(bounds.lo[i], lo);
         bounds.hi[i] = _mm512_max_pd(bounds.hi[i], hi);
     }
+    bounds.taken &= finite(bounds.size);
     bounds
+}
+
+/// `bernstein_hull` (`collision::path_bounds`) lane-wise: the least and greatest of `p`,
+/// `p + ½·v·L` and `p + (v + ½·a·L)·L`, with its selects (`x < y ? x : y` is `min_pd(x, y)`).
+#[target_feature(enable = "avx512f")]
+fn bernstein_hull(p: __m512d, v: __m512d, a: __m512d, length: __m512d) -> [__m512d; 2] {
+    let half = _mm512_set1_pd(0.5);
+    let middle = _mm512_add_pd(p, _mm512_mul_pd(_mm512_mul_pd(half, v), length));
+    let slope = _mm512_add_pd(v, _mm512_mul_pd(_mm512_mul_pd(half, a), length));
+    let end = _mm512_add_pd(p, _mm512_mul_pd(slope, length));
+    [
+        _mm512_min_pd(end, _mm512_min_pd(middle, p)),
+        _mm512_max_pd(end, _mm512_max_pd(middle, p)),
+    ]
+}
+
+/// Lanes whose path ends at rest (`rests_at_end` in `collision::chord_normals`).
+#[target_feature(enable = "avx512f")]
+fn rests_at_end<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> __mmask8 {
+    let zero = _mm512_setzero_pd();
+    let mut rests: __mmask8 = !0;
+    for i in 0..D {
+        rests &= _mm512_cmp_pd_mask(rows.v[K - 1][i], zero, _CMP_EQ_OQ);
+        rests &= _mm512_cmp_pd_mask(rows.a[K - 1][i], zero, _CMP_EQ_OQ);
+    }
+    rests
+}
+
+/// `apart_across_chord_of` (`collision::chord_normals`) lane-wise, for taken paths that end
+/// at rest: the normal of `own`'s chord, and the spans on it.
+#[target_feature(enable = "avx512f")]
+fn apart_across_chord<const D: usize, const K: usize>(
+    own: &LaneRows<D, K>,
+    other: &LaneRows<D, K>,
+    reach: __m512d,
+) -> __mmask8 {
+    let (dx, dy) = (
+        _mm512_sub_pd(own.p[K - 1][0], own.p[0][0]),
+        _mm512_sub_pd(own.p[K - 1][1], own.p[0][1]),
+    );
+    let most = _mm512_max_pd(_mm512_abs_pd(dx), _mm512_abs_pd(dy));
+    let normal_chord = _mm512_cmp_pd_mask(most, _mm512_set1_pd(f64::MIN_POSITIVE), _CMP_GE_OQ)
+        & _mm512_cmp_pd_mask(most, _mm512_set1_pd(f64::INFINITY), _CMP_LT_OQ);
+    let scale = _mm512_div_pd(_mm512_set1_pd(0.5), most);
+    let zero = _mm512_setzero_pd();
+    let normal: [__m512d; D] = std::array::from_fn(|i| match i {
+        0 => _mm512_mul_pd(_mm512_mul_pd(dy, _mm512_set1_pd(-1.0)), scale),
+        1 => _mm512_mul_pd(dx, scale),
+        _ => zero,
+    });
+    // (The scalar screen first compares the other path's ends with where this one starts,
+    // against 0.49 of the reach, to give up early; the spans hold those ends and that start,
+    // and are compared against at least 0.4999 of the reach, so that the spans' test implies
+    // it: the lanes need only the spans.)
+    let length2 = _mm512_add_pd(
+        _mm512_mul_pd(normal[0], normal[0]),
+        _mm512_mul_pd(normal[1], normal[1]),
+    );
+    let reach = _mm512_mul_pd(reach, _mm512_sqrt_pd(length2));
+    let (own, other) = (span(own, &normal), span(other, &normal));
+    let spans_apart = _mm512_cmp_pd_mask(_mm512_sub_pd(own[0], other[1]), reach, _CMP_GT_OQ)
+        | _mm512_cmp_pd_mask(_mm512_sub_pd(other[0], own[1]), reach, _CMP_GT_OQ);
+    normal_chord & spans_apart
+}
+
+/// `normal·x` lane-wise, summed in the order of the axes (as `along` does).
+#[target_feature(enable = "avx512f")]
+fn along<const D: usize>(normal: &[__m512d; D], x: &[__m512d; D]) -> __m512d {
+    let mut sum = _mm512_mul_pd(normal[0], x[0]);
+    for i in 1..D {
+        sum = _mm512_add_pd(sum, _mm512_mul_pd(normal[i], x[i]));
+    }
+    sum
+}
+
+/// `span` (`collision::chord_normals`) lane-wise: the least and greatest of `normal·x` along
+/// the path (every segment non-empty, the last at rest).
+#[target_feature(enable = "avx512f")]
+fn span<const D: usize, const K: usize>(
+    rows: &LaneRows<D, K>,
+    normal: &[__m512d; D],
+) -> [__m512d; 2] {
+    let mut hull = [
+        _mm512_set1_pd(f64::INFINITY),
+        _mm512_set1_pd(f64::NEG_INFINITY),
+    ];
+    for k in 0..K - 1 {
+        let length = _mm512_sub_pd(rows.s[k + 1], rows.s[k]);
+        let [lo, hi] = bernstein_hull(
+            along(normal, &rows.p[k]),
+            along(normal, &rows.v[k]),
+            along(normal, &rows.a[k]),
+            length,
+        );
+        hull = [_mm512_min_pd(lo, hull[0]), _mm512_max_pd(hi, hull[1])];
+    }
+    let p = along(normal, &rows.p[K - 1]);
+    [_mm512_min_pd(p, hull[0]), _mm512_max_pd(p, hull[1])]
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::collision::chord_normals::{apart_across_chords, spans_across_chord};
     use crate::collision::path_bounds::PathBounds;
     use crate::path::Path2;
     use crate::test_rng::Rng;
@@ -308,22 +442,25 @@ mod tests {
             }
         }
 
+        /// Side `s`'s path of pair `l`, if valid.
+        fn path(&self, s: usize, l: usize) -> Option<Path2> {
+            let r = l * K..(l + 1) * K;
+            let [pos, vel, acc] = &self.rows[s];
+            Path2::from_rows(
+                &self.start[s][r.clone()],
+                &pos[r.clone()],
+                &vel[r.clone()],
+                &acc[r],
+            )
+            .ok()
+        }
+
         /// Moves pair `l`'s B along x so that its box and A's are the reach apart, to within
         /// a few ulps either way: where the lanes' margin and sizes must be the path bounds'
         /// to the last bit.
         fn on_the_edge(&mut self, l: usize, rng: &mut Rng) -> bool {
             for _ in 0..4 {
-                let bounds = |s: usize| {
-                    let r = l * K..(l + 1) * K;
-                    let [pos, vel, acc] = &self.rows[s];
-                    let path = Path2::from_rows(
-                        &self.start[s][r.clone()],
-                        &pos[r.clone()],
-                        &vel[r.clone()],
-                        &acc[r],
-                    );
-                    path.ok().map(|path| PathBounds::<2>::of(path.segments()))
-                };
+                let bounds = |s: usize| self.path(s, l).map(|p| PathBounds::<2>::of(p.segments()));
                 let (Some(a), Some(b)) = (bounds(0), bounds(1)) else {
                     return false;
                 };
@@ -336,6 +473,34 @@ mod tests {
                 let ulps = rng.uniform(-4.0, 4.0) * f64::EPSILON * gap.abs();
                 for p in &mut self.rows[1][0][l * K..(l + 1) * K] {
                     p[0] += miss + ulps;
+                }
+            }
+            true
+        }
+
+        /// Moves pair `l`'s B along the normal of A's chord so that, on it, B's span and A's
+        /// are the reach apart (to within a few ulps either way), if both paths end at rest.
+        fn on_the_chords_edge(&mut self, l: usize, rng: &mut Rng) -> bool {
+            for _ in 0..4 {
+                let (Some(a), Some(b)) = (self.path(0, l), self.path(1, l)) else {
+                    return false;
+                };
+                let (a, b) = (a.segments(), b.segments());
+                let Some((n, own, other)) = spans_across_chord(a, b) else {
+                    return false;
+                };
+                let (bounds_a, bounds_b) = (PathBounds::<2>::of(a), PathBounds::of(b));
+                let length2 = n[0] * n[0] + n[1] * n[1];
+                let reach = bounds_a.reach(&bounds_b, self.radius[l]).distance() * length2.sqrt();
+                let gap = other[0] - own[1];
+                let ulps = rng.uniform(-4.0, 4.0) * f64::EPSILON * gap.abs();
+                let by = (reach - gap + ulps) / length2;
+                if !by.is_finite() {
+                    return false;
+                }
+                for p in &mut self.rows[1][0][l * K..(l + 1) * K] {
+                    p[0] += by * n[0];
+                    p[1] += by * n[1];
                 }
             }
             true
@@ -363,8 +528,8 @@ mod tests {
 
         /// Pair `l` as the scalar code sees it: `None` if invalid, else whether it is plain
         /// (every row used, starts increasing, finite sizes, a reach underflow cannot touch),
-        /// and whether its path bounds are apart.
-        fn scalar(&self, l: usize) -> Option<(bool, bool)> {
+        /// whether its path bounds are apart, and whether it is apart across the chords.
+        fn scalar(&self, l: usize) -> Option<(bool, bool, bool)> {
             let rows = |s: usize| {
                 let r = l * K..(l + 1) * K;
                 let [pos, vel, acc] = &self.rows[s];
@@ -379,13 +544,15 @@ mod tests {
             if !(radius > 0.0 && radius.is_finite() && t_max >= 0.0) {
                 return None;
             }
-            let (a, b) = (
+            let (bounds_a, bounds_b) = (
                 PathBounds::<2>::of(a.segments()),
                 PathBounds::of(b.segments()),
             );
-            let reach = a.reach(&b, radius);
-            let plain = plain_a && plain_b && a.plain_reach(&b, radius);
-            Some((plain, a.apart(&b, reach)))
+            let reach = bounds_a.reach(&bounds_b, radius);
+            let plain = plain_a && plain_b && bounds_a.plain_reach(&bounds_b, radius);
+            let apart = bounds_a.apart(&bounds_b, reach);
+            let chords = apart_across_chords(a.segments(), b.segments(), reach);
+            Some((plain, apart, chords))
         }
     }
 
@@ -395,34 +562,42 @@ mod tests {
             return;
         }
         let mut rng = Rng(K as u64);
-        let (mut settled_lanes, mut apart_left, mut plain_kept, mut edge) = (0, 0, 0, 0);
+        let (mut settled_lanes, mut chord_lanes, mut apart_left) = (0, 0, 0);
+        let (mut plain_kept, mut edge) = (0, 0);
         for _ in 0..4_000 {
             let mut block = Block::<K>::draw(&mut rng);
             for l in 0..LANES {
-                if rng.below(2) == 0 {
-                    edge += usize::from(block.on_the_edge(l, &mut rng));
-                }
+                edge += usize::from(match rng.below(3) {
+                    0 => block.on_the_edge(l, &mut rng),
+                    1 => block.on_the_chords_edge(l, &mut rng),
+                    _ => false,
+                });
             }
             // SAFETY: AVX-512 F is supported; the block's rows hold LANES paths of K rows.
             let settled = unsafe { settled::<2, K>(&block.pairs(), 0) };
             for l in 0..LANES {
-                let lane = settled & (1 << l) != 0;
+                let bit = |mask: u8| mask & (1 << l) != 0;
+                let (by_bounds, by_chords) = (bit(settled.bounds), bit(settled.chords));
+                let what = || format!("lane {l} of {:?}", block.pairs());
                 match block.scalar(l) {
-                    // Settled: valid, and the path bounds' own proof.
-                    Some((plain, apart)) => {
-                        assert!(!lane || (plain && apart), "lane {l} of {:?}", block.pairs());
-                        // Plain and apart: the lanes settle it.
-                        assert!(!(plain && apart) || lane, "lane {l} of {:?}", block.pairs());
-                        settled_lanes += usize::from(lane);
-                        apart_left += usize::from(apart && !plain);
-                        plain_kept += usize::from(plain && !apart);
+                    // Settled exactly where the pair is plain and a screen proves it apart, by
+                    // the screen that comes first.
+                    Some((plain, apart, chords)) => {
+                        assert_eq!(by_bounds, plain && apart, "bounds: {}", what());
+                        assert_eq!(by_chords, plain && !apart && chords, "chords: {}", what());
+                        settled_lanes += usize::from(by_bounds | by_chords);
+                        chord_lanes += usize::from(by_chords);
+                        apart_left += usize::from((apart || chords) && !plain);
+                        plain_kept += usize::from(plain && !apart && !chords);
                     }
-                    None => assert!(!lane, "invalid lane {l} of {:?}", block.pairs()),
+                    None => assert!(!(by_bounds | by_chords), "invalid: {}", what()),
                 }
             }
         }
         // Each outcome is met many times (else the test could not fail).
+        eprintln!("{settled_lanes} {chord_lanes} {apart_left} {plain_kept} {edge}");
         assert!(settled_lanes > 2_000, "{settled_lanes} settled");
+        assert!(chord_lanes > 200, "{chord_lanes} settled across a chord");
         assert!(
             apart_left > 150,
             "{apart_left} apart, left to the pair's screen"

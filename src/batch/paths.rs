@@ -10,8 +10,8 @@
 //! identical, and so are the answers for any number of threads.
 //!
 //! On CPUs with AVX-512, rows of 2 and 3 segments (a friction ball's, a pool ball's) first go
-//! through the path bounds eight pairs at a time ([`path_lanes`](super::path_lanes)): the same
-//! proof, to the bit, on the pairs it can take whole, at a fraction of the cost; the pairs it
+//! through the path bounds and the chord normals eight pairs at a time
+//! ([`path_lanes`](super::path_lanes)): the same proofs, to the bit, on the pairs it can take whole, at a fraction of the cost; the pairs it
 //! does not settle go on one by one.
 
 #[cfg(target_arch = "x86_64")]
@@ -236,27 +236,33 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
     // One call of the pair's search in the loop (two would be inlined twice, and the
     // compiler then does worse with both).
     let lanes = LANES && K > 0 && shared[0].is_none() && shared[1].is_none();
-    let mut settled: u8 = 0;
+    // Bit `l`: the block's pair `l` is settled by the path bounds, by the chords.
+    let (mut bounds, mut chords): (u8, u8) = (0, 0);
     let chunk_len = chunk.len();
     for (k, slot) in chunk.iter_mut().enumerate() {
         #[cfg(target_arch = "x86_64")]
         if lanes && k % LANE_WIDTH == 0 {
-            settled = 0;
+            (bounds, chords) = (0, 0);
             if k + LANE_WIDTH <= chunk_len {
                 // SAFETY: `LANES` is set only in the AVX-512 copy, run where the CPU has it;
                 // the sides were checked to hold a path per pair in rows of `K`, the per-pair
                 // values to have one per pair, and the block is in range.
-                settled = unsafe { path_lanes::settled::<D, K>(pairs, offset + k) };
+                let settled = unsafe { path_lanes::settled::<D, K>(pairs, offset + k) };
+                (bounds, chords) = (settled.bounds, settled.chords);
             }
         }
-        *slot = if settled & 1 != 0 {
+        *slot = if (bounds | chords) & 1 != 0 {
             count(Stage::PathPair);
-            count(Stage::BoundsApart);
+            count(if bounds & 1 != 0 {
+                Stage::BoundsApart
+            } else {
+                Stage::ChordsApart
+            });
             f64::INFINITY
         } else {
             pair_time::<D, K>(pairs, offset + k, shared, &mut buffers)?
         };
-        settled >>= 1;
+        (bounds, chords) = (bounds >> 1, chords >> 1);
     }
     Ok(())
 }

@@ -87,6 +87,17 @@ fn apart_across_chord_of<const D: usize>(
     (own[0] - other[1] > reach) | (other[0] - own[1] > reach)
 }
 
+/// The normal of `own`'s chord and both paths' spans on it, as the screen forms them (for
+/// tests that place paths at the screen's edge).
+#[cfg(test)]
+pub(crate) fn spans_across_chord<const D: usize>(
+    own: &[Segment<D>],
+    other: &[Segment<D>],
+) -> Option<([f64; D], [f64; 2], [f64; 2])> {
+    let normal = chord_normal(own)?;
+    Some((normal, span(own, &normal), span(other, &normal)))
+}
+
 /// Whether the path's last segment is at rest: its span on any direction is then bounded.
 #[inline(always)]
 fn rests_at_end<const D: usize>(segments: &[Segment<D>]) -> bool {

@@ -18,7 +18,7 @@
 //! | after stop | `after_stop.rs` | after the first stop, the mover against a ball at rest: closed form | `collision_time`, scene, batch lanes |
 //! | **paths** | | | |
 //! | path bounds | `path_bounds.rs`; lane-wise, `batch/path_lanes.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch; rows of 2 and 3 segments eight pairs at a time on AVX-512 CPUs, the same proof to the bit); not for two paths of one segment each, whose one window goes straight to the window's stages |
-//! | chord normals | `chord_normals.rs` | on the normal of either path's chord (from where its ball starts to where it rests), the two paths' spans are apart: never a contact | `path_collision_time`, `path_collision_times`, after the path bounds |
+//! | chord normals | `chord_normals.rs` | on the normal of either path's chord (from where its ball starts to where it rests), the two paths' spans are apart: never a contact | `path_collision_time`, `path_collision_times`, after the path bounds (lane-wise with them in `batch/path_lanes.rs`) |
 //! | segment boxes | `path_bounds.rs` (`segments_apart`) | the boxes of the two segments active on a window (kept with the path bounds) are apart: no contact on the window, and no motion formed | path windows |
 //! | path contact | `path_contact.rs` | the window loop: windows between segment starts of either path, each formed from the two active segments in time since their own starts | `path_collision_time`, `path_collision_times` |
 //! | (counts) | `stage_counts.rs` | how many pairs and windows each path stage settles (cargo feature `stage-counts`) | the benchmarks |
@@ -79,7 +79,7 @@
 //!   (the gap's minimum is then within rounding of zero): either answer may come back.
 
 pub(crate) mod after_stop;
-mod chord_normals;
+pub(crate) mod chord_normals;
 pub(crate) mod crossing;
 mod entry;
 mod exclusion;
