@@ -11,13 +11,13 @@
 //!
 //! On CPUs with AVX-512, rows of 2 and 3 segments (a friction ball's, a pool ball's) first go
 //! through the path bounds and the chord normals eight pairs at a time
-//! ([`path_lanes`](super::path_lanes)): the same proofs, to the bit, on the pairs it can take whole, at a fraction of the cost; the pairs it
-//! does not settle go on one by one.
+//! ([`path_lanes`](super::path_lanes)): the same proofs, to the bit, on the pairs they can take
+//! whole, at a fraction of the cost; the pairs they do not settle go on one by one.
 
 #[cfg(target_arch = "x86_64")]
 use super::X86Level;
 #[cfg(target_arch = "x86_64")]
-use super::path_lanes::{self, LANES as LANE_WIDTH};
+use super::path_lanes::{LANES as LANE_WIDTH, settled};
 use super::{PerPair, Threads, check_len, run_chunks};
 use crate::collision::path_bounds::PathBounds;
 use crate::collision::path_contact::first_bounded_contact;
@@ -204,8 +204,8 @@ fn path_chunk_portable<const D: usize>(
     path_chunk_in::<D, false>(pairs, offset, chunk, shared)
 }
 
-/// [`path_chunk_portable`], with the lane-wise path bounds in front where `LANES` (only in
-/// the AVX-512 copy, whose CPU runs them).
+/// [`path_chunk_portable`], with the lane-wise screens in front where `LANES` (only in the
+/// AVX-512 copy, whose CPU runs them).
 #[inline(always)]
 fn path_chunk_in<const D: usize, const LANES: bool>(
     pairs: &PathPairs<'_, D>,
@@ -223,7 +223,7 @@ fn path_chunk_in<const D: usize, const LANES: bool>(
 }
 
 /// [`path_chunk_portable`] for rows of `K` segments on both sides (`K = 0`: any number); with
-/// `LANES`, blocks of pairs first go through the lane-wise path bounds
+/// `LANES`, blocks of pairs first go through the lane-wise screens
 /// ([`path_lanes`](super::path_lanes)), where neither side is broadcast.
 #[inline(always)]
 fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
@@ -240,16 +240,11 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
     let (mut bounds, mut chords): (u8, u8) = (0, 0);
     let chunk_len = chunk.len();
     for (k, slot) in chunk.iter_mut().enumerate() {
-        #[cfg(target_arch = "x86_64")]
-        if lanes && k % LANE_WIDTH == 0 {
-            (bounds, chords) = (0, 0);
-            if k + LANE_WIDTH <= chunk_len {
-                // SAFETY: `LANES` is set only in the AVX-512 copy, run where the CPU has it;
-                // the sides were checked to hold a path per pair in rows of `K`, the per-pair
-                // values to have one per pair, and the block is in range.
-                let settled = unsafe { path_lanes::settled::<D, K>(pairs, offset + k) };
-                (bounds, chords) = (settled.bounds, settled.chords);
-            }
+        if lanes && k % LANE_WIDTH == 0 && k + LANE_WIDTH <= chunk_len {
+            // SAFETY: `LANES` is set only in the AVX-512 copy, run where the CPU has it; the
+            // sides were checked to hold a path per pair in rows of `K`, the per-pair values
+            // to have one per pair, and the block is in range.
+            (bounds, chords) = unsafe { settled_block::<D, K>(pairs, offset + k) };
         }
         *slot = if (bounds | chords) & 1 != 0 {
             count(Stage::PathPair);
@@ -265,6 +260,41 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
         (bounds, chords) = (bounds >> 1, chords >> 1);
     }
     Ok(())
+}
+
+/// The pairs of the block at `first` that the lane-wise screens settle, by the path bounds and
+/// by the chords (bit `l` for pair `first + l`).
+///
+/// # Safety
+/// As [`settled`]: the CPU has AVX-512 F, and the block is in range of checked sides that hold
+/// a path per pair in rows of `K`.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn settled_block<const D: usize, const K: usize>(
+    pairs: &PathPairs<'_, D>,
+    first: usize,
+) -> (u8, u8) {
+    // SAFETY: the caller's promise, passed on.
+    let settled = unsafe { settled::<D, K>(pairs, first) };
+    (settled.bounds, settled.chords)
+}
+
+/// Without the lanes (other CPUs): nothing settled.
+#[cfg(not(target_arch = "x86_64"))]
+const LANE_WIDTH: usize = 8;
+
+/// Without the lanes (other CPUs): nothing settled. Never called (the lanes run only in the
+/// AVX-512 copy).
+///
+/// # Safety
+/// None needed.
+#[cfg(not(target_arch = "x86_64"))]
+#[inline(always)]
+unsafe fn settled_block<const D: usize, const K: usize>(
+    _pairs: &PathPairs<'_, D>,
+    _first: usize,
+) -> (u8, u8) {
+    (0, 0)
 }
 
 /// The broadcast paths of a batch of path pairs (A's, B's), read and checked once, with their
