@@ -24,9 +24,9 @@
 //! [`apart_across_chords`]: crate::collision::chord_normals
 
 use core::arch::x86_64::{
-    __m512d, __m512i, __mmask8, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ,
-    _mm512_abs_pd, _mm512_add_pd, _mm512_cmp_pd_mask, _mm512_div_pd, _mm512_i64gather_pd,
-    _mm512_loadu_epi64, _mm512_mask_blend_pd, _mm512_max_pd, _mm512_min_pd, _mm512_mul_pd,
+    __m512d, __mmask8, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm512_abs_pd,
+    _mm512_add_pd, _mm512_cmp_pd_mask, _mm512_div_pd, _mm512_loadu_epi64, _mm512_loadu_pd,
+    _mm512_mask_blend_pd, _mm512_max_pd, _mm512_min_pd, _mm512_mul_pd, _mm512_permutex2var_pd,
     _mm512_set1_pd, _mm512_setzero_pd, _mm512_sqrt_pd, _mm512_sub_pd,
 };
 
@@ -125,12 +125,14 @@ pub(crate) unsafe fn settled<const D: usize, const K: usize>(
 }
 
 /// Lanes whose value is finite.
+#[inline]
 #[target_feature(enable = "avx512f")]
 fn finite(x: __m512d) -> __mmask8 {
     _mm512_cmp_pd_mask(_mm512_abs_pd(x), _mm512_set1_pd(f64::INFINITY), _CMP_LT_OQ)
 }
 
 /// The per-pair values of pairs `first..first + LANES`, a lane each.
+#[inline]
 #[target_feature(enable = "avx512f")]
 fn lanes_of(values: PerPair<'_>, first: usize) -> __m512d {
     let lanes: [f64; LANES] = std::array::from_fn(|l| values.get(first + l));
@@ -138,17 +140,77 @@ fn lanes_of(values: PerPair<'_>, first: usize) -> __m512d {
     unsafe { std::mem::transmute(lanes) }
 }
 
-/// The offsets of row `row` of paths `0..LANES` of a block, in `f64`s from the block's first,
-/// for rows of `width` values, `K` rows a path.
+/// The most values a path has in one array of its rows: `K·D` for 3 rows in 3-D.
+const MOST: usize = 9;
+
+/// `LANES·W` values from `values` on, a path's `W` in a row, as `W` vectors (the first `W` of
+/// the array): vector `c`'s lane `l` holds `values[l·W + c]`. Read as whole vectors and put in
+/// place by permutes and blends, which cost a fraction of gathers: the block's values are
+/// contiguous. `W` is a constant so that the lane indices and masks are too.
+///
+/// # Safety
+/// `values` must be valid for reading `LANES·W` values, and `1 ≤ W ≤ MOST`.
+#[inline]
 #[target_feature(enable = "avx512f")]
-fn offsets<const K: usize>(row: usize, width: usize, component: usize) -> __m512i {
-    let at: [i64; LANES] = std::array::from_fn(|l| ((l * K + row) * width + component) as i64);
-    // SAFETY: reads the eight `i64`s of `at`.
-    unsafe { _mm512_loadu_epi64(at.as_ptr()) }
+unsafe fn transposed<const W: usize>(values: *const f64) -> [__m512d; MOST] {
+    let zero = _mm512_setzero_pd();
+    let mut loaded = [zero; MOST];
+    for (j, vector) in loaded.iter_mut().enumerate().take(W) {
+        // SAFETY: vectors `0..W` are the caller's `LANES·W` values.
+        *vector = unsafe { _mm512_loadu_pd(values.add(LANES * j)) };
+    }
+    let mut out = [zero; MOST];
+    for (c, vector) in out.iter_mut().enumerate().take(W) {
+        // Lane `l`'s value is value `l·W + c` of the block: in the pair of loaded vectors
+        // `g = (l·W + c) / 16`, at `(l·W + c) % 16` of the two.
+        let mut index = [0i64; LANES];
+        for (l, at) in index.iter_mut().enumerate() {
+            *at = ((l * W + c) % (2 * LANES)) as i64;
+        }
+        // SAFETY: reads the eight `i64`s of `index`.
+        let index = unsafe { _mm512_loadu_epi64(index.as_ptr()) };
+        for g in 0..W.div_ceil(2) {
+            let mut mask: __mmask8 = 0;
+            for l in 0..LANES {
+                if (l * W + c) / (2 * LANES) == g {
+                    mask |= 1 << l;
+                }
+            }
+            if mask == 0 {
+                continue;
+            }
+            // (With an odd `W` the last pair's second vector is never indexed.)
+            let (low, high) = (loaded[2 * g], loaded[(2 * g + 1).min(W - 1)]);
+            let part = _mm512_permutex2var_pd(low, index, high);
+            *vector = _mm512_mask_blend_pd(mask, *vector, part);
+        }
+    }
+    out
 }
 
-/// How many pairs ahead of the block the rows are fetched to the cache: the gathers do not
-/// set off the CPU's own prefetching as plain loads in order do.
+/// [`transposed`] for a width known only as `K` or `K·D` of a caller's constants (which
+/// fold the match): the widths of rows of 1 to 3 segments in 2-D or 3-D.
+///
+/// # Safety
+/// As [`transposed`], with `width` for `W`.
+#[inline]
+#[target_feature(enable = "avx512f")]
+unsafe fn transposed_rows(values: *const f64, width: usize) -> [__m512d; MOST] {
+    // SAFETY: the caller's promise, passed on.
+    unsafe {
+        match width {
+            1 => transposed::<1>(values),
+            2 => transposed::<2>(values),
+            3 => transposed::<3>(values),
+            4 => transposed::<4>(values),
+            6 => transposed::<6>(values),
+            9 => transposed::<9>(values),
+            _ => unreachable!("no rows of {width} values (see `lane_rows`)"),
+        }
+    }
+}
+
+/// How many pairs ahead of the block the rows are fetched to the cache.
 const AHEAD: usize = 4 * LANES;
 
 /// Asks for `values[from..from + len]` in the cache (nothing past the end).
@@ -169,36 +231,41 @@ fn prefetch(values: &[f64], from: usize, len: usize) {
 ///
 /// # Safety
 /// As [`settled`]: the side's rows hold paths `first..first + LANES`, `K` rows each.
+#[inline]
 #[target_feature(enable = "avx512f")]
 unsafe fn lane_rows<const D: usize, const K: usize>(
     side: &PathRows<'_, D>,
     first: usize,
 ) -> LaneRows<D, K> {
-    let gather = |values: *const f64, k: usize, width: usize, i: usize| {
-        // SAFETY: the caller's promise: the block's rows are in range of `values`.
-        unsafe { _mm512_i64gather_pd(offsets::<K>(k, width, i), values, 8) }
-    };
     prefetch(side.start, (first + AHEAD) * K, LANES * K);
     for array in [side.pos, side.vel, side.acc] {
         prefetch(array.as_flattened(), (first + AHEAD) * K * D, LANES * K * D);
     }
-    let start = side.start[first * K..].as_ptr();
-    let rows = |array: &[[f64; D]]| array[first * K..].as_ptr().cast::<f64>();
-    let (pos, vel, acc) = (rows(side.pos), rows(side.vel), rows(side.acc));
-    let row = |values: *const f64, k: usize| -> [__m512d; D] {
-        std::array::from_fn(|i| gather(values, k, D, i))
+    const { assert!(K <= 3 && D <= 3, "rows of up to 3 segments, in 2-D or 3-D") };
+    // SAFETY: the caller's promise: the block's `LANES·K` starts and rows are in range.
+    let (start, pos, vel, acc) = unsafe {
+        (
+            transposed_rows(side.start[first * K..].as_ptr(), K),
+            transposed_rows(side.pos[first * K..].as_ptr().cast::<f64>(), K * D),
+            transposed_rows(side.vel[first * K..].as_ptr().cast::<f64>(), K * D),
+            transposed_rows(side.acc[first * K..].as_ptr().cast::<f64>(), K * D),
+        )
+    };
+    let rows = |flat: [__m512d; MOST]| -> [[__m512d; D]; K] {
+        std::array::from_fn(|k| std::array::from_fn(|i| flat[k * D + i]))
     };
     LaneRows {
-        s: std::array::from_fn(|k| gather(start, k, 1, 0)),
-        p: std::array::from_fn(|k| row(pos, k)),
-        v: std::array::from_fn(|k| row(vel, k)),
-        a: std::array::from_fn(|k| row(acc, k)),
+        s: std::array::from_fn(|k| start[k]),
+        p: rows(pos),
+        v: rows(vel),
+        a: rows(acc),
     }
 }
 
 /// The bounds of a block's paths, as `PathBounds::set_to` forms them for paths whose rows are
 /// all used and whose segments are all non-empty, and the checks of `Path::from_rows` in that
 /// case (every value finite, starts increasing).
+#[inline]
 #[target_feature(enable = "avx512f")]
 fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBounds<D> {
     let LaneRows { s, p, v, a } = rows;
@@ -263,6 +330,7 @@ fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBou
 
 /// `bernstein_hull` (`collision::path_bounds`) lane-wise: the least and greatest of `p`,
 /// `p + ½·v·L` and `p + (v + ½·a·L)·L`, with its selects (`x < y ? x : y` is `min_pd(x, y)`).
+#[inline]
 #[target_feature(enable = "avx512f")]
 fn bernstein_hull(p: __m512d, v: __m512d, a: __m512d, length: __m512d) -> [__m512d; 2] {
     let half = _mm512_set1_pd(0.5);
@@ -276,6 +344,7 @@ fn bernstein_hull(p: __m512d, v: __m512d, a: __m512d, length: __m512d) -> [__m51
 }
 
 /// Lanes whose path ends at rest (`rests_at_end` in `collision::chord_normals`).
+#[inline]
 #[target_feature(enable = "avx512f")]
 fn rests_at_end<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> __mmask8 {
     let zero = _mm512_setzero_pd();
@@ -289,6 +358,7 @@ fn rests_at_end<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> __mmas
 
 /// `apart_across_chord_of` (`collision::chord_normals`) lane-wise, for taken paths that end
 /// at rest: the normal of `own`'s chord, and the spans on it.
+#[inline]
 #[target_feature(enable = "avx512f")]
 fn apart_across_chord<const D: usize, const K: usize>(
     own: &LaneRows<D, K>,
@@ -325,6 +395,7 @@ fn apart_across_chord<const D: usize, const K: usize>(
 }
 
 /// `normal·x` lane-wise, summed in the order of the axes (as `along` does).
+#[inline]
 #[target_feature(enable = "avx512f")]
 fn along<const D: usize>(normal: &[__m512d; D], x: &[__m512d; D]) -> __m512d {
     let mut sum = _mm512_mul_pd(normal[0], x[0]);
@@ -336,6 +407,7 @@ fn along<const D: usize>(normal: &[__m512d; D], x: &[__m512d; D]) -> __m512d {
 
 /// `span` (`collision::chord_normals`) lane-wise: the least and greatest of `normal·x` along
 /// the path (every segment non-empty, the last at rest).
+#[inline]
 #[target_feature(enable = "avx512f")]
 fn span<const D: usize, const K: usize>(
     rows: &LaneRows<D, K>,
