@@ -196,23 +196,30 @@ fn describe(name: &str, set: &PathSet) {
     );
     if stages.path_pairs > 0 {
         let of = |k: u64, n: u64| 100.0 * k as f64 / n as f64;
-        let left = stages.path_pairs - stages.bounds_apart - stages.chords_apart;
+        let left =
+            stages.path_pairs - stages.bounds_apart - stages.chords_apart - stages.windows_apart;
         eprintln!(
             "{name}: stages (feature stage-counts): {} pairs; path bounds apart: {} ({:.1} %); \
-             apart across a chord: {} ({:.1} %); the {left} left: {} windows ({:.2} a pair), {} ({:.1} %) proven apart by their \
-             segments' boxes, {} ({:.1} %) by the window box, {} ({:.1} %) in closed form \
+             apart across a chord: {} ({:.1} %); every window apart at once (lanes): {} \
+             ({:.1} %); the {left} left: {} windows ({:.2} a pair), {} ({:.1} %) proven apart by their \
+             segments' boxes, {} ({:.1} %) by the window box, {} ({:.1} %) across the window's \
+             chord, {} ({:.1} %) in closed form \
              (straight), {} ({:.1} %) searched; {} contacts",
             stages.path_pairs,
             stages.bounds_apart,
             of(stages.bounds_apart, stages.path_pairs),
             stages.chords_apart,
             of(stages.chords_apart, stages.path_pairs),
+            stages.windows_apart,
+            of(stages.windows_apart, stages.path_pairs),
             stages.windows,
             stages.windows as f64 / left.max(1) as f64,
             stages.windows_segments_apart,
             of(stages.windows_segments_apart, stages.windows),
             stages.windows_box_apart,
             of(stages.windows_box_apart, stages.windows),
+            stages.windows_chord_apart,
+            of(stages.windows_chord_apart, stages.windows),
             stages.windows_straight,
             of(stages.windows_straight, stages.windows),
             stages.windows_searched,

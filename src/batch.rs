@@ -9,6 +9,8 @@
 #[cfg(target_arch = "x86_64")]
 mod path_lanes;
 mod paths;
+#[cfg(target_arch = "x86_64")]
+mod window_lanes;
 
 pub use paths::{PathPairs, PathRows, path_collision_times, path_positions_at};
 #[cfg(feature = "python")]

@@ -1,9 +1,10 @@
 //! The whole-path screens ([`PathBounds::apart`], then [`apart_across_chords`]), eight pairs
 //! at a time with AVX-512: a block of pairs of paths read from their rows, every value checked
 //! and every path's box and chord spans formed in the vector registers, one pair per lane,
-//! without a branch on the data ([`settled`]). The pairs they settle (valid, proven apart)
-//! answer "none" at once; the others go on to the pair's own search, which reads them again
-//! and reports any error.
+//! without a branch on the data ([`settled`]); then, for the pairs they leave, the window
+//! screens on every window of the pair ([`window_lanes`](super::window_lanes)). The pairs they
+//! settle (valid, proven apart) answer "none" at once; the others go on to the pair's own
+//! search, which reads them again and reports any error.
 //!
 //! They are the two screens' proofs, computed the way [`PathBounds::set_to`],
 //! [`PathBounds::reach`] and [`apart_across_chords`] compute them: the same operations in the
@@ -14,9 +15,9 @@
 //! no reach that underflow could touch; anything else is left to the pair's own path (which
 //! settles it, or names its error).
 //!
-//! On a pool table three pairs in four are settled here, at about fifteen nanoseconds a pair
-//! instead of the sixty to eighty that reading, checking and screening them one at a time
-//! costs.
+//! On a pool table three pairs in four are settled by the whole-path screens and one in five
+//! by the windows, at about fifteen nanoseconds a pair instead of the sixty to eighty that
+//! reading, checking and screening them one at a time costs (200 or more for the windows).
 //!
 //! [`PathBounds::apart`]: crate::collision::path_bounds::PathBounds
 //! [`PathBounds::set_to`]: crate::collision::path_bounds::PathBounds
@@ -32,6 +33,7 @@ use core::arch::x86_64::{
 
 use super::PerPair;
 use super::paths::{PathPairs, PathRows};
+use super::window_lanes::{LaneSide, windows_apart};
 use crate::collision::window_box::{MARGIN, NORMAL_FLOOR};
 
 /// Pairs per block: one vector of eight `f64`s.
@@ -44,15 +46,24 @@ pub(crate) struct Settled {
     pub(crate) bounds: __mmask8,
     /// The path bounds are not, the spans across a chord are.
     pub(crate) chords: __mmask8,
+    /// Neither is, every window is proven apart ([`window_lanes`](super::window_lanes)).
+    pub(crate) windows: __mmask8,
 }
 
 /// One side's rows of a block, a lane each: row `k`'s start and its position, velocity and
 /// acceleration on each axis.
-struct LaneRows<const D: usize, const K: usize> {
-    s: [__m512d; K],
-    p: [[__m512d; D]; K],
-    v: [[__m512d; D]; K],
-    a: [[__m512d; D]; K],
+pub(super) struct LaneRows<const D: usize, const K: usize> {
+    pub(super) s: [__m512d; K],
+    pub(super) p: [[__m512d; D]; K],
+    pub(super) v: [[__m512d; D]; K],
+    pub(super) a: [[__m512d; D]; K],
+}
+
+/// One side's segment boxes of a block, a lane each: segment `k`'s least and greatest value
+/// on each axis.
+pub(super) struct LaneBoxes<const D: usize, const K: usize> {
+    pub(super) lo: [[__m512d; D]; K],
+    pub(super) hi: [[__m512d; D]; K],
 }
 
 /// One side's paths of a block, a lane each: which are taken (valid, every row used, starts
@@ -60,12 +71,15 @@ struct LaneRows<const D: usize, const K: usize> {
 /// them.
 ///
 /// [`PathBounds`]: crate::collision::path_bounds::PathBounds
-struct LaneBounds<const D: usize> {
+struct LaneBounds<const D: usize, const K: usize> {
     taken: __mmask8,
     lo: [__m512d; D],
     hi: [__m512d; D],
     size: __m512d,
     spread: __m512d,
+    /// The box of each segment (`PathBounds`' segment boxes: a path of `K ≤ 3` rows keeps
+    /// one for every segment).
+    segments: LaneBoxes<D, K>,
 }
 
 /// Which of pairs `first..first + LANES` are settled: both paths taken, radius and horizon
@@ -118,9 +132,27 @@ pub(crate) unsafe fn settled<const D: usize, const K: usize>(
     } else {
         0
     };
+    // The windows, only where some lane is left for them.
+    let left = taken & !apart & !chords;
+    let windows = if left != 0 {
+        let (side_a, side_b) = (
+            LaneSide {
+                rows: &rows_a,
+                boxes: &a.segments,
+            },
+            LaneSide {
+                rows: &rows_b,
+                boxes: &b.segments,
+            },
+        );
+        windows_apart(&side_a, &side_b, radius, reach, left)
+    } else {
+        0
+    };
     Settled {
         bounds: taken & apart,
         chords,
+        windows,
     }
 }
 
@@ -267,7 +299,7 @@ unsafe fn lane_rows<const D: usize, const K: usize>(
 /// case (every value finite, starts increasing).
 #[inline]
 #[target_feature(enable = "avx512f")]
-fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBounds<D> {
+fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBounds<D, K> {
     let LaneRows { s, p, v, a } = rows;
     let zero = _mm512_setzero_pd();
     // Starts increasing strictly (NaN fails), from a first above −∞ to a last below +∞: all
@@ -292,6 +324,10 @@ fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBou
         hi: [_mm512_set1_pd(f64::NEG_INFINITY); D],
         size: zero,
         spread: zero,
+        segments: LaneBoxes {
+            lo: [[zero; D]; K],
+            hi: [[zero; D]; K],
+        },
     };
     for k in 0..K - 1 {
         let length = _mm512_sub_pd(s[k + 1], s[k]);
@@ -305,6 +341,7 @@ fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBou
             let part = _mm512_add_pd(_mm512_abs_pd(p), _mm512_mul_pd(far, length));
             bounds.size = _mm512_add_pd(bounds.size, part);
             let [lo, hi] = bernstein_hull(p, v, a, length);
+            (bounds.segments.lo[k][i], bounds.segments.hi[k][i]) = (lo, hi);
             bounds.lo[i] = _mm512_min_pd(bounds.lo[i], lo);
             bounds.hi[i] = _mm512_max_pd(bounds.hi[i], hi);
         }
@@ -321,6 +358,7 @@ fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBou
         let up = gt(towards) | (lt(a) & gt(v));
         let lo = _mm512_mask_blend_pd(down, p, _mm512_set1_pd(f64::NEG_INFINITY));
         let hi = _mm512_mask_blend_pd(up, p, infinity);
+        (bounds.segments.lo[K - 1][i], bounds.segments.hi[K - 1][i]) = (lo, hi);
         bounds.lo[i] = _mm512_min_pd(bounds.lo[i], lo);
         bounds.hi[i] = _mm512_max_pd(bounds.hi[i], hi);
     }
@@ -434,8 +472,11 @@ fn span<const D: usize, const K: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::CollisionOptions;
     use crate::collision::chord_normals::{apart_across_chords, spans_across_chord};
     use crate::collision::path_bounds::PathBounds;
+    use crate::collision::path_collision_time_unscreened;
+    use crate::collision::path_contact::every_window_screened;
     use crate::path::Path2;
     use crate::test_rng::Rng;
 
@@ -627,6 +668,11 @@ mod tests {
             let chords = apart_across_chords(a.segments(), b.segments(), reach);
             Some((plain, apart, chords))
         }
+
+        /// Pair `l`'s paths, if both are valid.
+        fn paths(&self, l: usize) -> Option<(Path2, Path2)> {
+            Some((self.path(0, l)?, self.path(1, l)?))
+        }
     }
 
     fn lanes_settle_what_the_path_bounds_settle<const K: usize>() {
@@ -677,6 +723,79 @@ mod tests {
         );
         assert!(plain_kept > 3_000, "{plain_kept} plain, not apart");
         assert!(edge > 2_000, "{edge} on the edge");
+    }
+
+    /// The window lanes, on the pairs the whole-path screens leave: a pair they settle has no
+    /// contact (the search without screens finds none, at any horizon), and where the pair's
+    /// magnitudes are ordinary (no underflow or overflow in sight), they settle exactly the
+    /// pairs whose every window the pair's own window screens prove apart.
+    fn lanes_settle_what_the_window_screens_settle<const K: usize>() {
+        if !std::arch::is_x86_feature_detected!("avx512f") {
+            eprintln!("no AVX-512 here: the lanes are not run");
+            return;
+        }
+        let mut rng = Rng(100 + K as u64);
+        let (mut settled_lanes, mut ordinary_left, mut checked) = (0, 0, 0);
+        let options = CollisionOptions::default();
+        for _ in 0..4_000 {
+            let block = Block::<K>::draw(&mut rng);
+            // SAFETY: AVX-512 F is supported; the block's rows hold LANES paths of K rows.
+            let settled = unsafe { settled::<2, K>(&block.pairs(), 0) };
+            for l in 0..LANES {
+                let by_windows = settled.windows & (1 << l) != 0;
+                let what = || format!("lane {l} of {:?}", block.pairs());
+                let Some((plain, apart, chords)) = block.scalar(l) else {
+                    assert!(!by_windows, "invalid: {}", what());
+                    continue;
+                };
+                let Some((a, b)) = block.paths(l) else {
+                    unreachable!("valid pairs have valid paths")
+                };
+                let radius = block.radius[l];
+                assert!(!(by_windows && (apart || chords)), "twice: {}", what());
+                if by_windows {
+                    let unscreened = path_collision_time_unscreened(&a, &b, radius, &options);
+                    assert_eq!(unscreened, Ok(None), "a contact: {}", what());
+                    settled_lanes += 1;
+                }
+                // Ordinary magnitudes: every value of the pair between 2⁻⁴⁰⁰ and 2⁴⁰⁰ (or 0).
+                let ordinary = [&a, &b].iter().all(|path| {
+                    path.segments().iter().all(|s| {
+                        [s.start]
+                            .into_iter()
+                            .chain(s.position.iter().copied())
+                            .chain(s.velocity.iter().copied())
+                            .chain(s.acceleration.iter().copied())
+                            .all(|x| {
+                                x == 0.0 || (x.abs() > 2f64.powi(-400) && x.abs() < 2f64.powi(400))
+                            })
+                    })
+                }) && radius > 2f64.powi(-400);
+                if plain && !apart && !chords && ordinary {
+                    let screened = every_window_screened(a.segments(), b.segments(), radius);
+                    assert_eq!(by_windows, screened, "windows: {}", what());
+                    checked += 1;
+                    ordinary_left += usize::from(!screened);
+                }
+            }
+        }
+        // Each outcome is met many times (else the test could not fail).
+        assert!(settled_lanes > 500, "{settled_lanes} settled");
+        assert!(checked > 2_000, "{checked} ordinary pairs compared");
+        assert!(
+            ordinary_left > 500,
+            "{ordinary_left} ordinary pairs left to the search"
+        );
+    }
+
+    #[test]
+    fn window_lanes_settle_what_the_window_screens_settle_in_rows_of_two() {
+        lanes_settle_what_the_window_screens_settle::<2>();
+    }
+
+    #[test]
+    fn window_lanes_settle_what_the_window_screens_settle_in_rows_of_three() {
+        lanes_settle_what_the_window_screens_settle::<3>();
     }
 
     #[test]

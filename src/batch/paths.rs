@@ -11,8 +11,9 @@
 //!
 //! On CPUs with AVX-512, rows of 2 and 3 segments (a friction ball's, a pool ball's) first go
 //! through the path bounds and the chord normals eight pairs at a time
-//! ([`path_lanes`](super::path_lanes)): the same proofs, to the bit, on the pairs they can take
-//! whole, at a fraction of the cost; the pairs they do not settle go on one by one.
+//! ([`path_lanes`](super::path_lanes)), then the window screens on every window of the pairs
+//! left ([`window_lanes`](super::window_lanes)): the same proofs, to the bit, on the pairs they
+//! can take whole, at a fraction of the cost; the pairs they do not settle go on one by one.
 
 #[cfg(target_arch = "x86_64")]
 use super::X86Level;
@@ -236,34 +237,37 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
     // One call of the pair's search in the loop (two would be inlined twice, and the
     // compiler then does worse with both).
     let lanes = LANES && K > 0 && shared[0].is_none() && shared[1].is_none();
-    // Bit `l`: the block's pair `l` is settled by the path bounds, by the chords.
-    let (mut bounds, mut chords): (u8, u8) = (0, 0);
+    // Bit `l`: the block's pair `l` is settled by the path bounds, by the chords, by its
+    // windows.
+    let (mut bounds, mut chords, mut windows): (u8, u8, u8) = (0, 0, 0);
     let chunk_len = chunk.len();
     for (k, slot) in chunk.iter_mut().enumerate() {
         if lanes && k % LANE_WIDTH == 0 && k + LANE_WIDTH <= chunk_len {
             // SAFETY: `LANES` is set only in the AVX-512 copy, run where the CPU has it; the
             // sides were checked to hold a path per pair in rows of `K`, the per-pair values
             // to have one per pair, and the block is in range.
-            (bounds, chords) = unsafe { settled_block::<D, K>(pairs, offset + k) };
+            (bounds, chords, windows) = unsafe { settled_block::<D, K>(pairs, offset + k) };
         }
-        *slot = if (bounds | chords) & 1 != 0 {
+        *slot = if (bounds | chords | windows) & 1 != 0 {
             count(Stage::PathPair);
             count(if bounds & 1 != 0 {
                 Stage::BoundsApart
-            } else {
+            } else if chords & 1 != 0 {
                 Stage::ChordsApart
+            } else {
+                Stage::WindowsApart
             });
             f64::INFINITY
         } else {
             pair_time::<D, K>(pairs, offset + k, shared, &mut buffers)?
         };
-        (bounds, chords) = (bounds >> 1, chords >> 1);
+        (bounds, chords, windows) = (bounds >> 1, chords >> 1, windows >> 1);
     }
     Ok(())
 }
 
-/// The pairs of the block at `first` that the lane-wise screens settle, by the path bounds and
-/// by the chords (bit `l` for pair `first + l`).
+/// The pairs of the block at `first` that the lane-wise screens settle, by the path bounds, by
+/// the chords and by their windows (bit `l` for pair `first + l`).
 ///
 /// # Safety
 /// As [`settled`]: the CPU has AVX-512 F, and the block is in range of checked sides that hold
@@ -273,10 +277,10 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
 unsafe fn settled_block<const D: usize, const K: usize>(
     pairs: &PathPairs<'_, D>,
     first: usize,
-) -> (u8, u8) {
+) -> (u8, u8, u8) {
     // SAFETY: the caller's promise, passed on.
     let settled = unsafe { settled::<D, K>(pairs, first) };
-    (settled.bounds, settled.chords)
+    (settled.bounds, settled.chords, settled.windows)
 }
 
 /// Without the lanes (other CPUs): nothing settled.
@@ -293,8 +297,8 @@ const LANE_WIDTH: usize = 8;
 unsafe fn settled_block<const D: usize, const K: usize>(
     _pairs: &PathPairs<'_, D>,
     _first: usize,
-) -> (u8, u8) {
-    (0, 0)
+) -> (u8, u8, u8) {
+    (0, 0, 0)
 }
 
 /// The broadcast paths of a batch of path pairs (A's, B's), read and checked once, with their

@@ -23,6 +23,8 @@
 //! | path contact | `path_contact.rs` | the window loop: windows between segment starts of either path, each formed from the two active segments in time since their own starts | `path_collision_time`, `path_collision_times` |
 //! | (counts) | `stage_counts.rs` | how many pairs and windows each path stage settles (cargo feature `stage-counts`) | the benchmarks |
 //! | window box | `window_box.rs` | the box the separation sweeps over one window keeps out of the contact distance | path windows; pieces of long windows |
+//! | window chord | `window_chord.rs` | across the chord of the separation's run over one window, its span keeps out of the contact distance on one side | path windows, after the window box |
+//! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` on AVX-512 CPUs, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
 //! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
@@ -64,10 +66,11 @@
 //! A path query first compares the two paths' bounds (`path_bounds`), then, for paths that
 //! end at rest, their spans across each one's chord (`chord_normals`); the pairs left are
 //! searched window by window (`path_contact`): the boxes of the window's two segments, then
-//! its separation box (`window_box`), settle most windows, and the rest go to the same window
-//! search as the friction balls'. Two paths of one segment each (frictionless balls, say) have
-//! one window, for ever: it goes straight to the window's stages (the straight window's closed
-//! form, the separation box, the search), which settle it as soon as the screens would.
+//! its separation box (`window_box`) and its span across its chord (`window_chord`), settle
+//! most windows, and the rest go to the same window search as the friction balls'. Two paths
+//! of one segment each (frictionless balls, say) have one window, for ever: it goes straight
+//! to the window's stages (the straight window's closed form, the separation box and chord,
+//! the search), which settle it as soon as the screens would.
 //!
 //! ## Semantics (SPEC)
 //! - touching or overlapping at `t = 0` is a collision at `0` only if the balls approach
@@ -92,6 +95,7 @@ pub(crate) mod prefilter;
 pub mod stage_counts;
 pub(crate) mod straight;
 pub(crate) mod window_box;
+pub(crate) mod window_chord;
 
 use crate::coefficients::{Gap, gap_value_of};
 use crate::error::{InputError, check_horizon, check_radius};

@@ -23,12 +23,18 @@ pub struct StageCounts {
     pub bounds_apart: u64,
     /// Of the others, the pairs apart across either path's chord (`chord_normals`): no window.
     pub chords_apart: u64,
+    /// Of the others, the pairs whose every window the window screens prove apart at once
+    /// (`batch/window_lanes.rs`, in batches on AVX-512 CPUs; elsewhere, and in single queries,
+    /// such pairs' windows are formed and counted one by one below).
+    pub windows_apart: u64,
     /// Windows formed for the pairs left (`path_contact`).
     pub windows: u64,
     /// Windows whose two segments' boxes (`path_bounds`) are apart: no motion formed.
     pub windows_segments_apart: u64,
     /// Windows that the separation box proves apart (`window_box`).
     pub windows_box_apart: u64,
+    /// Windows that the separation's span across its chord proves apart (`window_chord`).
+    pub windows_chord_apart: u64,
     /// Windows without relative acceleration answered in closed form (`straight`).
     pub windows_straight: u64,
     /// Windows handed to the window search (`search_window`).
@@ -44,16 +50,18 @@ pub(crate) enum Stage {
     PathPair,
     BoundsApart,
     ChordsApart,
+    WindowsApart,
     Window,
     WindowSegmentsApart,
     WindowBoxApart,
+    WindowChordApart,
     WindowStraight,
     WindowSearched,
     Contact,
 }
 
 #[cfg(feature = "stage-counts")]
-static COUNTS: [AtomicU64; 9] = [const { AtomicU64::new(0) }; 9];
+static COUNTS: [AtomicU64; 11] = [const { AtomicU64::new(0) }; 11];
 
 /// Counts one event of `stage` (nothing without the feature).
 #[inline(always)]
@@ -91,16 +99,18 @@ pub(crate) fn count(stage: Stage) {
 /// ```
 pub fn take() -> StageCounts {
     #[cfg(feature = "stage-counts")]
-    let c: [u64; 9] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
+    let c: [u64; 11] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
     #[cfg(not(feature = "stage-counts"))]
-    let c = [0u64; 9];
+    let c = [0u64; 11];
     StageCounts {
         path_pairs: c[Stage::PathPair as usize],
         bounds_apart: c[Stage::BoundsApart as usize],
         chords_apart: c[Stage::ChordsApart as usize],
+        windows_apart: c[Stage::WindowsApart as usize],
         windows: c[Stage::Window as usize],
         windows_segments_apart: c[Stage::WindowSegmentsApart as usize],
         windows_box_apart: c[Stage::WindowBoxApart as usize],
+        windows_chord_apart: c[Stage::WindowChordApart as usize],
         windows_straight: c[Stage::WindowStraight as usize],
         windows_searched: c[Stage::WindowSearched as usize],
         contacts: c[Stage::Contact as usize],
