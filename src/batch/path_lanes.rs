@@ -48,6 +48,9 @@ pub(crate) struct Settled {
     pub(crate) chords: __mmask8,
     /// Neither is, every window is proven apart ([`window_lanes`](super::window_lanes)).
     pub(crate) windows: __mmask8,
+    /// Taken whole by the lanes (valid, every row used, a plain reach): where none of the
+    /// above holds, the pair's own whole-path screens fail too.
+    pub(crate) taken: __mmask8,
 }
 
 /// One side's rows of a block, a lane each: row `k`'s start and its position, velocity and
@@ -153,6 +156,7 @@ pub(crate) unsafe fn settled<const D: usize, const K: usize>(
         bounds: taken & apart,
         chords,
         windows,
+        taken,
     }
 }
 

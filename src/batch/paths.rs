@@ -21,7 +21,7 @@ use super::X86Level;
 use super::path_lanes::{LANES as LANE_WIDTH, settled};
 use super::{PerPair, Threads, check_len, run_chunks};
 use crate::collision::path_bounds::PathBounds;
-use crate::collision::path_contact::first_bounded_contact;
+use crate::collision::path_contact::{Prior, first_bounded_contact};
 use crate::collision::stage_counts::{Stage, count};
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::path::{Names, Segment, locate, segments_from_rows};
@@ -238,15 +238,15 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
     // compiler then does worse with both).
     let lanes = LANES && K > 0 && shared[0].is_none() && shared[1].is_none();
     // Bit `l`: the block's pair `l` is settled by the path bounds, by the chords, by its
-    // windows.
-    let (mut bounds, mut chords, mut windows): (u8, u8, u8) = (0, 0, 0);
+    // windows; taken whole by the lanes.
+    let (mut bounds, mut chords, mut windows, mut taken): (u8, u8, u8, u8) = (0, 0, 0, 0);
     let chunk_len = chunk.len();
     for (k, slot) in chunk.iter_mut().enumerate() {
         if lanes && k % LANE_WIDTH == 0 && k + LANE_WIDTH <= chunk_len {
             // SAFETY: `LANES` is set only in the AVX-512 copy, run where the CPU has it; the
             // sides were checked to hold a path per pair in rows of `K`, the per-pair values
             // to have one per pair, and the block is in range.
-            (bounds, chords, windows) = unsafe { settled_block::<D, K>(pairs, offset + k) };
+            (bounds, chords, windows, taken) = unsafe { settled_block::<D, K>(pairs, offset + k) };
         }
         *slot = if (bounds | chords | windows) & 1 != 0 {
             count(Stage::PathPair);
@@ -259,9 +259,14 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
             });
             f64::INFINITY
         } else {
-            pair_time::<D, K>(pairs, offset + k, shared, &mut buffers)?
+            let prior = if taken & 1 != 0 {
+                Prior::LanesLeft
+            } else {
+                Prior::Nothing
+            };
+            pair_time::<D, K>(pairs, offset + k, shared, &mut buffers, prior)?
         };
-        (bounds, chords, windows) = (bounds >> 1, chords >> 1, windows >> 1);
+        (bounds, chords, windows, taken) = (bounds >> 1, chords >> 1, windows >> 1, taken >> 1);
     }
     Ok(())
 }
@@ -277,10 +282,15 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
 unsafe fn settled_block<const D: usize, const K: usize>(
     pairs: &PathPairs<'_, D>,
     first: usize,
-) -> (u8, u8, u8) {
+) -> (u8, u8, u8, u8) {
     // SAFETY: the caller's promise, passed on.
     let settled = unsafe { settled::<D, K>(pairs, first) };
-    (settled.bounds, settled.chords, settled.windows)
+    (
+        settled.bounds,
+        settled.chords,
+        settled.windows,
+        settled.taken,
+    )
 }
 
 /// Without the lanes (other CPUs): nothing settled.
@@ -297,8 +307,8 @@ const LANE_WIDTH: usize = 8;
 unsafe fn settled_block<const D: usize, const K: usize>(
     _pairs: &PathPairs<'_, D>,
     _first: usize,
-) -> (u8, u8, u8) {
-    (0, 0, 0)
+) -> (u8, u8, u8, u8) {
+    (0, 0, 0, 0)
 }
 
 /// The broadcast paths of a batch of path pairs (A's, B's), read and checked once, with their
@@ -453,13 +463,14 @@ impl<const D: usize> PathBuffer<D> {
 }
 
 /// Pair `i`'s answer: its paths are the shared ones where a side is broadcast, else read
-/// into that side's buffer.
+/// into that side's buffer; `prior`, what the lanes found of it.
 #[inline(always)]
 fn pair_time<const D: usize, const K: usize>(
     pairs: &PathPairs<'_, D>,
     i: usize,
     shared: &SharedPaths<D>,
     [buffer_a, buffer_b]: &mut [PathBuffer<D>; 2],
+    prior: Prior,
 ) -> Result<f64, InputError> {
     let a = match &shared[0] {
         Some((path, bounds)) => (path.as_slice(), bounds),
@@ -471,7 +482,7 @@ fn pair_time<const D: usize, const K: usize>(
     };
     let radius = check_radius("radius", pairs.radius.get(i)).map_err(|e| e.at(i))?;
     let t_max = check_horizon("t_max", pairs.t_max.get(i)).map_err(|e| e.at(i))?;
-    let contact = first_bounded_contact(a, b, [radius, 0.0], t_max);
+    let contact = first_bounded_contact(a, b, [radius, 0.0], t_max, prior);
     Ok(contact.unwrap_or(f64::INFINITY))
 }
 

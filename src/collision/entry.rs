@@ -53,6 +53,7 @@ pub(crate) fn critical_points<const D: usize>(
 
 /// A critical point of `g` (a root of `½g′ = d·d′`) in `(left, right)`, where the slope changes
 /// sign, by bracketed Newton from `start`; below `noise` the slope's sign is rounding.
+#[inline(always)]
 fn slope_root<const D: usize>(
     gap: &Gap<D>,
     (left, right): (f64, f64),
@@ -133,6 +134,7 @@ pub(crate) fn first_entry<const D: usize>(
 ///
 /// On random pairs this settles nearly all contacts and near misses at about half the cost of
 /// [`first_entry`].
+#[inline(always)]
 pub(crate) fn piecewise_entry<const D: usize>(gap: &Gap<D>, end: f64) -> Option<WindowSearch> {
     let noise = gap.value_noise();
     for piece in OpenPieces::new(gap, end) {
@@ -187,6 +189,7 @@ pub(crate) fn piecewise_entry<const D: usize>(gap: &Gap<D>, end: f64) -> Option<
 /// there too), the root may be near-double (a grazing contact, or a contact just before a
 /// stop): the model is then already close, where Newton from afar would crawl in, and where
 /// `g` is within rounding of zero over a band far wider than the root's accuracy.
+#[inline(always)]
 fn entry_root<const D: usize>(
     gap: &Gap<D>,
     (left, right): (f64, f64),

@@ -383,7 +383,40 @@ pub(crate) fn normal_time_unit(length: f64) -> f64 {
 
 /// The first entry on a window of `length` (possibly infinite), as time since its start;
 /// a long window ([`long_window`]) piece by piece.
+///
+/// With fused multiply-adds in hardware where the CPU has them: the search's evaluations of
+/// the gap are made of them, and a copy compiled without them calls a library function for
+/// each (the same exact result, so the same bits, at several times the cost).
 fn search_window<const D: usize>(
+    gap: &Gap<D>,
+    length: f64,
+    previous_positive: bool,
+) -> WindowSearch {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU supports FMA, just detected.
+        return unsafe { search_window_fma(gap, length, previous_positive) };
+    }
+    search_window_in(gap, length, previous_positive)
+}
+
+/// [`search_window`] compiled with FMA enabled (its hot stages are inlined into it).
+///
+/// # Safety
+/// The CPU must support FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn search_window_fma<const D: usize>(
+    gap: &Gap<D>,
+    length: f64,
+    previous_positive: bool,
+) -> WindowSearch {
+    search_window_in(gap, length, previous_positive)
+}
+
+/// The body of [`search_window`].
+#[inline(always)]
+fn search_window_in<const D: usize>(
     gap: &Gap<D>,
     length: f64,
     previous_positive: bool,
@@ -526,6 +559,7 @@ fn unbounded_length<const D: usize>(gap: &Gap<D>) -> f64 {
 }
 
 /// The first entry on a window of `length` that is not long, as time since its start.
+#[inline(always)]
 fn search_plain_window<const D: usize>(
     gap: &Gap<D>,
     length: f64,

@@ -79,6 +79,7 @@ fn single_query<const D: usize, const SCREENS: bool>(
         b,
         [radius, 0.0],
         t_max,
+        Prior::Nothing,
     ))
 }
 
@@ -113,7 +114,7 @@ pub(crate) fn first_bounded_contact_one<const D: usize, const S: usize>(
         // SAFETY: the CPU supports FMA, just detected.
         return unsafe { first_bounded_contact_fma(a, b, radii, t_max) };
     }
-    first_bounded_contact(a, b, radii, t_max)
+    first_bounded_contact(a, b, radii, t_max, Prior::Nothing)
 }
 
 /// [`first_bounded_contact`] compiled with FMA enabled.
@@ -128,7 +129,7 @@ unsafe fn first_bounded_contact_fma<const D: usize, const S: usize>(
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
-    first_bounded_contact(a, b, radii, t_max)
+    first_bounded_contact(a, b, radii, t_max, Prior::Nothing)
 }
 
 /// [`path_collision_time`] without the stages that only prove balls apart (the path bounds
@@ -153,8 +154,22 @@ pub(crate) fn first_bounded_contact<const D: usize, const S: usize>(
     b: (&[Segment<D>], &PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
+    prior: Prior,
 ) -> Option<f64> {
-    first_screened_contact::<D, S, true>(a, b, radii, t_max)
+    first_screened_contact::<D, S, true>(a, b, radii, t_max, prior)
+}
+
+/// What a caller already knows of a pair when its search starts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Prior {
+    /// Nothing: every screen runs.
+    Nothing,
+    /// The batch's lanes took the pair whole and settled it by none of their screens
+    /// (`batch/path_lanes.rs`, `batch/window_lanes.rs`): the whole-path screens, the same
+    /// proofs to the bit, would fail again, and the window chord is left out (on the windows
+    /// of such pairs it hardly ever proves one apart, and costs more than it saves there).
+    /// The screens are proofs, so the answer is the same either way.
+    LanesLeft,
 }
 
 /// The search, with the screens that prove balls apart (`SCREENS`) or without them.
@@ -164,6 +179,7 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
     (b, bounds_b): (&[Segment<D>], &PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
+    prior: Prior,
 ) -> Option<f64> {
     count(Stage::PathPair);
     if let ([sa], [sb]) = (a, b) {
@@ -172,11 +188,12 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
     // Paths whose boxes keep apart need no window: a proof (its margin far above the
     // search's rounding), so its answer is the search's, in any unit.
     let reach = bounds_a.reach(bounds_b, radii[0] + radii[1]);
-    if SCREENS && bounds_a.apart(bounds_b, reach) {
+    let screens = SCREENS && prior == Prior::Nothing;
+    if screens && bounds_a.apart(bounds_b, reach) {
         count(Stage::BoundsApart);
         return None;
     }
-    if SCREENS && apart_across_chords(a, b, reach) {
+    if screens && apart_across_chords(a, b, reach) {
         count(Stage::ChordsApart);
         return None;
     }
@@ -204,7 +221,7 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
                 start,
                 end,
             };
-            match window.search::<SCREENS>(unit, radius, previous_positive) {
+            match window.search::<SCREENS>(unit, radius, previous_positive, screens) {
                 // (At the window's start, which is before `t_max`, or on it.)
                 WindowStep::Contact(t) => return (t < t_max).then_some(t),
                 WindowStep::NoEntry { ends_positive } => previous_positive = Some(ends_positive),
@@ -246,7 +263,7 @@ fn one_window_each<const D: usize, const S: usize, const SCREENS: bool>(
         start,
         end: f64::INFINITY,
     };
-    match window.search::<SCREENS>(unit, radius, None) {
+    match window.search::<SCREENS>(unit, radius, None, true) {
         WindowStep::Contact(t) => (t < t_max).then_some(t),
         WindowStep::NoEntry { .. } => None,
     }
@@ -290,13 +307,14 @@ enum WindowStep {
 impl<const D: usize> Window<'_, D> {
     /// The window's search, in the pair's `unit` of length, at contact distance `radius` (in
     /// that unit); `previous_positive`: whether the gap was positive just before the window
-    /// (`None` at the pair's first time).
+    /// (`None` at the pair's first time); the window chord only with `chord`.
     #[inline(always)]
     fn search<const SCREENS: bool>(
         &self,
         unit: LengthUnit,
         radius: f64,
         previous_positive: Option<bool>,
+        chord: bool,
     ) -> WindowStep {
         let (start, end) = (self.start, self.end);
         let gap = window_gap(&scaled(self.a, unit), &scaled(self.b, unit), start, radius);
@@ -326,7 +344,8 @@ impl<const D: usize> Window<'_, D> {
             WindowSearch::NoEntry {
                 ends_positive: true,
             }
-        } else if SCREENS && apart_across_window_chord(&gap, bounded_length(&gap, length)) {
+        } else if SCREENS && chord && apart_across_window_chord(&gap, bounded_length(&gap, length))
+        {
             // Near misses at an angle to the axes, which the box leaves (on a pool table,
             // most of the windows it leaves without a contact).
             count(Stage::WindowChordApart);

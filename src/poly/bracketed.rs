@@ -24,6 +24,7 @@
 /// let r = bracketed_newton(cube, 0.0, 3.0, -1.0, 8.0, 3.0, 0.0);
 /// assert!((r - 1.0).abs() < 1e-5);
 /// ```
+#[inline(always)]
 pub fn bracketed_newton(
     mut f: impl FnMut(f64) -> (f64, f64),
     lo: f64,
@@ -91,6 +92,7 @@ pub fn bracketed_newton(
 /// rounding noise of zero, its computed values stop improving at the point that float
 /// arithmetic makes the root, usually within two steps. A step that raises `|f|` (rounding,
 /// or a near-multiple root's tiny `f′` sending it far) ends the search at the best point.
+#[inline(always)]
 fn polish(
     f: &mut impl FnMut(f64) -> (f64, f64),
     mut x: f64,

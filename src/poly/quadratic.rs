@@ -51,6 +51,7 @@ pub fn solve_linear(b: f64, c: f64) -> RealRoots {
 /// assert!((r[0] - 2.0 / 3.0).abs() <= f64::EPSILON);
 /// assert_eq!(r[1], f64::INFINITY);
 /// ```
+#[inline(always)]
 pub fn solve_quadratic(a: f64, b: f64, c: f64) -> RealRoots {
     if !(a.is_finite() && b.is_finite() && c.is_finite()) {
         return RealRoots::empty();
