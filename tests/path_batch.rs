@@ -7,6 +7,7 @@ use std::num::NonZeroUsize;
 use ballcollide::batch::{
     PathPairs, PathRows, PerPair, Threads, path_collision_times, path_positions_at,
 };
+use ballcollide::collision::path_collision_time_unscreened;
 use ballcollide::path::Path;
 use ballcollide::{CollisionOptions, path_collision_time};
 
@@ -44,6 +45,35 @@ impl<const D: usize> Rows<D> {
                 rows.vel.push(v(rng, 4.0));
                 rows.acc.push(v(rng, 1.0));
                 t += rng.uniform(0.0, 1.0) * 2.0;
+            }
+        }
+        rows
+    }
+
+    /// `n` paths of exactly `k` segments (every row used, starts increasing), most ending at
+    /// rest: the shapes the AVX-512 lanes take whole (a friction ball's, a pool ball's), in a
+    /// box of `size` so that many pairs come close.
+    fn rolling(rng: &mut Rng, n: usize, k: usize, size: f64) -> Self {
+        let mut rows = Self {
+            start: vec![],
+            pos: vec![],
+            vel: vec![],
+            acc: vec![],
+            k,
+        };
+        for _ in 0..n {
+            let mut t = rng.uniform(0.0, 0.5);
+            let rests = rng.uniform(0.0, 1.0) < 0.75;
+            for s in 0..k {
+                let mut v = |scale: f64| -> [f64; D] {
+                    std::array::from_fn(|_| (rng.uniform(0.0, 1.0) - 0.5) * scale)
+                };
+                let last = s + 1 == k && rests;
+                rows.start.push(t);
+                rows.pos.push(v(size));
+                rows.vel.push(if last { [0.0; D] } else { v(4.0) });
+                rows.acc.push(if last { [0.0; D] } else { v(2.0) });
+                t += rng.uniform(0.05, 1.0);
             }
         }
         rows
@@ -129,6 +159,52 @@ fn the_batch_is_the_single_query_bit_for_bit_in_2d() {
 #[test]
 fn the_batch_is_the_single_query_bit_for_bit_in_3d() {
     check_batch::<3>(18);
+}
+
+/// Rows of `k` segments on both sides, every row used: what the AVX-512 lanes screen (whole
+/// paths, then every window at once) before the pairs left are searched without the screens
+/// the lanes ran. The answers must be the single query's (with every screen), bit for bit.
+fn check_lane_shaped<const D: usize>(seed: u64, k: usize) {
+    let mut rng = Rng(seed);
+    let n = 4000;
+    let (a, b) = (
+        Rows::<D>::rolling(&mut rng, n, k, 1.5),
+        Rows::<D>::rolling(&mut rng, n, k, 1.5),
+    );
+    let radii: Vec<f64> = (0..n).map(|_| 0.05 + 0.3 * rng.uniform(0.0, 1.0)).collect();
+    let pairs = PathPairs {
+        a: a.side(),
+        b: b.side(),
+        radius: PerPair::Each(&radii),
+        t_max: PerPair::All(f64::INFINITY),
+    };
+    let mut out = vec![0.0; n];
+    path_collision_times(&pairs, &mut out, Threads::AtMost(NonZeroUsize::MIN)).unwrap();
+    let options = CollisionOptions::default();
+    let mut hits = 0;
+    for i in 0..n {
+        let (pa, pb) = (a.path(i), b.path(i));
+        let single = path_collision_time(&pa, &pb, radii[i], &options).unwrap();
+        let bare = path_collision_time_unscreened(&pa, &pb, radii[i], &options).unwrap();
+        let single = single.unwrap_or(f64::INFINITY);
+        assert_eq!(out[i].to_bits(), single.to_bits(), "pair {i}");
+        assert_eq!(
+            bare.unwrap_or(f64::INFINITY).to_bits(),
+            single.to_bits(),
+            "pair {i}"
+        );
+        hits += single.is_finite() as usize;
+    }
+    // Both answers often (else the test could not fail either way).
+    assert!(hits > n / 50 && hits < n * 19 / 20, "{hits} hits of {n}");
+}
+
+#[test]
+fn rows_the_lanes_take_get_the_single_query_bit_for_bit() {
+    for (k, seed) in [(2, 41), (3, 42)] {
+        check_lane_shaped::<2>(seed, k);
+        check_lane_shaped::<3>(seed + 10, k);
+    }
 }
 
 #[test]

@@ -74,8 +74,13 @@ pub(crate) fn apart_across_window_chord<const D: usize>(gap: &Gap<D>, length: f6
         reach += D as f64 * UNDERFLOW * spread;
     }
     // `nearest > reach·|n|`, in squares (no square root; `|n| ≥ 1`, so `reach²·nn` is normal
-    // where `reach²` is, and the squares' roundings are far below the margin). NaN anywhere
-    // fails a comparison: not proven.
+    // where `reach²` is, and the squares' roundings are far below the margin). `reach²` is
+    // normal wherever a normal was formed at all: `normal` is a product of three of the
+    // window's magnitudes, so its largest component is nonzero only if `size ≥ 2⁻³⁵⁸`, and
+    // `reach ≥ MARGIN·size` then squares to above `2⁻⁸⁰⁰` (so no slack for underflowing
+    // squares, as the box keeps, is needed). NaN anywhere fails a comparison: not proven.
+    // (`n·fl(1/largest)` may round just below 1 on its largest axis, and `nn ≥ 1` then gives
+    // up a proof: never a false one.)
     nn >= 1.0 && nearest > 0.0 && nearest * nearest > reach * reach * nn
 }
 
