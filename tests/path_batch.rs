@@ -25,14 +25,18 @@ struct Rows<const D: usize> {
 }
 
 impl<const D: usize> Rows<D> {
-    fn random(rng: &mut Rng, n: usize, k: usize) -> Self {
-        let mut rows = Self {
+    fn empty(k: usize) -> Self {
+        Self {
             start: vec![],
             pos: vec![],
             vel: vec![],
             acc: vec![],
             k,
-        };
+        }
+    }
+
+    fn random(rng: &mut Rng, n: usize, k: usize) -> Self {
+        let mut rows = Self::empty(k);
         for _ in 0..n {
             let used = 1 + (rng.uniform(0.0, 1.0) * k as f64) as usize % k;
             let mut t = rng.uniform(0.0, 1.0);
@@ -54,13 +58,7 @@ impl<const D: usize> Rows<D> {
     /// rest: the shapes the AVX-512 lanes take whole (a friction ball's, a pool ball's), in a
     /// box of `size` so that many pairs come close.
     fn rolling(rng: &mut Rng, n: usize, k: usize, size: f64) -> Self {
-        let mut rows = Self {
-            start: vec![],
-            pos: vec![],
-            vel: vec![],
-            acc: vec![],
-            k,
-        };
+        let mut rows = Self::empty(k);
         for _ in 0..n {
             let mut t = rng.uniform(0.0, 0.5);
             let rests = rng.uniform(0.0, 1.0) < 0.75;
