@@ -248,8 +248,8 @@ unsafe fn transposed_rows(values: *const f64, width: usize) -> [__m512d; MOST] {
 
 /// How many pairs ahead of the block its rows are asked for in the cache: 128 pairs, 1 to
 /// 4 KiB further on in each of a side's four arrays. The lanes read eight streams at once,
-/// and with the CPU's own prefetch alone their loads waited on memory for about a quarter of
-/// the time of the seed model's pairs; four blocks ahead was too close to help.
+/// faster than the CPU's own prefetch keeps up with, and a block's work is short: the rows
+/// must be asked for many blocks before they are read to arrive in time.
 const AHEAD: usize = 16 * LANES;
 
 /// Asks for the `width·LANES` values from `at + width·AHEAD` in the cache (nothing past the

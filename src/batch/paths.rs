@@ -235,11 +235,10 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
 ) -> Result<(), InputError> {
     let mut buffers = [PathBuffer::new(), PathBuffer::new()];
     let lanes = LANES && K > 0 && shared[0].is_none() && shared[1].is_none();
-    // Block by block: the pairs the lanes settle all at once, then the others in order (so
-    // that an error is the lowest pair's: a settled pair is valid). One call of the pair's
-    // search in the loop (two would be inlined twice, and the compiler then does worse with
-    // both); a loop over every pair's bits cost the seed model's pairs, 95 % of them settled
-    // here, several percent.
+    // Block by block: the pairs the lanes settle all at once (most pairs: they then cost no
+    // work of their own here), then the others in order (so that an error is the lowest
+    // pair's: a settled pair is valid). One call of the pair's search in the loop (two would
+    // be inlined twice, and the compiler then does worse with both).
     for (block, slots) in chunk.chunks_mut(LANE_WIDTH).enumerate() {
         let first = offset + block * LANE_WIDTH;
         let (settled, taken) = if lanes && slots.len() == LANE_WIDTH {
