@@ -14,7 +14,7 @@
 //! | prefilter | `prefilter.rs` | the balls' straight runs to rest stay apart: never a contact | `collision_time`, scene, batch lanes |
 //! | crossing | `crossing.rs` | moving balls whose runs cross are never there at the same time | `collision_time`, scene, batch lanes |
 //! | straight | `straight.rs` (`first_contact`, `contact`) | one ball at rest: the contact in closed form | `collision_time`, scene, batch lanes |
-//! | moving entry | `moving_entry.rs` | both moving, a plain crossing in the first window: the contact by fixed Newton steps | `collision_time`, scene, batch lanes |
+//! | moving entry | `moving_entry.rs` | both moving, a plain crossing in the first window: the contact by the eighth entry below, cut by the horizon | `collision_time`, scene, batch lanes |
 //! | after stop | `after_stop.rs` | after the first stop, the mover against a ball at rest: closed form | `collision_time`, scene, batch lanes |
 //! | **paths** | | | |
 //! | path bounds | `path_bounds.rs`; lane-wise, `batch/path_lanes.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch; rows of 2 and 3 segments eight pairs at a time on AVX-512 CPUs, the same proof to the bit); not for two paths of one segment each, whose one window goes straight to the window's stages |
@@ -27,6 +27,7 @@
 //! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` on AVX-512 CPUs, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
 //! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |
+//! | eighth entry | `eighth_entry.rs` | a window whose first open eighth is plain (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free | `moving_entry`; path windows, before the window search (`window_eighth`) |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
 //! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `entry` (for `search_window`), `crossing`, `moving_entry` |
@@ -84,6 +85,7 @@
 pub(crate) mod after_stop;
 pub(crate) mod chord_normals;
 pub(crate) mod crossing;
+pub(crate) mod eighth_entry;
 mod entry;
 mod exclusion;
 pub(crate) mod length_unit;

@@ -2,14 +2,10 @@
 //! found lane-wise, without a branch.
 //!
 //! On a table most contacts come before either ball stops (on the first window), and most
-//! are transversal: the first eighth of that window that the Bernstein coefficients do not
-//! prove positive ([`first_open_eighth`]) holds exactly one root, and every eighth before
-//! it is proven clear, so that root is the first contact. It is found by a fixed number of
-//! Newton steps kept inside the eighth (a step that would leave the bracket is replaced by
-//! bisection), all on the accurate form of the gap
-//! ([`Gap::value`](crate::coefficients::Gap::value)), and kept only if the gap there is within
-//! its rounding bound of zero, which is where the float arithmetic puts the root: the answer
-//! the general search would give, to its accuracy.
+//! are transversal: the first window's entry on its first open eighth
+//! ([`eighth_entry`](super::eighth_entry)) settles them, from the window the search itself
+//! would build ([`FirstWindow`]), and the time is then cut by the horizon as the search cuts
+//! it.
 //!
 //! Balls that already touch or overlap and move into each other meet at 0 (SPEC): decided
 //! here too, on the search's own values at time 0.
@@ -20,6 +16,7 @@
 
 use super::approaching;
 use super::crossing::FirstWindow;
+use super::eighth_entry::eighth_entry;
 use super::exclusion::{OpenEighth, first_open_eighth, proves_positive_at_once};
 use super::prefilter::PairInput;
 
@@ -105,79 +102,17 @@ fn settle(
     eighth: &OpenEighth,
     one_pair: bool,
 ) -> WhileMoving {
-    let (gap, end) = (&window.gap, window.end);
-    let (root, dip) = (eighth.one_root, eighth.one_dip);
-    // The eighth `[lo, hi]` (time in the window's units); the coefficients promise its shape,
-    // the accurate values at its ends must confirm it.
-    let (lo, hi) = (
-        end * (eighth.index * 0.125),
-        end * ((eighth.index + 1.0) * 0.125),
-    );
-    let (g_lo, g_hi) = (gap.value(lo), gap.value(hi));
-    let (slope_lo, slope_hi) = (gap.half_slope(lo), gap.half_slope(hi));
-    let dip = dip & (slope_lo < 0.0) & (slope_hi > 0.0);
-    // One pair skips the steps whose results would be masked out below (lanes take them all:
-    // the results are the same).
-    // The minimum is used for a dip, unless a single root with g < 0 at the eighth's end
-    // already brackets the entry (and rules out a miss).
-    let lowest_used = dip && !(root && g_hi < 0.0);
-    let (lowest, lowest_found) = if one_pair && !lowest_used {
-        (hi, false)
-    } else {
-        fixed_newton(
-            |u| (gap.half_slope(u), gap.half_curvature(u)),
-            (lo, hi),
-            slope_lo,
-            secant((lo, hi), (slope_lo, slope_hi)),
-            gap.half_slope_noise(),
-            one_pair,
-        )
-    };
-    let g_lowest = gap.value(lowest);
-    let plain = window.qualifies & (gap.value(0.0) > 0.0) & (g_lo > 0.0);
-    // The entry lies between the eighth's start and its end (a single root) or its minimum.
-    let (right, g_right) = if root { (hi, g_hi) } else { (lowest, g_lowest) };
-    let crossing = plain & (root | dip) & (g_right < 0.0);
-    // From a minimum, where the root may be near-double, the quadratic model there is
-    // already close (where a secant would crawl in): g(m) + c·(u − m)² = 0.
-    let model = right - (-g_right / gap.half_curvature(right)).sqrt();
-    // From the eighth's start, towards a single root, the root of g's second-order Taylor
-    // model there (g is mostly convex near a contact): it starts Newton close enough for six
-    // steps where the chord often does not (on random table contacts, the chord left a third
-    // unsettled after six steps, this one in sixteen).
-    let curvature_lo = gap.half_curvature(lo);
-    let taylor =
-        lo + g_lo / ((slope_lo * slope_lo - curvature_lo * g_lo).max(0.0).sqrt() - slope_lo);
-    let start = if (model > lo) & (model < right) & !root {
-        model
-    } else if (taylor > lo) & (taylor < right) & root {
-        taylor
-    } else {
-        secant((lo, right), (g_lo, g_right))
-    };
-    let (entry, entry_found) = if one_pair && !crossing {
-        (lo, false)
-    } else {
-        fixed_newton(
-            |u| (gap.value(u), 2.0 * gap.half_slope(u)),
-            (lo, right),
-            g_lo,
-            start,
-            gap.value_noise(),
-            one_pair,
-        )
-    };
-    let t = entry * window.unit;
-    let entry = match (crossing & entry_found, t < pair.t_max) {
+    let found = eighth_entry(&window.gap, window.end, eighth, window.qualifies, one_pair);
+    let t = found.entry * window.unit;
+    let entry = match (found.found, t < pair.t_max) {
         (true, true) => t,
         (true, false) => f64::INFINITY,
         (false, _) => f64::NAN,
     };
-    let missed = plain & dip & lowest_found & (g_lowest >= 0.0) & (g_hi > 0.0);
     let start = at_start(window, pair.t_max);
     WhileMoving {
         entry: if start.is_nan() { entry } else { start },
-        no_entry: missed & eighth.rest_positive,
+        no_entry: found.no_entry,
     }
 }
 
@@ -190,85 +125,6 @@ fn at_start(window: &FirstWindow, t_max: f64) -> f64 {
         window.qualifies & (window.initial.value(0.0) <= 0.0) & approaching(&window.initial);
     let now = if t_max > 0.0 { 0.0 } else { f64::INFINITY };
     if touching { now } else { f64::NAN }
-}
-
-/// The root of the chord through `(lo, f_lo)` and `(hi, f_hi)`.
-#[inline(always)]
-fn secant((lo, hi): (f64, f64), (f_lo, f_hi): (f64, f64)) -> f64 {
-    lo + (hi - lo) * (f_lo / (f_lo - f_hi))
-}
-
-/// Up to six Newton steps on `f` (which returns its value and derivative) from `start`, inside
-/// `(lo, hi)` where `f` changes sign (`f_lo` at `lo`), until converged; a step that would
-/// leave the shrinking bracket is replaced by bisection. Without a branch unless `one_pair`
-/// (which stops at convergence, where lanes take the remaining steps unchanged: the same
-/// result).
-///
-/// Returns the iterate where `|f|` was smallest, and whether it is the root to float
-/// accuracy: Newton's correction there is within two ulps, or the steps stopped lowering
-/// `|f|` (the last did not improve on it) once within `noise`, the bound on `f`'s rounding,
-/// as the scalar search's polishing does.
-#[inline(always)]
-fn fixed_newton(
-    f: impl Fn(f64) -> (f64, f64),
-    (lo, hi): (f64, f64),
-    f_lo: f64,
-    start: f64,
-    noise: f64,
-    one_pair: bool,
-) -> (f64, bool) {
-    let lo_positive = f_lo > 0.0;
-    // (bracket, iterate, best iterate, |f| and Newton correction there, whether the last
-    // step improved on it)
-    type State = ((f64, f64), f64, f64, f64, f64, bool);
-    // Converged: the correction at the best iterate is within `ulps` ulps.
-    let within = |&(_, _, best, best_value, best_step, _): &State, ulps: f64| {
-        (best_value == 0.0) | (best_step <= ulps * f64::EPSILON * best)
-    };
-    // Stalled: within rounding noise of zero, a step failed to lower |f| (as the search's
-    // polishing stops); from there on, steps only jitter in the noise.
-    let stalled = |&(_, _, _, best_value, _, improved): &State| !improved & (best_value <= noise);
-    // Steps stop where the next could not move the iterate, or where they stall.
-    let converged = |state: &State| within(state, 0.5) | stalled(state);
-    let step = |state: State| -> State {
-        let ((lo, hi), x, best, best_value, best_step, _) = state;
-        let (fx, dfx) = f(x);
-        // Which end `x` replaces: the one where `f` has its sign.
-        let like_lo = (fx > 0.0) == lo_positive;
-        let lo = if like_lo & (fx != 0.0) { x } else { lo };
-        let hi = if !like_lo & (fx != 0.0) { x } else { hi };
-        let correction = fx / dfx;
-        let improved = fx.abs() < best_value;
-        let newton = x - correction;
-        let inside = (newton > lo) & (newton < hi);
-        let next = (
-            (lo, hi),
-            if inside { newton } else { 0.5 * (lo + hi) },
-            if improved { x } else { best },
-            if improved { fx.abs() } else { best_value },
-            if improved {
-                correction.abs()
-            } else {
-                best_step
-            },
-            improved,
-        );
-        // Once converged, the state stays: one pair stops there, lanes step on unchanged.
-        if converged(&state) { state } else { next }
-    };
-    let mut state = ((lo, hi), start, start, f64::INFINITY, f64::INFINITY, true);
-    if one_pair {
-        for _ in 0..6 {
-            if converged(&state) {
-                break;
-            }
-            state = step(state);
-        }
-    } else {
-        // Written out rather than looped, so that a batch's lane loop around it vectorises.
-        state = step(step(step(step(step(step(state))))));
-    }
-    (state.2, within(&state, 2.0) | stalled(&state))
 }
 
 #[cfg(test)]

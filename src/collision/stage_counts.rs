@@ -39,6 +39,9 @@ pub struct StageCounts {
     pub windows_straight: u64,
     /// Windows handed to the window search (`search_window`).
     pub windows_searched: u64,
+    /// Of those, the windows settled on their first open eighth (`eighth_entry`), an entry
+    /// or none; the others go through the search's own stages.
+    pub windows_eighth: u64,
     /// Contacts found (at the first time or in a window; one at or past the horizon, reported
     /// as none, included).
     pub contacts: u64,
@@ -57,11 +60,12 @@ pub(crate) enum Stage {
     WindowChordApart,
     WindowStraight,
     WindowSearched,
+    WindowEighth,
     Contact,
 }
 
 #[cfg(feature = "stage-counts")]
-static COUNTS: [AtomicU64; 11] = [const { AtomicU64::new(0) }; 11];
+static COUNTS: [AtomicU64; 12] = [const { AtomicU64::new(0) }; 12];
 
 /// Counts one event of `stage` (nothing without the feature).
 #[inline(always)]
@@ -99,9 +103,9 @@ pub(crate) fn count(stage: Stage) {
 /// ```
 pub fn take() -> StageCounts {
     #[cfg(feature = "stage-counts")]
-    let c: [u64; 11] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
+    let c: [u64; 12] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
     #[cfg(not(feature = "stage-counts"))]
-    let c = [0u64; 11];
+    let c = [0u64; 12];
     StageCounts {
         path_pairs: c[Stage::PathPair as usize],
         bounds_apart: c[Stage::BoundsApart as usize],
@@ -113,6 +117,7 @@ pub fn take() -> StageCounts {
         windows_chord_apart: c[Stage::WindowChordApart as usize],
         windows_straight: c[Stage::WindowStraight as usize],
         windows_searched: c[Stage::WindowSearched as usize],
+        windows_eighth: c[Stage::WindowEighth as usize],
         contacts: c[Stage::Contact as usize],
     }
 }

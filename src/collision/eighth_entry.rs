@@ -1,0 +1,234 @@
+//! The first entry on a window whose first open eighth is plain: found by a fixed number of
+//! Newton steps, without a branch, so that a batch runs it eight windows at a time.
+//!
+//! Most contacts are transversal: the first eighth of the window that the Bernstein
+//! coefficients do not prove positive ([`first_open_eighth`]) holds exactly one root, and
+//! every eighth before it is proven clear, so that root is the first entry. It is found by
+//! Newton steps kept inside the eighth (a step that would leave the bracket is replaced by
+//! bisection), all on the accurate form of the gap ([`Gap::value`]), and kept only if the gap
+//! there is within its rounding bound of zero, which is where the float arithmetic puts the
+//! root: the answer the general search would give, to its accuracy. An eighth that holds a
+//! single minimum (a graze, an entry and an exit close together, a near miss) is settled too:
+//! its minimum is found first, by Newton on the slope; if the gap is negative there, the entry
+//! lies between the eighth's start and it; if not, and every later eighth is proven positive,
+//! the window holds no entry.
+//!
+//! Two stages stand on it: a friction pair's first window ([`moving_entry`](super::moving_entry),
+//! lane-wise in the friction batch) and every window of balls on paths that would be searched
+//! ([`window_eighth`], called by [`path_contact`](super::path_contact)). Whatever it does not
+//! settle goes to the window search.
+
+use super::exclusion::{OpenEighth, first_open_eighth};
+use super::long_window::long_window;
+use super::{in_own_unit, normal_time_unit};
+use crate::coefficients::Gap;
+
+/// What [`eighth_entry`] settles about a window.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct EighthEntry {
+    /// The entry, as time in the window's units, where `found`.
+    pub entry: f64,
+    /// The first entry is `entry`.
+    pub found: bool,
+    /// The window holds no entry, and the gap ends it positive.
+    pub no_entry: bool,
+}
+
+/// The first entry on the window `[0, end]` of `gap` (time scaled so that `end ≤ 1`), where
+/// its first open `eighth` is plain and the gap is positive at its start; `qualifies`: the
+/// caller's own conditions (magnitudes in the range where its arithmetic is exact enough). With
+/// `one_pair`, the Newton steps whose results would be masked out are skipped and the steps
+/// stop at convergence (lanes take them all: the results are the same).
+#[inline(always)]
+pub(crate) fn eighth_entry<const D: usize>(
+    gap: &Gap<D>,
+    end: f64,
+    eighth: &OpenEighth,
+    qualifies: bool,
+    one_pair: bool,
+) -> EighthEntry {
+    let (root, dip) = (eighth.one_root, eighth.one_dip);
+    // The eighth `[lo, hi]` (time in the window's units); the coefficients promise its shape,
+    // the accurate values at its ends must confirm it.
+    let (lo, hi) = (
+        end * (eighth.index * 0.125),
+        end * ((eighth.index + 1.0) * 0.125),
+    );
+    let (g_lo, g_hi) = (gap.value(lo), gap.value(hi));
+    let (slope_lo, slope_hi) = (gap.half_slope(lo), gap.half_slope(hi));
+    let dip = dip & (slope_lo < 0.0) & (slope_hi > 0.0);
+    // One pair skips the steps whose results would be masked out below (lanes take them all:
+    // the results are the same).
+    // The minimum is used for a dip, unless a single root with g < 0 at the eighth's end
+    // already brackets the entry (and rules out a miss).
+    let lowest_used = dip && !(root && g_hi < 0.0);
+    let (lowest, lowest_found) = if one_pair && !lowest_used {
+        (hi, false)
+    } else {
+        fixed_newton(
+            |u| (gap.half_slope(u), gap.half_curvature(u)),
+            (lo, hi),
+            slope_lo,
+            secant((lo, hi), (slope_lo, slope_hi)),
+            gap.half_slope_noise(),
+            one_pair,
+        )
+    };
+    let g_lowest = gap.value(lowest);
+    let plain = qualifies & (gap.value(0.0) > 0.0) & (g_lo > 0.0);
+    // The entry lies between the eighth's start and its end (a single root) or its minimum.
+    let (right, g_right) = if root { (hi, g_hi) } else { (lowest, g_lowest) };
+    let crossing = plain & (root | dip) & (g_right < 0.0);
+    // From a minimum, where the root may be near-double, the quadratic model there is
+    // already close (where a secant would crawl in): g(m) + c·(u − m)² = 0.
+    let model = right - (-g_right / gap.half_curvature(right)).sqrt();
+    // From the eighth's start, towards a single root, the root of g's second-order Taylor
+    // model there (g is mostly convex near a contact): it starts Newton close enough for six
+    // steps where the chord often does not (on random table contacts, the chord left a third
+    // unsettled after six steps, this one in sixteen).
+    let curvature_lo = gap.half_curvature(lo);
+    let taylor =
+        lo + g_lo / ((slope_lo * slope_lo - curvature_lo * g_lo).max(0.0).sqrt() - slope_lo);
+    let start = if (model > lo) & (model < right) & !root {
+        model
+    } else if (taylor > lo) & (taylor < right) & root {
+        taylor
+    } else {
+        secant((lo, right), (g_lo, g_right))
+    };
+    let (entry, entry_found) = if one_pair && !crossing {
+        (lo, false)
+    } else {
+        fixed_newton(
+            |u| (gap.value(u), 2.0 * gap.half_slope(u)),
+            (lo, right),
+            g_lo,
+            start,
+            gap.value_noise(),
+            one_pair,
+        )
+    };
+    let missed = plain & dip & lowest_found & (g_lowest >= 0.0) & (g_hi > 0.0);
+    EighthEntry {
+        entry,
+        found: crossing & entry_found,
+        no_entry: missed & eighth.rest_positive,
+    }
+}
+
+/// A window of balls on paths, settled on its first open eighth where the window search would
+/// search it whole (not a long window, a length in the normal range): `gap` is its motion in
+/// the pair's unit of length, `length` its length bounded as the search bounds it
+/// ([`bounded_length`](super::bounded_length), which the caller's screens have formed), `before`
+/// whether the gap was positive just before it. The entry is in time since the window's start,
+/// as the search gives it. Nothing is settled where the window is not plain, or the radius is
+/// so small beside the motion that the gap's squares could underflow.
+#[inline(always)]
+pub(crate) fn window_eighth<const D: usize>(
+    gap: &Gap<D>,
+    length: f64,
+    before: bool,
+) -> EighthEntry {
+    /// The least radius in the window's own unit (its largest field in `[2, 4)`): its square
+    /// and those of separations near it stay far above the underflow.
+    const RADIUS_FLOOR: f64 = f64::from_bits((1023 - 300) << 52);
+    let nothing = EighthEntry {
+        entry: f64::NAN,
+        found: false,
+        no_entry: false,
+    };
+    let plain = (length >= f64::MIN_POSITIVE) & !long_window(gap, length);
+    // (Where the window is not plain, these are never used.)
+    let h = normal_time_unit(length);
+    let scaled = in_own_unit(&gap.time_scaled(h));
+    let end = length / h;
+    let eighth = first_open_eighth(&scaled, end);
+    let qualifies = plain & before & (scaled.radius >= RADIUS_FLOOR);
+    if !(qualifies & (eighth.one_root | eighth.one_dip)) {
+        return nothing; // what `eighth_entry` finds for these
+    }
+    let found = eighth_entry(&scaled, end, &eighth, qualifies, true);
+    EighthEntry {
+        entry: found.entry * h,
+        ..found
+    }
+}
+
+/// The root of the chord through `(lo, f_lo)` and `(hi, f_hi)`.
+#[inline(always)]
+fn secant((lo, hi): (f64, f64), (f_lo, f_hi): (f64, f64)) -> f64 {
+    lo + (hi - lo) * (f_lo / (f_lo - f_hi))
+}
+
+/// Up to six Newton steps on `f` (which returns its value and derivative) from `start`, inside
+/// `(lo, hi)` where `f` changes sign (`f_lo` at `lo`), until converged; a step that would
+/// leave the shrinking bracket is replaced by bisection. Without a branch unless `one_pair`
+/// (which stops at convergence, where lanes take the remaining steps unchanged: the same
+/// result).
+///
+/// Returns the iterate where `|f|` was smallest, and whether it is the root to float
+/// accuracy: Newton's correction there is within two ulps, or the steps stopped lowering
+/// `|f|` (the last did not improve on it) once within `noise`, the bound on `f`'s rounding,
+/// as the scalar search's polishing does.
+#[inline(always)]
+fn fixed_newton(
+    f: impl Fn(f64) -> (f64, f64),
+    (lo, hi): (f64, f64),
+    f_lo: f64,
+    start: f64,
+    noise: f64,
+    one_pair: bool,
+) -> (f64, bool) {
+    let lo_positive = f_lo > 0.0;
+    // (bracket, iterate, best iterate, |f| and Newton correction there, whether the last
+    // step improved on it)
+    type State = ((f64, f64), f64, f64, f64, f64, bool);
+    // Converged: the correction at the best iterate is within `ulps` ulps.
+    let within = |&(_, _, best, best_value, best_step, _): &State, ulps: f64| {
+        (best_value == 0.0) | (best_step <= ulps * f64::EPSILON * best)
+    };
+    // Stalled: within rounding noise of zero, a step failed to lower |f| (as the search's
+    // polishing stops); from there on, steps only jitter in the noise.
+    let stalled = |&(_, _, _, best_value, _, improved): &State| !improved & (best_value <= noise);
+    // Steps stop where the next could not move the iterate, or where they stall.
+    let converged = |state: &State| within(state, 0.5) | stalled(state);
+    let step = |state: State| -> State {
+        let ((lo, hi), x, best, best_value, best_step, _) = state;
+        let (fx, dfx) = f(x);
+        // Which end `x` replaces: the one where `f` has its sign.
+        let like_lo = (fx > 0.0) == lo_positive;
+        let lo = if like_lo & (fx != 0.0) { x } else { lo };
+        let hi = if !like_lo & (fx != 0.0) { x } else { hi };
+        let correction = fx / dfx;
+        let improved = fx.abs() < best_value;
+        let newton = x - correction;
+        let inside = (newton > lo) & (newton < hi);
+        let next = (
+            (lo, hi),
+            if inside { newton } else { 0.5 * (lo + hi) },
+            if improved { x } else { best },
+            if improved { fx.abs() } else { best_value },
+            if improved {
+                correction.abs()
+            } else {
+                best_step
+            },
+            improved,
+        );
+        // Once converged, the state stays: one pair stops there, lanes step on unchanged.
+        if converged(&state) { state } else { next }
+    };
+    let mut state = ((lo, hi), start, start, f64::INFINITY, f64::INFINITY, true);
+    if one_pair {
+        for _ in 0..6 {
+            if converged(&state) {
+                break;
+            }
+            state = step(state);
+        }
+    } else {
+        // Written out rather than looped, so that a batch's lane loop around it vectorises.
+        state = step(step(step(step(step(step(state))))));
+    }
+    (state.2, within(&state, 2.0) | stalled(&state))
+}
