@@ -7,6 +7,7 @@
 //! answers are identical, and so are the answers for any number of threads.
 
 #[cfg(target_arch = "x86_64")]
+mod first_window_lanes;
 mod path_lanes;
 mod paths;
 #[cfg(target_arch = "x86_64")]

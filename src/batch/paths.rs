@@ -13,10 +13,13 @@
 //! through the path bounds and the chord normals eight pairs at a time
 //! ([`path_lanes`](super::path_lanes)), then the window screens on every window of the pairs
 //! left ([`window_lanes`](super::window_lanes)): the same proofs, to the bit, on the pairs they
-//! can take whole, at a fraction of the cost; the pairs they do not settle go on one by one.
+//! can take whole, at a fraction of the cost. The pairs they take and do not settle are held
+//! until eight are waiting, and their first windows settled at once on the first open eighth
+//! ([`first_window_lanes`](super::first_window_lanes)); what is left goes on one by one.
 
 #[cfg(target_arch = "x86_64")]
 use super::X86Level;
+use super::first_window_lanes::{HeldPairs, eighth_contacts};
 #[cfg(target_arch = "x86_64")]
 use super::path_lanes::{LANES as LANE_WIDTH, settled};
 use super::{PerPair, Threads, check_len, run_chunks};
@@ -64,7 +67,7 @@ impl<const D: usize> PathRows<'_, D> {
     /// Path `i`'s rows: start, position, velocity, acceleration; `K` of them if `K > 0` (it
     /// must then be `segments`: a count the compiler knows unrolls the loops over them).
     #[inline(always)]
-    fn rows<const K: usize>(&self, i: usize) -> ([&[f64]; 1], [&[[f64; D]]; 3]) {
+    pub(super) fn rows<const K: usize>(&self, i: usize) -> ([&[f64]; 1], [&[[f64; D]]; 3]) {
         let k = if K > 0 { K } else { self.segments };
         let range = i * k..(i + 1) * k;
         (
@@ -235,40 +238,118 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
 ) -> Result<(), InputError> {
     let mut buffers = [PathBuffer::new(), PathBuffer::new()];
     let lanes = LANES && K > 0 && shared[0].is_none() && shared[1].is_none();
+    let mut held = HeldPairs::default();
     // Block by block: the pairs the lanes settle all at once (most pairs: they then cost no
-    // work of their own here), then the others in order (so that an error is the lowest
-    // pair's: a settled pair is valid). One call of the pair's search in the loop (two would
-    // be inlined twice, and the compiler then does worse with both).
-    for (block, slots) in chunk.chunks_mut(LANE_WIDTH).enumerate() {
-        let first = offset + block * LANE_WIDTH;
-        let (settled, taken) = if lanes && slots.len() == LANE_WIDTH {
-            // SAFETY: `LANES` is set only in the AVX-512 copy, run where the CPU has it; the
-            // sides were checked to hold a path per pair in rows of `K`, the per-pair values
-            // to have one per pair, and the block is in range.
-            let (bounds, chords, windows, taken) = unsafe { settled_block::<D, K>(pairs, first) };
-            count_settled(bounds, chords, windows);
-            (u32::from(bounds | chords | windows), u32::from(taken))
+    // work of their own here); those they take and leave held for the first-window lanes,
+    // which run on full blocks of them; then the others, and those the first-window lanes
+    // leave, walked one by one (so that an error is the lowest pair's: settled and held
+    // pairs are valid). After the last block, the pairs still held. One call of the pair's
+    // search in the loop (two would be inlined twice, and the compiler then does worse with
+    // both).
+    let blocks = chunk.len().div_ceil(LANE_WIDTH);
+    for block in 0..=blocks {
+        let mut walk = WalkList::default();
+        if block == blocks {
+            for &k in held.rest() {
+                walk.push(k, Prior::LanesLeft);
+            }
         } else {
-            (0, 0)
-        };
-        for (l, slot) in slots.iter_mut().enumerate() {
-            if settled >> l & 1 != 0 {
-                *slot = f64::INFINITY;
+            let here = block * LANE_WIDTH;
+            let len = LANE_WIDTH.min(chunk.len() - here);
+            let (settled, taken) = if lanes && len == LANE_WIDTH {
+                // SAFETY: `LANES` is set only in the AVX-512 copy, run where the CPU has it;
+                // the sides were checked to hold a path per pair in rows of `K`, the per-pair
+                // values to have one per pair, and the block is in range.
+                let (bounds, chords, windows, taken) =
+                    unsafe { settled_block::<D, K>(pairs, offset + here) };
+                count_settled(bounds, chords, windows);
+                (u32::from(bounds | chords | windows), u32::from(taken))
+            } else {
+                (0, 0)
+            };
+            for (l, slot) in chunk[here..here + len].iter_mut().enumerate() {
+                if settled >> l & 1 != 0 {
+                    *slot = f64::INFINITY;
+                }
+            }
+            let mut left = !settled & ((1u32 << len) - 1);
+            while left != 0 {
+                let l = left.trailing_zeros() as usize;
+                left &= left - 1;
+                if taken >> l & 1 != 0 {
+                    held.push(here + l);
+                } else {
+                    walk.push(here + l, Prior::Nothing);
+                }
+            }
+            if let Some(block) = held.take_block() {
+                // SAFETY: only the AVX-512 copy holds pairs, and only pairs the lanes took.
+                let (contacts, free) = unsafe { held_contacts::<D, K>(pairs, offset, &block) };
+                for ((&k, &contact), &free) in block.iter().zip(&contacts).zip(&free) {
+                    if contact.is_nan() {
+                        let prior = if free {
+                            Prior::FirstWindowFree
+                        } else {
+                            Prior::LanesLeft
+                        };
+                        walk.push(k, prior);
+                    } else {
+                        count_first_window_contact();
+                        chunk[k] = contact;
+                    }
+                }
             }
         }
-        let mut left = !settled & ((1u32 << slots.len()) - 1);
-        while left != 0 {
-            let l = left.trailing_zeros() as usize;
-            left &= left - 1;
-            let prior = if taken >> l & 1 != 0 {
-                Prior::LanesLeft
-            } else {
-                Prior::Nothing
-            };
-            slots[l] = pair_time::<D, K>(pairs, first + l, shared, &mut buffers, prior)?;
+        for &(k, prior) in walk.pairs() {
+            chunk[k] = pair_time::<D, K>(pairs, offset + k, shared, &mut buffers, prior)?;
         }
     }
     Ok(())
+}
+
+/// The pairs of a step to walk one by one, at their chunk positions, with what the lanes
+/// found of them: room for a block's and for a block of held pairs'.
+struct WalkList {
+    pairs: [(usize, Prior); 2 * LANE_WIDTH],
+    len: usize,
+}
+
+impl Default for WalkList {
+    fn default() -> Self {
+        Self {
+            pairs: [(0, Prior::Nothing); 2 * LANE_WIDTH],
+            len: 0,
+        }
+    }
+}
+
+impl WalkList {
+    #[inline(always)]
+    fn push(&mut self, k: usize, prior: Prior) {
+        if let Some(slot) = self.pairs.get_mut(self.len) {
+            *slot = (k, prior);
+            self.len += 1;
+        }
+    }
+
+    #[inline(always)]
+    fn pairs(&self) -> &[(usize, Prior)] {
+        &self.pairs[..self.len]
+    }
+}
+
+/// Counts a pair answered by the first-window lanes as its walk would have counted it.
+#[inline(always)]
+fn count_first_window_contact() {
+    for stage in [
+        Stage::PathPair,
+        Stage::Window,
+        Stage::WindowSearched,
+        Stage::WindowEighth,
+        Stage::Contact,
+    ] {
+        count(stage);
+    }
 }
 
 /// Counts the pairs of a block that the lanes settled, by their stage (nothing without the
@@ -309,6 +390,35 @@ unsafe fn settled_block<const D: usize, const K: usize>(
         settled.windows,
         settled.taken,
     )
+}
+
+/// The first-window contacts of a block of held pairs ([`eighth_contacts`]), in vectors.
+///
+/// # Safety
+/// The CPU has AVX-512 F (the pairs are held only in its copy), and the pairs are ones the
+/// lanes took.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn held_contacts<const D: usize, const K: usize>(
+    pairs: &PathPairs<'_, D>,
+    offset: usize,
+    block: &[usize; LANE_WIDTH],
+) -> ([f64; LANE_WIDTH], [bool; LANE_WIDTH]) {
+    eighth_contacts::<D, K>(pairs, offset, block)
+}
+
+/// Without the lanes (other CPUs): nothing settled. Never called.
+///
+/// # Safety
+/// None needed.
+#[cfg(not(target_arch = "x86_64"))]
+#[inline(always)]
+unsafe fn held_contacts<const D: usize, const K: usize>(
+    _pairs: &PathPairs<'_, D>,
+    _offset: usize,
+    _block: &[usize; LANE_WIDTH],
+) -> ([f64; LANE_WIDTH], [bool; LANE_WIDTH]) {
+    ([f64::NAN; LANE_WIDTH], [false; LANE_WIDTH])
 }
 
 /// Without the lanes (other CPUs): nothing settled.

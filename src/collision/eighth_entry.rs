@@ -122,9 +122,11 @@ pub(crate) fn eighth_entry<const D: usize>(
 /// ([`bounded_length`](super::bounded_length), which the caller's screens have formed), `before`
 /// whether the gap was positive just before it. The entry is in time since the window's start,
 /// as the search gives it. Nothing is settled where the window is not plain, or the radius is
-/// so small beside the motion that the gap's squares could underflow.
+/// so small beside the motion that the gap's squares could underflow. With `ONE_PAIR`, a
+/// window without a plain eighth returns at once, and the Newton steps stop at convergence;
+/// without it (lanes), every step is taken, without a branch: the same answer.
 #[inline(always)]
-pub(crate) fn window_eighth<const D: usize>(
+pub(crate) fn window_eighth<const D: usize, const ONE_PAIR: bool>(
     gap: &Gap<D>,
     length: f64,
     before: bool,
@@ -144,13 +146,23 @@ pub(crate) fn window_eighth<const D: usize>(
     let end = length / h;
     let eighth = first_open_eighth(&scaled, end);
     let qualifies = plain & before & (scaled.radius >= RADIUS_FLOOR);
-    if !(qualifies & (eighth.one_root | eighth.one_dip)) {
+    // Every eighth proven positive: no entry, the gap positive at the end (the search would
+    // prove it piece by piece).
+    let proven = qualifies & (eighth.index == 8.0);
+    if ONE_PAIR && proven {
+        return EighthEntry {
+            no_entry: true,
+            ..nothing
+        };
+    }
+    if ONE_PAIR && !(qualifies & (eighth.one_root | eighth.one_dip)) {
         return nothing; // what `eighth_entry` finds for these
     }
-    let found = eighth_entry(&scaled, end, &eighth, qualifies, true);
+    let found = eighth_entry(&scaled, end, &eighth, qualifies, ONE_PAIR);
     EighthEntry {
         entry: found.entry * h,
-        ..found
+        found: found.found,
+        no_entry: found.no_entry | proven,
     }
 }
 

@@ -27,7 +27,8 @@
 //! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` on AVX-512 CPUs, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
 //! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |
-//! | eighth entry | `eighth_entry.rs` | a window whose first open eighth is plain (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free | `moving_entry`; path windows, before the window search (`window_eighth`) |
+//! | eighth entry | `eighth_entry.rs` | a window whose first open eighth is plain (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`) |
+//! | (first-window lanes) | `batch/first_window_lanes.rs`, `path_contact.rs` (`PathFirstWindow`) | the eighth entry on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window free (the walk starts after it) | `path_collision_times` on AVX-512 CPUs, rows of 2 and 3 segments |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
 //! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `entry` (for `search_window`), `crossing`, `moving_entry` |
@@ -71,7 +72,10 @@
 //! most windows, and the rest go to the same window search as the friction balls'. Two paths
 //! of one segment each (frictionless balls, say) have one window, for ever: it goes straight
 //! to the window's stages (the straight window's closed form, the separation box and chord,
-//! the search), which settle it as soon as the screens would.
+//! the search), which settle it as soon as the screens would. A batch holds the pairs its
+//! lanes take and leave until eight are waiting, then settles their first windows at once on
+//! the first open eighth (`batch/first_window_lanes.rs`): the walk then answers only the
+//! pairs that are left, or starts after a first window found free.
 //!
 //! ## Semantics (SPEC)
 //! - touching or overlapping at `t = 0` is a collision at `0` only if the balls approach
@@ -528,10 +532,16 @@ fn search_piece<const D: usize>(
 #[inline(always)]
 fn bounded_length<const D: usize>(gap: &Gap<D>, length: f64) -> f64 {
     if length.is_finite() {
-        length.min(LONGEST_WINDOW)
+        bounded_finite_length(length)
     } else {
         unbounded_length(gap)
     }
+}
+
+/// [`bounded_length`] of a window that ends (`length` finite).
+#[inline(always)]
+fn bounded_finite_length(length: f64) -> f64 {
+    length.min(LONGEST_WINDOW)
 }
 
 /// [`bounded_length`] of a window that lasts for ever.
