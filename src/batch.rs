@@ -6,8 +6,8 @@
 //! [`collision_time`](crate::collision_time) search as a single query, so batch and scalar
 //! answers are identical, and so are the answers for any number of threads.
 
-#[cfg(target_arch = "x86_64")]
 mod first_window_lanes;
+#[cfg(target_arch = "x86_64")]
 mod path_lanes;
 mod paths;
 #[cfg(target_arch = "x86_64")]

@@ -36,6 +36,10 @@ impl HeldPairs {
     /// so that there is always room).
     #[inline(always)]
     pub(super) fn push(&mut self, k: usize) {
+        debug_assert!(
+            self.len < self.index.len(),
+            "a block is taken whenever one is full"
+        );
         if let Some(slot) = self.index.get_mut(self.len) {
             *slot = k;
             self.len += 1;

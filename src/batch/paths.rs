@@ -326,6 +326,10 @@ impl Default for WalkList {
 impl WalkList {
     #[inline(always)]
     fn push(&mut self, k: usize, prior: Prior) {
+        debug_assert!(
+            self.len < self.pairs.len(),
+            "a block's pairs and a held block's"
+        );
         if let Some(slot) = self.pairs.get_mut(self.len) {
             *slot = (k, prior);
             self.len += 1;
