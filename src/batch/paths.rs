@@ -283,8 +283,8 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
                 }
             }
             if let Some(block) = held.take_block() {
-                // SAFETY: only the AVX-512 copy holds pairs, and only pairs the lanes took.
-                let (contacts, free) = unsafe { held_contacts::<D, K>(pairs, offset, &block) };
+                // (Only pairs the lanes took are held.)
+                let (contacts, free) = eighth_contacts::<D, K>(pairs, offset, &block);
                 for ((&k, &contact), &free) in block.iter().zip(&contacts).zip(&free) {
                     if contact.is_nan() {
                         let prior = if free {
@@ -394,35 +394,6 @@ unsafe fn settled_block<const D: usize, const K: usize>(
         settled.windows,
         settled.taken,
     )
-}
-
-/// The first-window contacts of a block of held pairs ([`eighth_contacts`]), in vectors.
-///
-/// # Safety
-/// The CPU has AVX-512 F (the pairs are held only in its copy), and the pairs are ones the
-/// lanes took.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn held_contacts<const D: usize, const K: usize>(
-    pairs: &PathPairs<'_, D>,
-    offset: usize,
-    block: &[usize; LANE_WIDTH],
-) -> ([f64; LANE_WIDTH], [bool; LANE_WIDTH]) {
-    eighth_contacts::<D, K>(pairs, offset, block)
-}
-
-/// Without the lanes (other CPUs): nothing settled. Never called.
-///
-/// # Safety
-/// None needed.
-#[cfg(not(target_arch = "x86_64"))]
-#[inline(always)]
-unsafe fn held_contacts<const D: usize, const K: usize>(
-    _pairs: &PathPairs<'_, D>,
-    _offset: usize,
-    _block: &[usize; LANE_WIDTH],
-) -> ([f64; LANE_WIDTH], [bool; LANE_WIDTH]) {
-    ([f64::NAN; LANE_WIDTH], [false; LANE_WIDTH])
 }
 
 /// Without the lanes (other CPUs): nothing settled.

@@ -216,9 +216,6 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
         let (end_a, end_b) = (end_of(a, i), end_of(b, j));
         let end = end_a.min(end_b);
         count(Stage::Window);
-        // The boxes of the two segments, from the path bounds, settle most windows of balls
-        // on general paths before any motion is formed (a proof like the path bounds', so the
-        // same answer as the search's).
         if first_free {
             // Searched and settled on its first open eighth, lane-wise.
             count(Stage::WindowSearched);
@@ -226,6 +223,9 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
             first_free = false;
             previous_positive = Some(true);
         } else if SCREENS && bounds_a.segments_apart(i, bounds_b, j, reach) {
+            // The boxes of the two segments, from the path bounds, settle most windows of
+            // balls on general paths before any motion is formed (a proof like the path
+            // bounds', so the same answer as the search's).
             count(Stage::WindowSegmentsApart);
             previous_positive = Some(true);
         } else {
