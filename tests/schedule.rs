@@ -234,10 +234,17 @@ fn run<const D: usize>(
     let walls = walls.then(|| Walls::new([-0.5; D], [size + 0.5; D]).expect("a box"));
     let options = ScheduleOptions { walls, t_max };
     let mut s = CollisionSchedule::new(paths, &radii, options).expect("valid");
+    play(&mut s, &mut draw, steps);
+}
+
+/// `steps` random events and updates on the calendar `s`, checked against brute force
+/// throughout: events resolved as a simulation would, skips past events, refused updates.
+fn play<const D: usize>(s: &mut CollisionSchedule<D>, draw: &mut Draw, steps: usize) {
+    let n = s.len();
     for step in 0..steps {
-        let event = check(&mut s);
+        let event = check(s);
         if n > 0 && step % 7 == 3 {
-            refused_updates_change_nothing(&mut s, &mut draw);
+            refused_updates_change_nothing(s, draw);
         }
         let roll = draw.rng.below(10);
         let now = s.time();
@@ -312,6 +319,44 @@ proptest! {
     ) {
         let numbers = if dyadic { Numbers::Dyadic } else { Numbers::Full };
         run::<3>(seed, numbers, n, walls, f64::INFINITY, 40);
+    }
+}
+
+/// Grids that collapse to one cell with more balls than the calendar keeps bits for (64): a
+/// box of ±1e308 (its width overflows), or first positions about 1.8e308 apart. Brute force
+/// throughout, 65 to 1,000 balls.
+#[test]
+fn grids_of_one_cell_with_many_balls_are_brute_force() {
+    for (seed, n, steps) in [
+        (1u64, 65, 40),
+        (2, 71, 40),
+        (3, 130, 25),
+        (4, 400, 6),
+        (5, 1000, 3),
+    ] {
+        let size = 1.0 + (n as f64).sqrt();
+        let mut draw = Draw {
+            rng: Rng(seed),
+            numbers: Numbers::Full,
+            size,
+        };
+        let radii: Vec<f64> = (0..n).map(|_| draw.number(0.125, 0.5).max(0.125)).collect();
+        // A box of ±1e308.
+        let paths: Vec<Path<2>> = (0..n).map(|_| draw.path(0.0, None)).collect();
+        let walls = Walls::new([-1e308; 2], [1e308; 2]).expect("a box");
+        let options = ScheduleOptions {
+            walls: Some(walls),
+            t_max: f64::INFINITY,
+        };
+        let mut s = CollisionSchedule::new(paths, &radii, options).expect("valid");
+        play(&mut s, &mut draw, steps);
+        // No walls, one ball far away.
+        let mut paths: Vec<Path<2>> = (0..n).map(|_| draw.path(0.0, None)).collect();
+        let far = Vector2::new(-0.9e308, 0.9e308);
+        paths[n / 2] = Path::new(vec![Segment::at_rest(0.0, far)]).expect("valid");
+        let mut s =
+            CollisionSchedule::new(paths, &radii, ScheduleOptions::default()).expect("valid");
+        play(&mut s, &mut draw, steps);
     }
 }
 

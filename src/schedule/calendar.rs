@@ -897,7 +897,7 @@ impl<const D: usize> CollisionSchedule<D> {
                     partner,
                     ..
                 }) if k != partner => {
-                    if searched >> k & 1 == 1 && self.updated[ku] <= stamp {
+                    if was_searched(searched, k) && self.updated[ku] <= stamp {
                         continue;
                     }
                     self.pair_time(i, ku)
@@ -963,7 +963,7 @@ impl<const D: usize> CollisionSchedule<D> {
             self.best_times.get_mut(i),
         ) {
             *refreshed = self.clock;
-            *searched = self.candidates.iter().fold(0, |m, &k| m | 1 << k);
+            *searched = searched_mask(&self.candidates);
             *best_time = found_time;
         }
         self.pairs.set(i, best);
@@ -1085,6 +1085,21 @@ fn cell_size<const D: usize>(paths: &[Path<D>], radii: &[f64], walls: Option<&Wa
     } else {
         1.0
     }
+}
+
+/// The bit mask of the candidates a refresh searched, for [`Known::Since`]: bit `k` for ball
+/// `k < 64`. Balls from 64 on have no bit (a grid of one cell may hold any number of balls
+/// when its region is too wide to divide) and count as not searched: searched again.
+fn searched_mask(candidates: &[u32]) -> u64 {
+    candidates
+        .iter()
+        .filter(|&&k| k < u64::BITS)
+        .fold(0, |m, &k| m | 1 << k)
+}
+
+/// Whether ball `k` has its bit in a [`searched_mask`].
+fn was_searched(mask: u64, k: u32) -> bool {
+    k < u64::BITS && mask >> k & 1 == 1
 }
 
 /// The box of the paths' first positions (`[0, 1]` without balls).

@@ -16,7 +16,7 @@ const CELLS_PER_BALL: usize = 2;
 
 /// Up to this many balls, one cell: each ball's boxes are compared with every other's, which
 /// costs less than listing them in cells (measured on the benchmark's frictionless disks).
-/// (At most 64: the calendar keeps a bit per ball for each ball of a one-cell grid.)
+/// (The calendar keeps a bit per ball for the first 64 balls of a one-cell grid.)
 pub(crate) const ONE_CELL: usize = 16;
 const _: () = assert!(ONE_CELL <= 64);
 
