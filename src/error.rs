@@ -66,6 +66,38 @@ pub enum InputErrorKind {
         /// The high bound.
         hi: f64,
     },
+    /// A ball that overlaps another at the start of a simulation.
+    Overlap {
+        /// The other ball.
+        other: usize,
+        /// How far the centres are apart.
+        distance: f64,
+        /// The sum of the two radii.
+        contact: f64,
+    },
+    /// A ball that overlaps a wall of the box, or lies outside it, at the start of a
+    /// simulation.
+    OutsideBox {
+        /// The axis of the wall.
+        axis: usize,
+    },
+    /// A ball at least as wide as the box on an axis: it would touch both walls at once.
+    WiderThanBox {
+        /// The axis.
+        axis: usize,
+        /// The box's width on that axis.
+        width: f64,
+    },
+    /// A simulation in which two balls (or a ball and a wall) keep colliding at one instant
+    /// without time moving on.
+    NoProgress {
+        /// The other ball of the last such event (`None`: a wall).
+        other: Option<usize>,
+        /// The instant.
+        time: f64,
+        /// How many events came at that instant.
+        events: usize,
+    },
 }
 
 /// An invalid input: which argument, at which index (for batch calls), and why.
@@ -254,6 +286,42 @@ impl fmt::Display for InputErrorKind {
                 Brief(lo),
                 Brief(hi)
             ),
+            Self::Overlap {
+                other,
+                distance,
+                contact,
+            } => write!(
+                f,
+                "the ball overlaps ball {other} at the start: its centre is {} from theirs, \
+                 less than the sum of their radii {}",
+                Brief(distance),
+                Brief(contact)
+            ),
+            Self::OutsideBox { axis } => write!(
+                f,
+                "the ball overlaps a wall of the box on axis {axis} (or lies outside the box) \
+                 at the start"
+            ),
+            Self::WiderThanBox { axis, width } => write!(
+                f,
+                "the ball must be narrower than the box, which is {} wide on axis {axis}",
+                Brief(width)
+            ),
+            Self::NoProgress {
+                other,
+                time,
+                events,
+            } => {
+                match other {
+                    Some(j) => write!(f, "the ball and ball {j}")?,
+                    None => f.write_str("the ball and a wall")?,
+                }
+                write!(
+                    f,
+                    " keep colliding at t = {}: {events} events at that instant",
+                    Brief(time)
+                )
+            }
         }
     }
 }

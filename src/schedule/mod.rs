@@ -42,5 +42,8 @@ mod walls;
 
 pub use calendar::{CollisionSchedule, FrictionPath, HeapBytes, ScheduleOptions};
 pub use event::{Collision, Event, WallContact};
-pub use simulation::{LoggedEvent, Simulation, SimulationOptions, simulate};
+pub use simulation::{
+    LoggedEvent, MAX_EVENTS_AT_ONE_INSTANT, Progress, Simulation, SimulationOptions, simulate,
+    simulate_observed,
+};
 pub use walls::{Side, Walls};

@@ -4,13 +4,22 @@
 //! Each ball is a friction [`Ball`] (slowed along its velocity until it stops; no friction,
 //! and it moves straight on). At each event, in the calendar's order:
 //! - two balls touch: momentum is exchanged along the line of centres `n` with the
-//!   restitution `e` and the masses: `J = −(1 + e)·(Δv·n) / (1/m_i + 1/m_j)`,
-//!   `v_i += J/m_i·n`, `v_j −= J/m_j·n` (the tangential components are kept: smooth balls);
+//!   restitution `e` and the masses, so that they part at the normal speed
+//!   `w = max(e·u, w_min)`, `u` the speed at which they approached (the tangential
+//!   components are kept: smooth balls; see [`parting_speed`] for `w_min`); a ball's second
+//!   and later events at one instant are elastic (see [`restitution_at`]);
 //! - a ball touches a wall: its velocity's component normal to the wall is reflected;
 //!
 //! and the balls involved get new friction paths from the event's time. It runs until
 //! `t_end`, `max_events` or until no event is left (every ball at rest, or moving away for
 //! ever).
+//!
+//! It always moves on. A start that no motion could come from (balls overlapping each other
+//! or a wall, or a ball as wide as the box) is refused. Two balls pressed together (a resting
+//! contact: restitution 0 and frictions that push one into the other) part at `w_min` at each
+//! touch, so they bounce within a hair's breadth (`2⁻²¹` of their contact distance) instead
+//! of colliding again at the same instant for ever, or sinking into each other unseen. What
+//! is left, events piling up at one instant without end, is an error naming the balls.
 
 use super::calendar::{CollisionSchedule, ScheduleOptions};
 use super::event::Event;
@@ -18,6 +27,7 @@ use super::walls::{Side, Walls};
 use crate::error::{InputError, InputErrorKind, check_horizon, finite};
 use crate::motion::Ball;
 use nalgebra::Vector2;
+use std::ops::ControlFlow;
 
 /// Options of [`simulate`].
 ///
@@ -72,6 +82,18 @@ pub struct Simulation {
     pub end: f64,
     /// The balls at `end`.
     pub balls: Vec<Ball>,
+    /// Whether the run was stopped by its observer ([`simulate_observed`]) before its end.
+    pub stopped: bool,
+}
+
+/// How far a simulation has come: what [`simulate_observed`]'s observer is shown after each
+/// event.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Progress {
+    /// The events so far.
+    pub events: usize,
+    /// The time of the last event.
+    pub time: f64,
 }
 
 /// Simulates friction balls of `radii` in the box `walls` from time 0 (see the module
@@ -80,7 +102,13 @@ pub struct Simulation {
 /// # Errors
 /// An [`InputError`]: a bad radius or mass (`mass[i]`, finite and `> 0`, one or one per
 /// ball), a restitution outside `[0, 1]`, a NaN `t_end`; no `t_end`, no `max_events` and a
-/// ball without friction (it would never end).
+/// ball without friction (it would never end); a ball that overlaps another (`pos[i]`,
+/// [`InputErrorKind::Overlap`]) or a wall, or lies outside the box (`pos[i]`,
+/// [`InputErrorKind::OutsideBox`]), at the start, beyond `2⁻³⁰` of the radii (touching is
+/// fine); a ball as wide as the box or wider, within the same `2⁻³⁰` (`radius[i]`:
+/// it would touch both walls at once); more events at one instant than
+/// [`MAX_EVENTS_AT_ONE_INSTANT`] allows for `N` balls (`pos[i]`,
+/// [`InputErrorKind::NoProgress`], naming the two balls of the last one).
 ///
 /// ```
 /// use ballcollide::Ball;
@@ -104,6 +132,43 @@ pub fn simulate(
     walls: Walls<2>,
     options: &SimulationOptions,
 ) -> Result<Simulation, InputError> {
+    simulate_observed(balls, radii, walls, options, |_| ControlFlow::Continue(()))
+}
+
+/// Events at one instant allowed for `n` balls: `1,000 + 64·n`. A touching chain or cluster
+/// resolves in far fewer (each pair parts at once); more means the run is stuck.
+pub const MAX_EVENTS_AT_ONE_INSTANT: (usize, usize) = (1000, 64);
+
+/// [`simulate`], showing `observe` how far it has come after each event; `observe` returns
+/// [`ControlFlow::Break`] to stop the run there (as if `max_events` were reached, with
+/// [`Simulation::stopped`] set). For progress bars and for interrupting long runs (the
+/// Python binding checks for Ctrl-C there).
+///
+/// # Errors
+/// As [`simulate`].
+///
+/// ```
+/// use ballcollide::Ball;
+/// use ballcollide::schedule::{SimulationOptions, Walls, simulate_observed};
+/// use nalgebra::Vector2;
+/// use std::ops::ControlFlow;
+///
+/// let balls = [Ball::new(Vector2::new(0.5, 0.5), Vector2::new(1.0, 0.0), 0.0)?];
+/// let walls = Walls::new([0.0, 0.0], [2.0, 1.0])?;
+/// // Stop after three wall contacts, whatever the options say.
+/// let run = simulate_observed(&balls, &[0.25], walls, &SimulationOptions { t_end: 100.0, ..Default::default() }, |p| {
+///     if p.events == 3 { ControlFlow::Break(()) } else { ControlFlow::Continue(()) }
+/// })?;
+/// assert_eq!((run.events.len(), run.stopped, run.end), (3, true, 4.25));
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+pub fn simulate_observed(
+    balls: &[Ball],
+    radii: &[f64],
+    walls: Walls<2>,
+    options: &SimulationOptions,
+    mut observe: impl FnMut(Progress) -> ControlFlow<()>,
+) -> Result<Simulation, InputError> {
     let n = balls.len();
     let masses = masses(&options.mass, n)?;
     let e = options.restitution;
@@ -125,19 +190,50 @@ pub fn simulate(
         t_max: t_end,
     };
     let mut calendar = CollisionSchedule::<2>::from_balls(balls, radii, 0.0, calendar_options)?;
+    check_start(balls, radii, &walls)?;
     let mut events = Vec::new();
     let max_events = options.max_events.unwrap_or(usize::MAX);
+    let most_at_one_instant = MAX_EVENTS_AT_ONE_INSTANT
+        .1
+        .saturating_mul(n)
+        .saturating_add(MAX_EVENTS_AT_ONE_INSTANT.0);
+    let mut at_this_instant = 0usize;
+    // Per ball: the time of its last event (see `restitution_at`).
+    let mut last_event = vec![f64::NEG_INFINITY; n];
     let mut end = 0.0;
+    let mut stopped = false;
     while events.len() < max_events {
         let Some(event) = calendar.next_event() else {
             break;
         };
         let t = event.time();
+        at_this_instant = if t == end && !events.is_empty() {
+            at_this_instant + 1
+        } else {
+            1
+        };
+        if at_this_instant > most_at_one_instant {
+            let (i, other) = match event {
+                Event::Collision(c) => (c.i, Some(c.j)),
+                Event::Wall(w) => (w.ball, None),
+            };
+            let kind = InputErrorKind::NoProgress {
+                other,
+                time: t,
+                events: at_this_instant,
+            };
+            return Err(InputError::new("pos", kind).at(i));
+        }
         end = t;
         match event {
             Event::Collision(c) => {
                 let (a, b) = (at(&calendar, c.i, t), at(&calendar, c.j, t));
-                let (va, vb) = collide(a, b, masses.get(c.i), masses.get(c.j), e);
+                let frictions = [balls[c.i].friction(), balls[c.j].friction()];
+                let contact = radii[c.i] + radii[c.j];
+                let masses = [masses.get(c.i), masses.get(c.j)];
+                let e = restitution_at(e, t, [last_event[c.i], last_event[c.j]]);
+                (last_event[c.i], last_event[c.j]) = (t, t);
+                let (va, vb) = collide(a, b, masses, frictions, contact, e);
                 let new = [
                     Ball::from_checked(a.0.into(), va.into(), balls[c.i].friction()),
                     Ball::from_checked(b.0.into(), vb.into(), balls[c.j].friction()),
@@ -150,6 +246,7 @@ pub fn simulate(
                 });
             }
             Event::Wall(w) => {
+                last_event[w.ball] = t;
                 let (p, mut v) = at(&calendar, w.ball, t);
                 v[w.axis] = match w.side {
                     Side::Low => v[w.axis].abs(),
@@ -168,8 +265,16 @@ pub fn simulate(
                 });
             }
         }
+        let progress = Progress {
+            events: events.len(),
+            time: t,
+        };
+        if observe(progress).is_break() {
+            stopped = true;
+            break;
+        }
     }
-    let no_event_left = events.len() < max_events;
+    let no_event_left = events.len() < max_events && !stopped;
     if no_event_left {
         end = if t_end.is_finite() {
             t_end
@@ -186,7 +291,23 @@ pub fn simulate(
             Ball::from_checked(p.into(), v.into(), balls[i].friction())
         })
         .collect();
-    Ok(Simulation { events, end, balls })
+    Ok(Simulation {
+        events,
+        end,
+        balls,
+        stopped,
+    })
+}
+
+/// The restitution of a collision at `t` of two balls whose last events came at `last`:
+/// `e`, or `1` if either ball has had an event at this very instant. Touching balls in a
+/// chain or a cluster (a rack, a row against a wall) then settle at one instant in a few
+/// events, as in Newton's cradle, instead of an inelastic collapse without end (restitution
+/// 0 leaves three touching balls colliding at `t` over a thousand times before rounding ends
+/// it): the TC model of Luding and McNamara (1998) with a contact duration of 0. A pair that
+/// meets again later takes `e` again.
+fn restitution_at(e: f64, t: f64, last: [f64; 2]) -> f64 {
+    if last.contains(&t) { 1.0 } else { e }
 }
 
 /// Ball `i`'s centre and velocity at `t`, from its path.
@@ -195,28 +316,153 @@ fn at(calendar: &CollisionSchedule<2>, i: usize, t: f64) -> (Vector2<f64>, Vecto
     (path.position_at(t), path.velocity_at(t))
 }
 
-/// The velocities after a collision of balls `a` and `b` (centre, velocity) of masses `ma`,
-/// `mb` with restitution `e`; unchanged if they do not approach along the line of centres.
+/// The velocities after a collision of balls `a` and `b` (centre, velocity) of `masses`,
+/// `frictions` and contact distance `contact`, with restitution `e`: they part along their
+/// line of centres `n` at the normal speed `max(e·u, w)` (`u` the speed at which they
+/// approached, `w` the [`parting_speed`]), or keep their velocities if they already part
+/// faster. Each ball takes its share of the change by the other's mass fraction,
+/// `m_j/(m_i + m_j) = 1/(1 + m_i/m_j)`, which neither overflows nor vanishes for masses
+/// anywhere in the float range (`1/m` would overflow for `m` below `1/f64::MAX`).
 fn collide(
     a: (Vector2<f64>, Vector2<f64>),
     b: (Vector2<f64>, Vector2<f64>),
-    ma: f64,
-    mb: f64,
+    masses: [f64; 2],
+    frictions: [f64; 2],
+    contact: f64,
     e: f64,
 ) -> (Vector2<f64>, Vector2<f64>) {
     let d = a.0 - b.0;
     let distance = d.norm();
-    if distance.is_nan() || distance <= 0.0 {
+    if !(distance > 0.0 && distance.is_finite()) {
         return (a.1, b.1);
     }
     let n = d / distance;
-    let approach = (a.1 - b.1).dot(&n);
-    if approach >= 0.0 {
+    // The normal speed at which they part (negative: approach).
+    let parting = (a.1 - b.1).dot(&n);
+    let [ma, mb] = masses;
+    let share_a = 1.0 / (1.0 + ma / mb);
+    let share_b = 1.0 / (1.0 + mb / ma);
+    let part_at = |target: f64| {
+        let change = target - parting;
+        (a.1 + n * (change * share_a), b.1 - n * (change * share_b))
+    };
+    // The frictions that press them together are those of their velocities after the
+    // collision: from the restitution's first, then the least parting speed of those.
+    let rounding = ROUNDING * (a.1.norm() + b.1.norm());
+    let target = (e * -parting).max(rounding);
+    if parting >= target {
         return (a.1, b.1);
     }
-    let j = -(1.0 + e) * approach / (1.0 / ma + 1.0 / mb);
-    (a.1 + n * (j / ma), b.1 - n * (j / mb))
+    let (va, vb) = part_at(target);
+    let least = parting_speed(va, vb, n, frictions, contact);
+    if least > target {
+        part_at(least)
+    } else {
+        (va, vb)
+    }
 }
+
+/// The least normal speed `w_min` at which two touching balls with velocities `va`, `vb`
+/// (after the collision) part along `n`, so that the calendar sees them part rather than
+/// touch again at the same instant or sink into each other unseen. [`collide`] makes it at
+/// least `2⁻⁴⁰` of their speeds, far above the rounding of `Δv·n` (`2⁻⁵³`), so that the
+/// gap's first derivative is positive whatever the rounding of the positions; here, for
+/// balls pressed together (their frictions push them towards each other along `n` at the
+/// relative deceleration `a`), it is `√(2⁻²⁰·R·a)`, `R` the contact distance. They then rise
+/// apart by `w²/(2a) = 2⁻²¹·R` and touch again `2w/a` later at the speed `w`: a resting
+/// contact becomes a bounce within a hair's breadth, and time moves on by `2w/a` each time
+/// (restitution 0 would make the gap's first derivative vanish and leave the decision to
+/// rounding).
+///
+/// When they approached slower than `w_min`, parting at `w_min` gives their normal motion a
+/// little energy, at most `½·m·2⁻²⁰·R·a` for the reduced mass `m`: the work of the push over
+/// `2⁻²¹·R`.
+fn parting_speed(
+    va: Vector2<f64>,
+    vb: Vector2<f64>,
+    n: Vector2<f64>,
+    frictions: [f64; 2],
+    contact: f64,
+) -> f64 {
+    // Each ball's friction deceleration, against its velocity (none at rest).
+    let deceleration = |v: Vector2<f64>, friction: f64| {
+        let speed = v.norm();
+        if speed > 0.0 && friction > 0.0 {
+            v * (-friction / speed)
+        } else {
+            Vector2::zeros()
+        }
+    };
+    let towards = -(deceleration(va, frictions[0]) - deceleration(vb, frictions[1])).dot(&n);
+    if towards > 0.0 {
+        (RESTING_RISE * contact * towards).sqrt()
+    } else {
+        0.0
+    }
+}
+
+/// See [`parting_speed`].
+const ROUNDING: f64 = 1.0 / (1u64 << 40) as f64;
+/// See [`parting_speed`]: twice the rise of a resting contact's bounces, relative to the
+/// contact distance.
+const RESTING_RISE: f64 = 1.0 / (1u64 << 20) as f64;
+
+/// The start of a simulation: no ball overlaps another or a wall, or lies outside the box,
+/// beyond [`START_TOLERANCE`] of the radii (touching is fine), and none is as wide as the box.
+fn check_start(balls: &[Ball], radii: &[f64], walls: &Walls<2>) -> Result<(), InputError> {
+    let (lo, hi) = (walls.lo(), walls.hi());
+    let keep = 1.0 - START_TOLERANCE;
+    for (i, (ball, &r)) in balls.iter().zip(radii).enumerate() {
+        let p = ball.position();
+        for axis in 0..2 {
+            let width = hi[axis] - lo[axis];
+            if 2.0 * r >= width * keep {
+                let kind = InputErrorKind::WiderThanBox { axis, width };
+                return Err(InputError::new("radius", kind).at(i));
+            }
+            let room = (p[axis] - lo[axis]).min(hi[axis] - p[axis]);
+            if room < r * keep {
+                return Err(InputError::new("pos", InputErrorKind::OutsideBox { axis }).at(i));
+            }
+        }
+    }
+    // Sweep along x: sorted by their lowest x, each ball meets only those that start before
+    // it ends.
+    let mut order: Vec<usize> = (0..balls.len()).collect();
+    let low = |i: usize| balls[i].position().x - radii[i];
+    order.sort_unstable_by(|&i, &j| low(i).total_cmp(&low(j)).then(i.cmp(&j)));
+    let mut worst: Option<(usize, usize, f64, f64)> = None;
+    for (m, &i) in order.iter().enumerate() {
+        let high = balls[i].position().x + radii[i];
+        for &j in order[m + 1..].iter().take_while(|&&j| low(j) < high) {
+            let contact = radii[i] + radii[j];
+            let distance = (balls[i].position() - balls[j].position()).norm();
+            if distance < contact * keep {
+                // The lowest index of an overlapping pair, then its partner's: the same
+                // report whatever the sweep's order.
+                let (a, b) = (i.min(j), i.max(j));
+                if worst.is_none_or(|w| (a, b) < (w.0, w.1)) {
+                    worst = Some((a, b, distance, contact));
+                }
+            }
+        }
+    }
+    match worst {
+        Some((a, b, distance, contact)) => {
+            let kind = InputErrorKind::Overlap {
+                other: a,
+                distance,
+                contact,
+            };
+            Err(InputError::new("pos", kind).at(b))
+        }
+        None => Ok(()),
+    }
+}
+
+/// How deep an overlap at the start may be, relative to the radii: rounding in the caller's
+/// placement (a rack of touching balls), not a real overlap.
+const START_TOLERANCE: f64 = 1.0 / (1u64 << 30) as f64;
 
 /// The masses: one for all, or one per ball; each finite and `> 0`.
 fn masses(mass: &[f64], n: usize) -> Result<PerBall<'_>, InputError> {

@@ -1,0 +1,80 @@
+"""``simulate`` always moves on, ends, and never lets balls sink into each other; a long run
+stops on Ctrl-C. The Rust suite (tests/simulation_progress.rs) has the families of cases;
+these are the reported reproducers through the Python call, and the interrupt."""
+
+import os
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+
+import ballcollide as bc
+
+BIG_BOX = ([-4, -4], [4, 4])
+
+
+def overlap(pos, radius):
+    """The deepest overlap of two balls, relative to their contact distance."""
+    d = np.linalg.norm(pos[:, None, :] - pos[None, :, :], axis=-1)
+    np.fill_diagonal(d, np.inf)
+    return max(0.0, float((2 * radius - d.min()) / (2 * radius)))
+
+
+@pytest.mark.parametrize("restitution", [0.0, 0.001, 0.01, 0.5, 1.0])
+@pytest.mark.parametrize("vel", [[[1, 0], [0, 0.05]], [[1, 0.1], [0.5, 0]], [[1, 0.1], [0, 0]]])
+def test_a_resting_contact_ends_without_overlap(restitution, vel):
+    pos = [[0, 0], [0.5, 0]]
+    run = bc.simulate(pos, vel, 1.0, 0.125, box=BIG_BOX, restitution=restitution)
+    times = run[0]
+    assert len(times) < 10_000
+    # Every state along the way: runs cut at several times (a horizon only cuts).
+    for t in np.linspace(0, times[-1] + 1, 9)[1:]:
+        state = bc.simulate(pos, vel, 1.0, 0.125, box=BIG_BOX, restitution=restitution, t_end=t)
+        assert overlap(state[3], 0.125) <= 1e-9, t
+
+
+def test_impossible_starts_are_refused_naming_the_balls():
+    with pytest.raises(bc.InputError, match=r"^radius\[0\]: the ball must be narrower"):
+        bc.simulate([[0.5, 0.5]], [[1, 0.3]], 0.0, 0.5, box=([0, 0], [1, 2]), t_end=1.0)
+    with pytest.raises(bc.InputError, match=r"^pos\[0\]: the ball overlaps a wall") as e:
+        bc.simulate([[0.2, 0.5], [0.8, 0.5]], [[1, 0], [0, 0]], 0.1, 0.3, box=([0, 0], [1, 1]))
+    assert (e.value.argument, e.value.index) == ("pos", 0)
+    with pytest.raises(bc.InputError, match=r"^pos\[1\]: .* outside the box"):
+        bc.simulate([[0.5, 0.5], [3, 3]], [[0, 0], [0, 0]], 0.1, 0.1, box=([0, 0], [1, 1]))
+    with pytest.raises(bc.InputError, match=r"^pos\[1\]: the ball overlaps ball 0"):
+        bc.simulate([[0.5, 0.5], [0.6, 0.5]], [[0, 0], [0, 0]], 0.1, 0.1, box=([0, 0], [1, 1]))
+
+
+@pytest.mark.parametrize("mass", [5e-324, 1e-308, 1e-300, 1.0, 1e300, 1e308])
+def test_masses_over_the_float_range_move_on(mass):
+    for masses in (mass, [mass, 1.0], [1.0, mass]):
+        times, _i, _j, pos, vel = bc.simulate(
+            [[0, 0], [0.5, 0]], [[1, 0.1], [0.5, 0]], 1.0, 0.125, box=BIG_BOX, mass=masses
+        )
+        assert 1 <= len(times) < 100
+        assert np.isfinite(pos).all() and np.isfinite(vel).all()
+
+
+def test_ctrl_c_stops_a_long_simulation_within_a_fraction_of_a_second():
+    # In a child process of its own: the signal goes to it alone.
+    code = textwrap.dedent(
+        """
+        import os, signal, threading, time, ballcollide as bc
+        threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+        t0 = time.perf_counter()
+        try:
+            bc.simulate([[0.5, 0.5]], [[1, 0.3]], 0.0, 0.1, box=([0, 0], [1, 2]), t_end=1e12)
+        except KeyboardInterrupt:
+            print(f"interrupted {time.perf_counter() - t0:.3f}")
+        """
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, env=os.environ
+    )
+    assert out.returncode == 0, out.stderr
+    kind, seconds = out.stdout.split()
+    assert kind == "interrupted"
+    # The signal comes at 0.5 s; the run looks for it every 0.05 s.
+    assert float(seconds) < 1.5, seconds

@@ -1,0 +1,315 @@
+//! `simulate` always moves on and ends, and never lets balls sink into each other: resting
+//! contacts (restitution 0 with friction), touching chains against a wall, masses over the
+//! whole float range, balls as wide as the box, impossible starts (refused, naming the
+//! balls), and runs stopped by their observer.
+
+use ballcollide::schedule::{
+    MAX_EVENTS_AT_ONE_INSTANT, Simulation, SimulationOptions, Walls, simulate, simulate_observed,
+};
+use ballcollide::{Ball, InputErrorKind};
+use nalgebra::Vector2;
+use std::ops::ControlFlow;
+
+#[path = "support/rng.rs"]
+mod rng;
+use rng::Rng;
+
+fn ball(p: [f64; 2], v: [f64; 2], friction: f64) -> Ball {
+    Ball::new(Vector2::from(p), Vector2::from(v), friction).expect("a valid ball")
+}
+
+fn run(
+    balls: &[Ball],
+    radii: &[f64],
+    walls: Walls<2>,
+    restitution: f64,
+    mass: Vec<f64>,
+    t_end: f64,
+) -> Simulation {
+    let options = SimulationOptions {
+        mass,
+        restitution,
+        t_end,
+        max_events: Some(2_000_000),
+    };
+    simulate(balls, radii, walls, &options).expect("a valid simulation")
+}
+
+/// The deepest overlap of any two balls (relative to their contact distance) and of any ball
+/// with a wall (relative to its radius), in a simulation's final state.
+fn deepest_overlap(run: &Simulation, radii: &[f64], walls: &Walls<2>) -> f64 {
+    let mut deepest = 0.0f64;
+    for (i, a) in run.balls.iter().enumerate() {
+        for (j, b) in run.balls.iter().enumerate().skip(i + 1) {
+            let contact = radii[i] + radii[j];
+            let distance = (a.position() - b.position()).norm();
+            deepest = deepest.max((contact - distance) / contact);
+        }
+        for axis in 0..2 {
+            let p = a.position()[axis];
+            let room = (p - walls.lo()[axis]).min(walls.hi()[axis] - p);
+            deepest = deepest.max((radii[i] - room) / radii[i]);
+        }
+    }
+    deepest
+}
+
+/// The state at several times along a run (each a run of its own to that `t_end`: the horizon
+/// only cuts, so they are points of one trajectory) overlaps nowhere beyond 1e-9.
+fn never_overlaps(balls: &[Ball], radii: &[f64], walls: Walls<2>, restitution: f64, t_end: f64) {
+    for k in 1..=8 {
+        let t = t_end * f64::from(k) / 8.0;
+        let run = run(balls, radii, walls, restitution, vec![1.0], t);
+        let deepest = deepest_overlap(&run, radii, &walls);
+        assert!(
+            deepest <= 1e-9,
+            "overlap {deepest:e} at t = {t} (restitution {restitution}, {} events)",
+            run.events.len()
+        );
+    }
+}
+
+#[test]
+fn a_resting_contact_with_friction_parts_and_ends_at_every_restitution() {
+    // Issue reproducers: a sliding ball pressing into a slower one (restitution 0 kept them
+    // colliding at one instant, or sinking 1.2 % into each other with one event).
+    let walls = Walls::new([-4.0, -4.0], [4.0, 4.0]).expect("a box");
+    let scenes = [
+        [
+            ball([0.0, 0.0], [1.0, 0.0], 1.0),
+            ball([0.5, 0.0], [0.0, 0.05], 1.0),
+        ],
+        [
+            ball([0.0, 0.0], [1.0, 0.1], 1.0),
+            ball([0.5, 0.0], [0.5, 0.0], 1.0),
+        ],
+    ];
+    for balls in &scenes {
+        for restitution in [0.0, 0.001, 0.01, 0.1, 0.5, 0.9, 1.0] {
+            let run = run(
+                balls,
+                &[0.125; 2],
+                walls,
+                restitution,
+                vec![1.0],
+                f64::INFINITY,
+            );
+            assert!(run.events.len() < 100_000, "{} events", run.events.len());
+            assert!(run.balls.iter().all(|b| b.is_at_rest()));
+            never_overlaps(balls, &[0.125; 2], walls, restitution, run.end);
+        }
+    }
+}
+
+#[test]
+fn random_friction_scenes_never_overlap_at_any_restitution() {
+    let walls = Walls::new([0.0, 0.0], [3.0, 3.0]).expect("a box");
+    for seed in 1..=12u64 {
+        let mut rng = Rng(seed);
+        let n = 6;
+        let radius = 0.2;
+        // Balls on a grid, apart, with random velocities; some with no friction.
+        let balls: Vec<Ball> = (0..n)
+            .map(|k| {
+                let p = [0.5 + (k % 3) as f64, 0.75 + (k / 3) as f64 * 1.5];
+                let v = [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)];
+                ball(p, v, [0.0, 0.3, 1.0, 5.0][rng.below(4) as usize])
+            })
+            .collect();
+        for restitution in [0.0, 0.01, 0.5, 1.0] {
+            never_overlaps(&balls, &vec![radius; n], walls, restitution, 6.0);
+        }
+    }
+}
+
+#[test]
+fn touching_chains_against_a_wall_resolve_at_every_restitution() {
+    // k touching balls in a row, the first pushed into the others, the last touching the
+    // wall (eight of them with restitution 0.5 stayed at t = 0 for 10⁵ events).
+    for k in 2..=10usize {
+        for restitution in [0.0, 0.25, 0.5, 0.9, 1.0] {
+            for friction in [0.0, 0.1, 2.0] {
+                let r = 0.5;
+                let hi = 2.0 * r * k as f64;
+                let walls = Walls::new([-10.0, -1.0], [hi, 1.0]).expect("a box");
+                let balls: Vec<Ball> = (0..k)
+                    .map(|m| {
+                        let v = if m == 0 { [1.0, 0.0] } else { [0.0, 0.0] };
+                        ball([r + 2.0 * r * m as f64, 0.0], v, friction)
+                    })
+                    .collect();
+                let run = run(&balls, &vec![r; k], walls, restitution, vec![1.0], 30.0);
+                let instant = MAX_EVENTS_AT_ONE_INSTANT.0 + MAX_EVENTS_AT_ONE_INSTANT.1 * k;
+                assert!(
+                    run.events.len() < 100 * instant,
+                    "{} events",
+                    run.events.len()
+                );
+                let deepest = deepest_overlap(&run, &vec![r; k], &walls);
+                assert!(
+                    deepest <= 1e-9,
+                    "k {k}, e {restitution}: overlap {deepest:e}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn masses_over_the_whole_float_range_give_finite_states_that_move_on() {
+    let walls = Walls::new([-4.0, -4.0], [4.0, 4.0]).expect("a box");
+    let masses = [
+        5e-324,
+        1e-308,
+        1e-300,
+        1e-10,
+        1.0,
+        1e10,
+        1e300,
+        1e308,
+        f64::MAX,
+    ];
+    for &ma in &masses {
+        for &mb in &masses {
+            let balls = [
+                ball([0.0, 0.0], [1.0, 0.1], 0.5),
+                ball([0.5, 0.05], [0.0, 0.0], 0.5),
+            ];
+            let run = run(&balls, &[0.125; 2], walls, 0.5, vec![ma, mb], f64::INFINITY);
+            assert!(!run.events.is_empty(), "masses {ma:e} {mb:e}");
+            assert!(
+                run.events.len() < 10_000,
+                "masses {ma:e} {mb:e}: {}",
+                run.events.len()
+            );
+            for b in &run.balls {
+                assert!(
+                    b.position()
+                        .iter()
+                        .chain(b.velocity().iter())
+                        .all(|x| x.is_finite())
+                );
+            }
+            // The heavier ball's velocity changes by the lighter's share at most.
+            let first = run.events[0];
+            assert_eq!((first.i, first.j), (0, Some(1)));
+        }
+    }
+}
+
+#[test]
+fn balls_as_wide_as_the_box_or_wider_are_refused_naming_the_radius() {
+    for (width, radius) in [(1.0, 0.5), (1.0, 0.6), (1.0, 0.5 - 1e-12), (2.0, 1.0)] {
+        let walls = Walls::new([0.0, 0.0], [width, 2.0]).expect("a box");
+        let balls = [
+            ball([width / 2.0, 1.9], [0.0, 0.0], 0.0),
+            ball([width / 2.0, 1.0], [1.0, 0.3], 0.0),
+        ];
+        let options = SimulationOptions {
+            t_end: 1.0,
+            ..Default::default()
+        };
+        let err = simulate(&balls, &[0.01, radius], walls, &options).expect_err("too wide");
+        assert_eq!((err.argument(), err.index()), ("radius", Some(1)), "{err}");
+        assert!(
+            matches!(err.kind(), InputErrorKind::WiderThanBox { axis: 0, .. }),
+            "{err}"
+        );
+    }
+}
+
+#[test]
+fn impossible_starts_are_refused_naming_the_balls() {
+    let unit = Walls::new([0.0, 0.0], [1.0, 1.0]).expect("a box");
+    let options = SimulationOptions {
+        t_end: 1.0,
+        ..Default::default()
+    };
+    // Two touching balls each overlapping a wall (200,000 events at t = 1.2e-16 before).
+    let balls = [
+        ball([0.2, 0.5], [1.0, 0.0], 0.1),
+        ball([0.8, 0.5], [0.0, 0.0], 0.1),
+    ];
+    let err = simulate(&balls, &[0.3, 0.3], unit, &options).expect_err("overlaps a wall");
+    assert_eq!((err.argument(), err.index()), ("pos", Some(0)));
+    assert!(
+        matches!(err.kind(), InputErrorKind::OutsideBox { axis: 0 }),
+        "{err}"
+    );
+    // Wholly outside.
+    let balls = [
+        ball([0.5, 0.5], [0.0, 0.0], 0.0),
+        ball([5.0, 0.5], [0.0, 0.0], 0.0),
+    ];
+    let err = simulate(&balls, &[0.1, 0.1], unit, &options).expect_err("outside");
+    assert_eq!((err.argument(), err.index()), ("pos", Some(1)));
+    // Overlapping balls: the lowest pair is named, whatever their order along x.
+    let balls = [
+        ball([0.7, 0.5], [0.0, 0.0], 0.0),
+        ball([0.2, 0.2], [0.0, 0.0], 0.0),
+        ball([0.55, 0.5], [0.0, 0.0], 0.0),
+        ball([0.3, 0.3], [0.0, 0.0], 0.0),
+    ];
+    let err = simulate(&balls, &[0.1; 4], unit, &options).expect_err("overlap");
+    assert_eq!((err.argument(), err.index()), ("pos", Some(2)));
+    assert!(
+        matches!(err.kind(), InputErrorKind::Overlap { other: 0, .. }),
+        "{err}"
+    );
+    assert!(
+        err.to_string()
+            .starts_with("pos[2]: the ball overlaps ball 0"),
+        "{err}"
+    );
+    // Touching (a rack: distances rounded) is fine.
+    let s = 3f64.sqrt();
+    let r = 0.05;
+    let balls = [
+        ball([0.5, 0.5], [0.0, 0.0], 0.0),
+        ball([0.5 + r * s, 0.5 + r], [0.0, 0.0], 0.0),
+        ball([0.5 + r * s, 0.5 - r], [0.0, 0.0], 0.0),
+        ball([0.5 - 2.0 * r, 0.5], [1.0, 0.0], 0.0),
+    ];
+    simulate(&balls, &[r; 4], unit, &options).expect("touching is fine");
+}
+
+#[test]
+fn an_observer_stops_a_run_and_sees_every_event() {
+    let walls = Walls::new([0.0, 0.0], [1.0, 1.0]).expect("a box");
+    let balls = [
+        ball([0.5, 0.5], [1.0, 0.37], 0.0),
+        ball([0.2, 0.2], [-0.3, 1.0], 0.0),
+    ];
+    let options = SimulationOptions {
+        t_end: 1e6,
+        ..Default::default()
+    };
+    let mut seen = Vec::new();
+    let run = simulate_observed(&balls, &[0.1; 2], walls, &options, |p| {
+        seen.push(p);
+        if p.events == 500 {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    })
+    .expect("valid");
+    assert!(run.stopped);
+    assert_eq!(run.events.len(), 500);
+    assert_eq!(seen.len(), 500);
+    assert!(seen.iter().zip(&run.events).all(|(p, e)| p.time == e.time));
+    assert_eq!(run.end, run.events[499].time);
+    // Without the break: the same first 500 events.
+    let full = simulate(
+        &balls,
+        &[0.1; 2],
+        walls,
+        &SimulationOptions {
+            max_events: Some(500),
+            ..options
+        },
+    )
+    .expect("valid");
+    assert_eq!(full.events, run.events);
+    assert!(!full.stopped);
+}
