@@ -13,6 +13,11 @@ use std::ops::ControlFlow;
 #[path = "support/rng.rs"]
 mod rng;
 use rng::Rng;
+#[path = "support/simulation_invariants.rs"]
+mod simulation_invariants;
+use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
+use simulation_invariants::{SimulationCase, simulation};
 
 fn ball(p: [f64; 2], v: [f64; 2], friction: f64) -> Ball {
     Ball::new(Vector2::from(p), Vector2::from(v), friction).expect("a valid ball")
@@ -312,4 +317,67 @@ fn an_observer_stops_a_run_and_sees_every_event() {
     .expect("valid");
     assert_eq!(full.events, run.events);
     assert!(!full.stopped);
+}
+
+/// A random simulation: 1 to 8 balls anywhere in a box (overlapping starts included), speeds
+/// and frictions of every size, restitution 0 to 1, one mass or one each, at a power-of-two
+/// scale.
+fn simulation_cases() -> impl Strategy<Value = SimulationCase> {
+    let ball = (
+        0.0f64..1.0,
+        0.0f64..1.0,
+        -3.0f64..3.0,
+        -3.0f64..3.0,
+        4u8..=64,
+    );
+    let friction = prop_oneof![Just(0.0), 0.01f64..5.0, 1e-9f64..1e-6];
+    (
+        prop::collection::vec((ball, friction), 1..=8),
+        -60i32..=60,
+        prop_oneof![Just(0.0), Just(1.0), 0.0f64..=1.0],
+        prop_oneof![Just(vec![1.0]), prop::collection::vec(1e-3f64..1e3, 8)],
+        0.25f64..16.0,
+    )
+        .prop_map(|(balls, k, restitution, mass, t_end)| {
+            let s = 2f64.powi(k);
+            let side = 2.0 * s;
+            let radii: Vec<f64> = balls.iter().map(|b| f64::from(b.0.4) / 256.0 * s).collect();
+            let mass = if mass.len() == 1 {
+                mass
+            } else {
+                mass[..balls.len()].to_vec()
+            };
+            let balls = balls
+                .iter()
+                .zip(&radii)
+                .map(|(((x, y, vx, vy, _), f), &r)| {
+                    let at = |u: f64| r + (side - 2.0 * r) * u;
+                    [at(*x), at(*y), vx * s, vy * s, f * s]
+                })
+                .collect();
+            SimulationCase {
+                balls,
+                radii,
+                lo: [0.0; 2],
+                hi: [side; 2],
+                mass,
+                restitution,
+                t_end,
+            }
+        })
+}
+
+proptest! {
+    // Cases: PROPTEST_CASES, else proptest's default.
+    #![proptest_config(ProptestConfig {
+        rng_seed: RngSeed::Fixed(0x51A1_0001),
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn random_simulations_keep_every_invariant(case in simulation_cases()) {
+        if let Err(e) = simulation(&case) {
+            panic!("{e}");
+        }
+    }
 }

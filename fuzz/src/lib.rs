@@ -17,6 +17,8 @@ pub mod invariants;
 pub mod path_invariants;
 #[path = "../../tests/support/path_table.rs"]
 mod path_table;
+#[path = "../../tests/support/simulation_invariants.rs"]
+pub mod simulation_invariants;
 
 use invariants::{BallInput, PairCase, SceneCase, Shared};
 use path_invariants::{PathCase, SegmentInput};
@@ -395,4 +397,51 @@ pub fn path_case(u: &mut Unstructured) -> Result<(PathCase, i32)> {
         three_d,
     };
     Ok((case, u.int_in_range(-1100..=1100)?))
+}
+
+/// A simulation: 1 to 8 balls of radius `2^s·(1/64 … 1/4)` in a box `2^s·[0, 2]²`, each
+/// anywhere in it (overlapping starts are common: refused, and checked to be so), at velocities
+/// and frictions over the whole float range sometimes; one mass or one each (any positive
+/// float); a restitution of 0, 1 or between; an end time from 1/256 to 64.
+pub fn simulation_case(u: &mut Unstructured) -> Result<simulation_invariants::SimulationCase> {
+    let s = if u.arbitrary::<bool>()? {
+        0
+    } else {
+        u.int_in_range(-500..=500)?
+    };
+    let n = u.int_in_range(1..=8)?;
+    let side = scale(2.0, s);
+    let mut balls = Vec::with_capacity(n);
+    let mut radii = Vec::with_capacity(n);
+    for _ in 0..n {
+        let r = scale(f64::from(u.int_in_range(4..=64u8)?) / 256.0, s);
+        let at = |u: &mut Unstructured| -> Result<f64> {
+            Ok(r + (side - 2.0 * r) * f64::from(u.arbitrary::<u16>()?) / 65535.0)
+        };
+        let (x, y) = (at(u)?, at(u)?);
+        balls.push([x, y, length(u, s)?, length(u, s)?, friction(u, s)?]);
+        radii.push(r);
+    }
+    let mass = if u.arbitrary::<bool>()? {
+        vec![1.0]
+    } else {
+        (0..n)
+            .map(|_| Ok(wide(u)?.abs().max(f64::from_bits(1))))
+            .collect::<Result<_>>()?
+    };
+    let restitution = match u.arbitrary::<u8>()? % 4 {
+        0 => 0.0,
+        1 => 1.0,
+        _ => f64::from(u.arbitrary::<u8>()?) / 255.0,
+    };
+    let t_end = f64::from(u.int_in_range(1..=16384u16)?) / 256.0;
+    Ok(simulation_invariants::SimulationCase {
+        balls,
+        radii,
+        lo: [0.0; 2],
+        hi: [side; 2],
+        mass,
+        restitution,
+        t_end,
+    })
 }

@@ -1,0 +1,16 @@
+//! `simulate` on 1 to 8 balls in a box: valid starts run or are refused as impossible (and
+//! are so), runs end, events in order, no overlap beyond 1e-9 at the end or at cut times, a
+//! cut run logs the events before its cut (tests/support/simulation_invariants.rs).
+#![no_main]
+
+use arbitrary::Unstructured;
+use ballcollide_fuzz::{simulation_case, simulation_invariants};
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| {
+    if let Ok(case) = simulation_case(&mut Unstructured::new(data))
+        && let Err(e) = simulation_invariants::simulation(&case)
+    {
+        panic!("{e}");
+    }
+});

@@ -1,0 +1,162 @@
+//! The invariants of `simulate`, checked by the fuzz target `simulate` (`fuzz/`) and by the
+//! property tests (`tests/simulation_progress.rs`): one implementation for both.
+//!
+//! - a valid start either runs or is refused as a start no motion comes from (a ball
+//!   overlapping another or a wall, outside the box, as wide as the box), and then the named
+//!   ball really is so; nothing else is an error (never "no progress");
+//! - the run ends (within its `max_events`), its events in time order, within `[0, t_end]`;
+//! - no two balls overlap, and no ball overlaps a wall, beyond `1e-9` of their contact
+//!   distance (or radius), at the end nor at the end of the same run cut at earlier times
+//!   (a horizon only cuts: those are states of one trajectory);
+//! - a run cut at `t_end / 2` logs exactly the events of the whole run before `t_end / 2`.
+
+#![allow(dead_code)]
+
+use ballcollide::schedule::{Simulation, SimulationOptions, Walls, simulate};
+use ballcollide::{Ball, InputErrorKind};
+use nalgebra::Vector2;
+
+/// A simulation's input: balls `(x, y, vx, vy, friction)`, radii, the box, masses (one, or
+/// one per ball), restitution and end time.
+#[derive(Clone, Debug)]
+pub struct SimulationCase {
+    pub balls: Vec<[f64; 5]>,
+    pub radii: Vec<f64>,
+    pub lo: [f64; 2],
+    pub hi: [f64; 2],
+    pub mass: Vec<f64>,
+    pub restitution: f64,
+    pub t_end: f64,
+}
+
+/// The most events a checked run may take.
+pub const MAX_EVENTS: usize = 20_000;
+
+/// How deep an overlap may be at any state, relative to the contact distance.
+pub const OVERLAP: f64 = 1e-9;
+
+fn run(
+    case: &SimulationCase,
+    balls: &[Ball],
+    walls: Walls<2>,
+    t_end: f64,
+) -> Result<Simulation, String> {
+    let options = SimulationOptions {
+        mass: case.mass.clone(),
+        restitution: case.restitution,
+        t_end,
+        max_events: Some(MAX_EVENTS),
+    };
+    simulate(balls, &case.radii, walls, &options).map_err(|e| format!("{e}"))
+}
+
+/// The deepest overlap in a state, relative (two balls: their contact distance; a ball and a
+/// wall: its radius), and where.
+fn deepest_overlap(state: &[Ball], radii: &[f64], walls: &Walls<2>) -> (f64, String) {
+    let mut deepest = (0.0f64, String::new());
+    for (i, a) in state.iter().enumerate() {
+        for (j, b) in state.iter().enumerate().skip(i + 1) {
+            let contact = radii[i] + radii[j];
+            let depth = (contact - (a.position() - b.position()).norm()) / contact;
+            if depth > deepest.0 {
+                deepest = (depth, format!("balls {i} and {j}"));
+            }
+        }
+        for axis in 0..2 {
+            let p = a.position()[axis];
+            let room = (p - walls.lo()[axis]).min(walls.hi()[axis] - p);
+            let depth = (radii[i] - room) / radii[i];
+            if depth > deepest.0 {
+                deepest = (depth, format!("ball {i} and a wall on axis {axis}"));
+            }
+        }
+    }
+    deepest
+}
+
+/// Checks every invariant of the module documentation on `case`; `Ok` also when the case is
+/// not a valid input at all (a bad number, a bad box).
+pub fn simulation(case: &SimulationCase) -> Result<(), String> {
+    let Ok(balls) = case
+        .balls
+        .iter()
+        .map(|b| Ball::new(Vector2::new(b[0], b[1]), Vector2::new(b[2], b[3]), b[4]))
+        .collect::<Result<Vec<_>, _>>()
+    else {
+        return Ok(());
+    };
+    let Ok(walls) = Walls::new(case.lo, case.hi) else {
+        return Ok(());
+    };
+    let options = SimulationOptions {
+        mass: case.mass.clone(),
+        restitution: case.restitution,
+        t_end: case.t_end,
+        max_events: Some(MAX_EVENTS),
+    };
+    let full = match simulate(&balls, &case.radii, walls, &options) {
+        Ok(run) => run,
+        Err(e) => {
+            return match e.kind() {
+                // Refused starts: the named ball must be so (loosely: beyond half the
+                // tolerance the start check uses).
+                InputErrorKind::Overlap { other, .. } => {
+                    let i = e.index().ok_or("an overlap without an index")?;
+                    let contact = case.radii[i] + case.radii[other];
+                    let d = (balls[i].position() - balls[other].position()).norm();
+                    if d < contact {
+                        Ok(())
+                    } else {
+                        Err(format!(
+                            "{e}, but they are {d:e} apart ({contact:e}): {case:?}"
+                        ))
+                    }
+                }
+                InputErrorKind::OutsideBox { .. } | InputErrorKind::WiderThanBox { .. } => Ok(()),
+                // Bad numbers the decoder may make (a radius ≤ 0, a mass ≤ 0, restitution
+                // outside [0, 1], no end).
+                InputErrorKind::NotFinite(_)
+                | InputErrorKind::NonPositiveRadius(_)
+                | InputErrorKind::NonPositiveMass(_)
+                | InputErrorKind::NotInUnitInterval(_)
+                | InputErrorKind::InvalidHorizon(_)
+                | InputErrorKind::LengthMismatch { .. }
+                | InputErrorKind::Endless => Ok(()),
+                _ => Err(format!("a valid start failed: {e}: {case:?}")),
+            };
+        }
+    };
+    if full.events.len() > MAX_EVENTS {
+        return Err(format!("{} events: {case:?}", full.events.len()));
+    }
+    let mut previous = 0.0;
+    for e in &full.events {
+        if !(e.time >= previous && e.time <= case.t_end) {
+            return Err(format!("event at {} after {previous}: {case:?}", e.time));
+        }
+        previous = e.time;
+    }
+    let (depth, where_) = deepest_overlap(&full.balls, &case.radii, &walls);
+    if depth > OVERLAP {
+        return Err(format!(
+            "{where_} overlap by {depth:e} at the end {}: {case:?}",
+            full.end
+        ));
+    }
+    if full.events.len() < MAX_EVENTS && case.t_end.is_finite() {
+        for cut in [0.5, 0.25, 0.75] {
+            let t = case.t_end * cut;
+            let part = run(case, &balls, walls, t)?;
+            let (depth, where_) = deepest_overlap(&part.balls, &case.radii, &walls);
+            if depth > OVERLAP {
+                return Err(format!("{where_} overlap by {depth:e} at {t}: {case:?}"));
+            }
+            let before: Vec<_> = full.events.iter().filter(|e| e.time < t).copied().collect();
+            let logged: Vec<_> = part.events.iter().filter(|e| e.time < t).copied().collect();
+            if before != logged {
+                return Err(format!("the run cut at {t} logs other events: {case:?}"));
+            }
+        }
+    }
+    Ok(())
+}
