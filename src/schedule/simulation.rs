@@ -214,8 +214,14 @@ fn collide(
     if approach >= 0.0 {
         return (a.1, b.1);
     }
-    let j = -(1.0 + e) * approach / (1.0 / ma + 1.0 / mb);
-    (a.1 + n * (j / ma), b.1 - n * (j / mb))
+    // Each ball's share of the change of relative velocity, m_b/(m_a + m_b) and
+    // m_a/(m_a + m_b) (the impulse over each mass), from the mass ratio: in [0, 1] for any
+    // masses from 5e-324 to f64::MAX, where 1/m and m_a + m_b overflow; ½ exactly for equal
+    // masses.
+    let share_a = 1.0 / (1.0 + ma / mb);
+    let share_b = 1.0 / (1.0 + mb / ma);
+    let change = -(1.0 + e) * approach;
+    (a.1 + n * (change * share_a), b.1 - n * (change * share_b))
 }
 
 /// The masses: one for all, or one per ball; each finite and `> 0`.
