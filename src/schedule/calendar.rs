@@ -8,7 +8,7 @@ use super::reach::{Reach, reach};
 use super::walls::{Side, Walls, first_wall_contact};
 use crate::collision::path_bounds::PathBounds;
 use crate::collision::path_contact::{first_bounded_contact_one, first_path_contact};
-use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
+use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon, finite};
 use crate::motion::Ball;
 use crate::path::{Path, Segment};
 
@@ -280,7 +280,7 @@ impl<const D: usize> CollisionSchedule<D> {
             return Err(InputError::new("paths", kind));
         }
         for (i, &r) in radii.iter().enumerate() {
-            check_radius("radius", r).map_err(|e| e.at(i))?;
+            check_ball_radius("radius", r).map_err(|e| e.at(i))?;
         }
         let t_max = check_horizon("t_max", options.t_max)?;
         let time = paths
