@@ -10,7 +10,7 @@ use numpy::{PyArray1, PyArray2};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
-use pyo3::types::{IntoPyDict, PyInt, PyList, PyTuple};
+use pyo3::types::{IntoPyDict, PyFloat, PyInt, PyList, PyTuple};
 
 use super::index_i64;
 use super::input_error::{from_core, input_error};
@@ -504,12 +504,17 @@ impl CollisionSchedule {
         }
     }
 
-    fn __repr__(&self) -> String {
+    /// ``CollisionSchedule(N balls in D-D, time=t)``, ``t`` as Python prints a float
+    /// (``time=-1e+300``, not its 301 digits).
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
         let (n, time, dim) = match &self.inner {
             Inner::Two(s) => (s.len(), s.time(), 2),
             Inner::Three(s) => (s.len(), s.time(), 3),
         };
-        format!("CollisionSchedule({n} balls in {dim}-D, time={time})")
+        let time = PyFloat::new(py, time).repr()?;
+        Ok(format!(
+            "CollisionSchedule({n} balls in {dim}-D, time={time})"
+        ))
     }
 }
 
