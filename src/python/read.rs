@@ -339,11 +339,19 @@ pub(super) fn point(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 2]> {
         (_, Ok(l)) if l.len() == 2 => Some((l.get_item(0)?, l.get_item(1)?)),
         _ => None,
     };
-    if let Some((x, y)) = pair
-        && plain(&x)
-        && plain(&y)
-    {
-        return Ok([number(name, &x)?, number(name, &y)?]);
+    if let Some((x, y)) = pair {
+        if plain(&x) && plain(&y) {
+            return Ok([number(name, &x)?, number(name, &y)?]);
+        }
+        // numpy would read `[True, 0]` as the ints `[1, 0]`.
+        let flag = |item: &Bound<'_, PyAny>| {
+            item.is_instance_of::<PyBool>() || is_numpy_type(item, NpyTypes::PyBoolArrType_Type)
+        };
+        if flag(&x) || flag(&y) {
+            return Err(PyTypeError::new_err(format!(
+                "{name}: expected real numbers, got bool"
+            )));
+        }
     }
     let real = real_array(name, obj)?;
     if real.array.shape() != [2] {
@@ -402,18 +410,7 @@ pub(super) fn threads(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Threads> {
     let Some(obj) = obj.filter(|o| !o.is_none()) else {
         return Ok(Threads::All);
     };
-    let py = obj.py();
-    let not_int = |what: &str| {
-        PyTypeError::new_err(format!("num_threads: expected None or an int, got {what}"))
-    };
-    if obj.is_instance_of::<PyBool>() || is_numpy_type(obj, NpyTypes::PyBoolArrType_Type) {
-        return Err(not_int("bool"));
-    }
-    // SAFETY: a live object; `PyNumber_Index` returns a new reference or NULL with an
-    // exception set.
-    let index =
-        unsafe { Bound::from_owned_ptr_or_err(py, pyo3::ffi::PyNumber_Index(obj.as_ptr())) }
-            .map_err(|_| not_int(&type_name(obj)))?;
+    let index = int("num_threads", obj, "None or an int")?;
     let n = match index.extract::<i64>() {
         Ok(n) => n,
         // Beyond 64 bits: as many threads as there are cores if positive.
@@ -422,10 +419,84 @@ pub(super) fn threads(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Threads> {
     };
     if n < 1 {
         let reason = format!("must be None (all cores) or ≥ 1, got {index}");
-        return Err(input_error(py, "num_threads", None, &reason));
+        return Err(input_error(obj.py(), "num_threads", None, &reason));
     }
     let n = usize::try_from(n).unwrap_or(usize::MAX).min(cores());
     Ok(NonZeroUsize::new(n).map_or(Threads::All, Threads::AtMost))
+}
+
+/// A count such as `max_events`: `None` → none; an int `n ≥ 0` → `n` (one beyond `usize`, more
+/// than could ever be counted, as `usize::MAX`).
+pub(super) fn count(name: &str, obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
+    let Some(obj) = obj.filter(|o| !o.is_none()) else {
+        return Ok(None);
+    };
+    let index = int(name, obj, "None or an int")?;
+    if index.lt(0)? {
+        let reason = format!("must be None or ≥ 0, got {index}");
+        return Err(input_error(obj.py(), name, None, &reason));
+    }
+    Ok(Some(index.extract::<usize>().unwrap_or(usize::MAX)))
+}
+
+/// Ball indices, each in `0..n`: an int, or a sequence of ints (a list, a tuple, a 1-D integer
+/// array). An index out of range (negative, or of any size) is an
+/// [`InputError`](super::input_error::InputError) at its position, `indices[m]`; what is not an
+/// int (a bool, a float, a string) a `TypeError` naming it.
+pub(super) fn indices(name: &str, obj: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<usize>> {
+    let py = obj.py();
+    let one = |m: Option<usize>, item: &Bound<'_, PyAny>| -> PyResult<usize> {
+        let index = match m {
+            Some(m) => int(&format!("{name}[{m}]"), item, "an int (a ball index)")?,
+            None => int(name, item, "an int or a sequence of ints (ball indices)")?,
+        };
+        match index.extract::<usize>() {
+            Ok(i) if i < n => Ok(i),
+            _ => {
+                let reason = format!("ball index must be in 0..{n}, got {index}");
+                Err(input_error(py, name, m, &reason))
+            }
+        }
+    };
+    let sequence = obj.is_instance_of::<PyList>()
+        || obj.is_instance_of::<PyTuple>()
+        || obj.cast::<PyUntypedArray>().is_ok_and(|a| a.ndim() != 0);
+    if !sequence {
+        return one(None, obj).map(|i| vec![i]);
+    }
+    if let Ok(array) = obj.cast::<PyUntypedArray>() {
+        let dtype = array.dtype();
+        if !matches!(dtype.kind(), b'i' | b'u') {
+            return Err(PyTypeError::new_err(format!(
+                "{name}: expected ints (ball indices), got an array of dtype {dtype}"
+            )));
+        }
+        if array.ndim() != 1 {
+            let shape = shape_text(array.shape());
+            let reason = format!("expected an int or shape (M,), got shape {shape}");
+            return Err(input_error(py, name, None, &reason));
+        }
+    }
+    obj.try_iter()?
+        .enumerate()
+        .map(|(m, item)| one(Some(m), &item?))
+        .collect()
+}
+
+/// An int argument (a Python int, or anything with `__index__`: a numpy integer), as a Python
+/// int; a bool (Python's or numpy's), a float or anything else is a `TypeError` naming it,
+/// saying it `expected` that.
+fn int<'py>(name: &str, obj: &Bound<'py, PyAny>, expected: &str) -> PyResult<Bound<'py, PyAny>> {
+    let py = obj.py();
+    let not_int =
+        |what: &str| PyTypeError::new_err(format!("{name}: expected {expected}, got {what}"));
+    if obj.is_instance_of::<PyBool>() || is_numpy_type(obj, NpyTypes::PyBoolArrType_Type) {
+        return Err(not_int("bool"));
+    }
+    // SAFETY: a live object; `PyNumber_Index` returns a new reference or NULL with an
+    // exception set.
+    unsafe { Bound::from_owned_ptr_or_err(py, pyo3::ffi::PyNumber_Index(obj.as_ptr())) }
+        .map_err(|_| not_int(&type_name(obj)))
 }
 
 /// The cores this process may use, read once: `available_parallelism` reads the cgroup quota
