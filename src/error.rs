@@ -12,7 +12,9 @@ pub enum InputErrorKind {
     NegativeFriction(f64),
     /// A collision radius (sum of the balls' radii) that is zero or negative.
     NonPositiveRadius(f64),
-    /// A horizon `t_max` that is negative or NaN.
+    /// One ball's radius (in a scene or a calendar) that is zero or negative.
+    NonPositiveBallRadius(f64),
+    /// A horizon (`t_max`) or end time (`t_end`) that is negative or NaN.
     InvalidHorizon(f64),
     /// An array whose length differs from the others'.
     LengthMismatch {
@@ -246,9 +248,11 @@ impl fmt::Display for InputErrorKind {
                     Brief(x)
                 )
             }
-            Self::InvalidHorizon(x) => {
-                write!(f, "t_max must be ≥ 0 (∞ for no horizon), got {}", Brief(x))
+            Self::NonPositiveBallRadius(x) => {
+                write!(f, "a ball's radius must be > 0, got {}", Brief(x))
             }
+            // The argument (`t_max`, `t_end`) is named by the error, not here.
+            Self::InvalidHorizon(x) => write!(f, "must be ≥ 0 (∞ for none), got {}", Brief(x)),
             Self::LengthMismatch { expected, found } => {
                 write!(f, "has {found} rows, expected {expected}")
             }
@@ -389,7 +393,20 @@ pub(crate) fn check_radius(argument: &'static str, radius: f64) -> Result<f64, I
     }
 }
 
-/// Checks a horizon: ≥ 0, +∞ allowed.
+/// Checks one ball's radius (a scene's, a calendar's): finite and > 0.
+pub(crate) fn check_ball_radius(argument: &'static str, radius: f64) -> Result<f64, InputError> {
+    finite(argument, radius)?;
+    if radius > 0.0 {
+        Ok(radius)
+    } else {
+        Err(InputError::new(
+            argument,
+            InputErrorKind::NonPositiveBallRadius(radius),
+        ))
+    }
+}
+
+/// Checks a horizon (or an end time): ≥ 0, +∞ allowed.
 pub(crate) fn check_horizon(argument: &'static str, t_max: f64) -> Result<f64, InputError> {
     if t_max >= 0.0 {
         Ok(t_max)

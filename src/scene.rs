@@ -29,7 +29,7 @@
 //! - Ties are broken by the lowest `i`, then the lowest `j` ([`earliest_collision`]), and by
 //!   the lowest partner index ([`first_contacts`]).
 //! - Bad input is an [`InputError`] naming the argument and the first offending index, e.g.
-//!   ``radius[3]: radius (sum of the two radii) must be > 0, got -1``.
+//!   ``radius[3]: a ball's radius must be > 0, got -1``.
 //!
 //! ```
 //! use ballcollide::Ball;
@@ -60,7 +60,7 @@ use rayon::prelude::*;
 
 use crate::batch::{PerPair, Threads};
 use crate::collision::first_contact_screened;
-use crate::error::{InputError, InputErrorKind, check_horizon, check_radius};
+use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon};
 use crate::motion::Ball;
 use broad_phase::Sweep;
 
@@ -178,7 +178,7 @@ pub fn balls(
 /// assert_eq!(times, [f64::INFINITY, 0.5, 0.5, f64::INFINITY]);
 ///
 /// let err = pairwise_collision_times(&balls, &[0.2, -0.3], &SceneOptions::default());
-/// assert_eq!(err.unwrap_err().to_string(), "radius[1]: radius (sum of the two radii) must be > 0, got -0.3");
+/// assert_eq!(err.unwrap_err().to_string(), "radius[1]: a ball's radius must be > 0, got -0.3");
 /// # Ok::<(), ballcollide::InputError>(())
 /// ```
 pub fn pairwise_collision_times(
@@ -397,7 +397,7 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
 fn check(balls: &[Ball], radii: &[f64], t_max: f64) -> Result<(), InputError> {
     check_len("radius", radii.len(), balls.len())?;
     for (i, &r) in radii.iter().enumerate() {
-        check_radius("radius", r).map_err(|e| e.at(i))?;
+        check_ball_radius("radius", r).map_err(|e| e.at(i))?;
     }
     check_horizon("t_max", t_max)?;
     Ok(())

@@ -1436,11 +1436,11 @@ fn bad_radii_and_horizons_are_named_in_the_message() {
     );
     assert_eq!(
         horizon_error(f64::NAN).to_string(),
-        "t_max: t_max must be ≥ 0 (∞ for no horizon), got NaN"
+        "t_max: must be ≥ 0 (∞ for none), got NaN"
     );
     assert_eq!(
         horizon_error(-1.0).to_string(),
-        "t_max: t_max must be ≥ 0 (∞ for no horizon), got -1"
+        "t_max: must be ≥ 0 (∞ for none), got -1"
     );
 }
 
@@ -1648,8 +1648,8 @@ proptest! {
             (0.0, "radius: radius (sum of the two radii) must be > 0, got 0"),
             (-0.0, "radius: radius (sum of the two radii) must be > 0, got -0"),
             (f64::NAN, "radius: must be finite, got NaN"),
-            (f64::NAN, "t_max: t_max must be ≥ 0 (∞ for no horizon), got NaN"),
-            (-2.0, "t_max: t_max must be ≥ 0 (∞ for no horizon), got -2"),
+            (f64::NAN, "t_max: must be ≥ 0 (∞ for none), got NaN"),
+            (-2.0, "t_max: must be ≥ 0 (∞ for none), got -2"),
         ][which];
         if which < 3 {
             batch.radius[i] = bad;

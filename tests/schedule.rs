@@ -534,7 +534,7 @@ fn refused_updates_name_the_argument_and_the_index() {
         .expect_err("radius");
     assert_eq!(
         err.to_string(),
-        "radius[0]: radius (sum of the two radii) must be > 0, got 0"
+        "radius[0]: a ball's radius must be > 0, got 0"
     );
 }
 

@@ -203,7 +203,7 @@ def simulate(
     *,
     box: _Box,
     mass: _PerPair = ...,
-    restitution: float = 1.0,
+    restitution: _Number = 1.0,
     t_end: _Number = ...,
     max_events: SupportsIndex | None = None,
 ) -> tuple[_F64Array, _I64Array, _I64Array, _F64Array, _F64Array]: ...

@@ -25,7 +25,8 @@ use pyo3::types::{PyBool, PyFloat, PyInt, PyList, PyTuple};
 use super::input_error::input_error;
 use crate::batch::{PerPair, Threads};
 
-/// float64 values in C order, read in place or converted.
+/// float64 values in C order, read in place or converted, and the memory they were read
+/// from.
 ///
 /// An array read in place is not entered in rust-numpy's borrow registry (which costs two
 /// locked hash-map updates and allocations per array, more than a call on a few pairs costs
@@ -34,8 +35,17 @@ use crate::batch::{PerPair, Threads};
 /// GIL breaks the documented contract (as it would for numpy's own functions). A call that
 /// releases the GIL first borrows every array read in place through the registry ([`track`]),
 /// so that a rust-numpy writer elsewhere (another call's `out=`) is refused meanwhile; and
-/// every call checks that its `out` overlaps no input ([`out`]).
-pub(super) enum Floats<'py> {
+/// every call checks that its `out` overlaps no input as the caller gave it ([`out`]), not
+/// only the converted copy.
+pub(super) struct Floats<'py> {
+    data: Data<'py>,
+    /// The array numpy read the values from (the caller's array, or one over the memory an
+    /// object handed to numpy shares), and the addresses it spans: what an `out=` must not
+    /// share memory with.
+    source: (Bound<'py, PyUntypedArray>, std::ops::Range<usize>),
+}
+
+enum Data<'py> {
     /// A C-contiguous, aligned, native float64 array.
     InPlace(Bound<'py, PyArray<f64, IxDyn>>),
     /// The values gathered or converted into memory of our own.
@@ -45,21 +55,21 @@ pub(super) enum Floats<'py> {
 impl<'py> Floats<'py> {
     /// The values, in C order.
     pub(super) fn values(&self) -> &[f64] {
-        match self {
+        match &self.data {
             // SAFETY: nothing writes into the array while the values are read (see the type's
             // documentation: the GIL is held, or the array is borrowed through the registry,
             // and no other thread modifies a call's inputs). `as_slice` succeeds: `InPlace`
             // holds only C-contiguous, aligned arrays.
-            Self::InPlace(a) => unsafe { a.as_slice() }.unwrap_or(&[]),
-            Self::Copied(v) => v,
+            Data::InPlace(a) => unsafe { a.as_slice() }.unwrap_or(&[]),
+            Data::Copied(v) => v,
         }
     }
 
     /// The array read in place, borrowed through rust-numpy's registry (see [`track`]).
     fn tracked(&self) -> PyResult<Option<PyReadonlyArray<'py, f64, IxDyn>>> {
-        match self {
-            Self::InPlace(a) => a.try_readonly().map(Some).map_err(|_| being_written()),
-            Self::Copied(_) => Ok(None),
+        match &self.data {
+            Data::InPlace(a) => a.try_readonly().map(Some).map_err(|_| being_written()),
+            Data::Copied(_) => Ok(None),
         }
     }
 
@@ -212,19 +222,44 @@ fn native_float64(dtype: &Bound<'_, PyArrayDescr>) -> bool {
 /// The float64 values of a real array, in C order.
 fn floats<'py>(real: &Real<'py>) -> PyResult<Floats<'py>> {
     let Real { array, dtype } = real;
+    let source = (array.clone(), extent(array, dtype));
     if native_float64(dtype) && array.is_c_contiguous() && array.is_aligned() {
         // SAFETY: an ndarray of native float64 (`native_float64`).
         let a = unsafe { array.cast_unchecked::<PyArray<f64, IxDyn>>() };
-        return Ok(Floats::InPlace(a.clone()));
+        let data = Data::InPlace(a.clone());
+        return Ok(Floats { data, source });
     }
     let converted: PyArrayLike<'py, f64, IxDyn, AllowTypeChange> = array.extract()?;
-    if converted.is_c_contiguous() && converted.is_aligned() {
+    let data = if converted.is_c_contiguous() && converted.is_aligned() {
         // A new array (or a view of a native float64 one): this call is its only reader.
-        return Ok(Floats::InPlace((**converted).clone()));
+        Data::InPlace((**converted).clone())
+    } else {
+        Data::Copied(converted.as_array().iter().copied().collect())
+    };
+    Ok(Floats { data, source })
+}
+
+/// The addresses `array`'s elements span, from its lowest byte to past its highest, whatever
+/// its strides (numpy's own bounds for `may_share_memory`); empty for an empty array.
+fn extent(
+    array: &Bound<'_, PyUntypedArray>,
+    dtype: &Bound<'_, PyArrayDescr>,
+) -> std::ops::Range<usize> {
+    // SAFETY: a live array's header; only its data pointer is read.
+    let start = unsafe { (*npyffi::_PyArray_GET_ITEM_DATA(array.as_array_ptr())).data } as usize;
+    let (mut lo, mut hi) = (start, start);
+    for (&len, &stride) in array.shape().iter().zip(array.strides()) {
+        let Some(last) = len.checked_sub(1) else {
+            return start..start;
+        };
+        let span = stride.unsigned_abs().saturating_mul(last);
+        if stride < 0 {
+            lo = lo.saturating_sub(span);
+        } else {
+            hi = hi.saturating_add(span);
+        }
     }
-    Ok(Floats::Copied(
-        converted.as_array().iter().copied().collect(),
-    ))
+    lo..hi.saturating_add(dtype.itemsize())
 }
 
 fn being_written() -> PyErr {
@@ -304,11 +339,19 @@ pub(super) fn point(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 2]> {
         (_, Ok(l)) if l.len() == 2 => Some((l.get_item(0)?, l.get_item(1)?)),
         _ => None,
     };
-    if let Some((x, y)) = pair
-        && plain(&x)
-        && plain(&y)
-    {
-        return Ok([number(name, &x)?, number(name, &y)?]);
+    if let Some((x, y)) = pair {
+        if plain(&x) && plain(&y) {
+            return Ok([number(name, &x)?, number(name, &y)?]);
+        }
+        // numpy would read `[True, 0]` as the ints `[1, 0]`.
+        let flag = |item: &Bound<'_, PyAny>| {
+            item.is_instance_of::<PyBool>() || is_numpy_type(item, NpyTypes::PyBoolArrType_Type)
+        };
+        if flag(&x) || flag(&y) {
+            return Err(PyTypeError::new_err(format!(
+                "{name}: expected real numbers, got bool"
+            )));
+        }
     }
     let real = real_array(name, obj)?;
     if real.array.shape() != [2] {
@@ -367,18 +410,7 @@ pub(super) fn threads(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Threads> {
     let Some(obj) = obj.filter(|o| !o.is_none()) else {
         return Ok(Threads::All);
     };
-    let py = obj.py();
-    let not_int = |what: &str| {
-        PyTypeError::new_err(format!("num_threads: expected None or an int, got {what}"))
-    };
-    if obj.is_instance_of::<PyBool>() || is_numpy_type(obj, NpyTypes::PyBoolArrType_Type) {
-        return Err(not_int("bool"));
-    }
-    // SAFETY: a live object; `PyNumber_Index` returns a new reference or NULL with an
-    // exception set.
-    let index =
-        unsafe { Bound::from_owned_ptr_or_err(py, pyo3::ffi::PyNumber_Index(obj.as_ptr())) }
-            .map_err(|_| not_int(&type_name(obj)))?;
+    let index = int("num_threads", obj, "None or an int")?;
     let n = match index.extract::<i64>() {
         Ok(n) => n,
         // Beyond 64 bits: as many threads as there are cores if positive.
@@ -387,10 +419,84 @@ pub(super) fn threads(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Threads> {
     };
     if n < 1 {
         let reason = format!("must be None (all cores) or ≥ 1, got {index}");
-        return Err(input_error(py, "num_threads", None, &reason));
+        return Err(input_error(obj.py(), "num_threads", None, &reason));
     }
     let n = usize::try_from(n).unwrap_or(usize::MAX).min(cores());
     Ok(NonZeroUsize::new(n).map_or(Threads::All, Threads::AtMost))
+}
+
+/// A count such as `max_events`: `None` → none; an int `n ≥ 0` → `n` (one beyond `usize`, more
+/// than could ever be counted, as `usize::MAX`).
+pub(super) fn count(name: &str, obj: Option<&Bound<'_, PyAny>>) -> PyResult<Option<usize>> {
+    let Some(obj) = obj.filter(|o| !o.is_none()) else {
+        return Ok(None);
+    };
+    let index = int(name, obj, "None or an int")?;
+    if index.lt(0)? {
+        let reason = format!("must be None or ≥ 0, got {index}");
+        return Err(input_error(obj.py(), name, None, &reason));
+    }
+    Ok(Some(index.extract::<usize>().unwrap_or(usize::MAX)))
+}
+
+/// Ball indices, each in `0..n`: an int, or a sequence of ints (a list, a tuple, a 1-D integer
+/// array). An index out of range (negative, or of any size) is an
+/// [`InputError`](super::input_error::InputError) at its position, `indices[m]`; what is not an
+/// int (a bool, a float, a string) a `TypeError` naming it.
+pub(super) fn indices(name: &str, obj: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<usize>> {
+    let py = obj.py();
+    let one = |m: Option<usize>, item: &Bound<'_, PyAny>| -> PyResult<usize> {
+        let index = match m {
+            Some(m) => int(&format!("{name}[{m}]"), item, "an int (a ball index)")?,
+            None => int(name, item, "an int or a sequence of ints (ball indices)")?,
+        };
+        match index.extract::<usize>() {
+            Ok(i) if i < n => Ok(i),
+            _ => {
+                let reason = format!("ball index must be in 0..{n}, got {index}");
+                Err(input_error(py, name, m, &reason))
+            }
+        }
+    };
+    let sequence = obj.is_instance_of::<PyList>()
+        || obj.is_instance_of::<PyTuple>()
+        || obj.cast::<PyUntypedArray>().is_ok_and(|a| a.ndim() != 0);
+    if !sequence {
+        return one(None, obj).map(|i| vec![i]);
+    }
+    if let Ok(array) = obj.cast::<PyUntypedArray>() {
+        let dtype = array.dtype();
+        if !matches!(dtype.kind(), b'i' | b'u') {
+            return Err(PyTypeError::new_err(format!(
+                "{name}: expected ints (ball indices), got an array of dtype {dtype}"
+            )));
+        }
+        if array.ndim() != 1 {
+            let shape = shape_text(array.shape());
+            let reason = format!("expected an int or shape (M,), got shape {shape}");
+            return Err(input_error(py, name, None, &reason));
+        }
+    }
+    obj.try_iter()?
+        .enumerate()
+        .map(|(m, item)| one(Some(m), &item?))
+        .collect()
+}
+
+/// An int argument (a Python int, or anything with `__index__`: a numpy integer), as a Python
+/// int; a bool (Python's or numpy's), a float or anything else is a `TypeError` naming it,
+/// saying it `expected` that.
+fn int<'py>(name: &str, obj: &Bound<'py, PyAny>, expected: &str) -> PyResult<Bound<'py, PyAny>> {
+    let py = obj.py();
+    let not_int =
+        |what: &str| PyTypeError::new_err(format!("{name}: expected {expected}, got {what}"));
+    if obj.is_instance_of::<PyBool>() || is_numpy_type(obj, NpyTypes::PyBoolArrType_Type) {
+        return Err(not_int("bool"));
+    }
+    // SAFETY: a live object; `PyNumber_Index` returns a new reference or NULL with an
+    // exception set.
+    unsafe { Bound::from_owned_ptr_or_err(py, pyo3::ffi::PyNumber_Index(obj.as_ptr())) }
+        .map_err(|_| not_int(&type_name(obj)))
 }
 
 /// The cores this process may use, read once: `available_parallelism` reads the cgroup quota
@@ -445,14 +551,30 @@ pub(super) fn out<'py, D: Dimension>(
     }
     // SAFETY: only the addresses are looked at.
     let range = unsafe { array.as_slice() }.map_or(0..0, address_range);
-    let overlaps = |input: &Floats<'_>| {
-        let r = address_range(input.values());
-        r.start < range.end && range.start < r.end
-    };
-    if inputs.iter().flatten().any(|input| overlaps(input)) {
-        return Err(fail("the array shares memory with an input"));
+    // Against the arrays as the caller gave them: an input converted to a copy (Fortran
+    // order, another dtype or byte order, a strided view) must not be overwritten either.
+    // Spans that overlap share memory if the input is contiguous; else numpy decides
+    // (`shares_memory`: a strided input may interleave with `out` without sharing an element).
+    for input in inputs.iter().flatten() {
+        let (source, r) = &input.source;
+        if r.start < range.end && range.start < r.end {
+            let shared = source.is_c_contiguous()
+                || source.is_fortran_contiguous()
+                || shares_memory(source, array)?;
+            if shared {
+                return Err(fail("the array shares memory with an input"));
+            }
+        }
     }
     Ok(Out(array.clone()))
+}
+
+/// `numpy.shares_memory(a, b)`: whether the two arrays have an element in common, exactly.
+fn shares_memory(a: &Bound<'_, PyUntypedArray>, b: &Bound<'_, PyAny>) -> PyResult<bool> {
+    let py = a.py();
+    static SHARES_MEMORY: pyo3::sync::PyOnceLock<Py<PyAny>> = pyo3::sync::PyOnceLock::new();
+    let f = SHARES_MEMORY.import(py, "numpy", "shares_memory")?;
+    f.call1((a, b))?.is_truthy()
 }
 
 /// A caller's `out=` array, checked by [`out`].

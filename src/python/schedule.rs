@@ -10,7 +10,7 @@ use numpy::{PyArray1, PyArray2};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
-use pyo3::types::{IntoPyDict, PyInt, PyList, PyTuple};
+use pyo3::types::{IntoPyDict, PyFloat, PyList, PyTuple};
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
@@ -246,27 +246,6 @@ fn same_count(
     Err(from_core(py, InputError::new(argument, kind)))
 }
 
-/// Ball indices: an int or a sequence of ints, each in `0..n` (errors at their position).
-fn indices(py: Python<'_>, obj: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<usize>> {
-    let given: Vec<i64> = if obj.is_instance_of::<PyInt>() {
-        vec![obj.extract()?]
-    } else {
-        obj.extract().map_err(|_| {
-            PyTypeError::new_err("indices: expected a sequence of ints (ball indices)")
-        })?
-    };
-    given
-        .iter()
-        .enumerate()
-        .map(|(m, &i)| {
-            usize::try_from(i).ok().filter(|&i| i < n).ok_or_else(|| {
-                let kind = InputErrorKind::IndexOutOfRange { index: i, len: n };
-                from_core(py, InputError::new("indices", kind).at(m))
-            })
-        })
-        .collect()
-}
-
 /// Friction balls from a scene's arguments.
 fn balls(
     py: Python<'_>,
@@ -422,6 +401,11 @@ impl CollisionSchedule {
     ///     given more than once``), paths of another number or dimension, a bad path
     ///     (``vel[1, 0]: must be finite, got nan``), first starts that differ or are before
     ///     :attr:`time` (``start[0, 0]: must not be before the calendar's time 2, got 1``).
+    ///     An index of any size out of range, negative included (``indices[0]: ball index
+    ///     must be in 0..3, got -1``).
+    /// TypeError
+    ///     And nothing changes: an index that is not an int (a bool, a float: ``indices[1]:
+    ///     expected an int (a ball index), got bool``), paths not made of real numbers.
     fn update(
         &mut self,
         py: Python<'_>,
@@ -432,7 +416,7 @@ impl CollisionSchedule {
         acc: &Bound<'_, PyAny>,
     ) -> PyResult<()> {
         let n = self.__len__();
-        let indices = self::indices(py, indices, n)?;
+        let indices = read::indices("indices", indices, n)?;
         let dim = match self.inner {
             Inner::Two(_) => 2,
             Inner::Three(_) => 3,
@@ -489,7 +473,7 @@ impl CollisionSchedule {
         friction: &Bound<'_, PyAny>,
     ) -> PyResult<()> {
         let n = self.__len__();
-        let indices = self::indices(py, indices, n)?;
+        let indices = read::indices("indices", indices, n)?;
         let t = read::number("t", t)?;
         let balls = balls(py, pos, vel, friction)?;
         same_count(py, "pos", indices.len(), balls.len())?;
@@ -506,12 +490,17 @@ impl CollisionSchedule {
         }
     }
 
-    fn __repr__(&self) -> String {
+    /// ``CollisionSchedule(N balls in D-D, time=t)``, ``t`` as Python prints a float
+    /// (``time=-1e+300``, not its 301 digits).
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
         let (n, time, dim) = match &self.inner {
             Inner::Two(s) => (s.len(), s.time(), 2),
             Inner::Three(s) => (s.len(), s.time(), 3),
         };
-        format!("CollisionSchedule({n} balls in {dim}-D, time={time})")
+        let time = PyFloat::new(py, time).repr()?;
+        Ok(format!(
+            "CollisionSchedule({n} balls in {dim}-D, time={time})"
+        ))
     }
 }
 
@@ -553,13 +542,14 @@ const SIGNAL_CHECKS: Duration = Duration::from_millis(50);
 /// box
 ///     ``(lo, hi)``: the box's low and high corners (two numbers each).
 /// mass
-///     A number or shape ``(N,)``: the masses (``> 0``).
+///     A number or shape ``(N,)``: the masses (``> 0``, finite: any from ``5e-324`` to
+///     ``1.7e308``; only their ratios matter).
 /// restitution
-///     The coefficient of restitution of ball–ball collisions, in ``[0, 1]``.
+///     The coefficient of restitution of ball–ball collisions, a number in ``[0, 1]``.
 /// t_end
 ///     The end time (``inf``: until no event is left).
 /// max_events
-///     ``None``, or the number of events after which to stop.
+///     ``None``, or an int ``≥ 0``: the number of events after which to stop.
 ///
 /// Returns
 /// -------
@@ -573,10 +563,14 @@ const SIGNAL_CHECKS: Duration = Duration::from_millis(50);
 /// ------
 /// InputError
 ///     As :meth:`CollisionSchedule.from_balls`; a mass ``≤ 0``, a restitution outside
-///     ``[0, 1]``; no ``t_end``, no ``max_events`` and a ball without friction (it would
-///     never end); a ball overlapping another or a wall, or outside the box, at the start
-///     (``pos[i]``), or as wide as the box (``radius[i]``); more than ``1000 + 64·N``
-///     events at one instant (``pos[i]``, naming the balls that keep colliding).
+///     ``[0, 1]``, a negative ``max_events``; no ``t_end``, no ``max_events`` and a ball
+///     without friction (it would never end); a ball overlapping another or a wall, or
+///     outside the box, at the start (``pos[i]``), or as wide as the box (``radius[i]``);
+///     more than ``1000 + 64·N`` events at one instant (``pos[i]``, naming the balls that
+///     keep colliding).
+/// TypeError
+///     An argument that is not made of real numbers (a bool included), or a
+///     ``max_events`` that is not ``None`` or an int.
 /// KeyboardInterrupt
 ///     On Ctrl-C, within about 0.05 s.
 ///
@@ -597,8 +591,8 @@ const SIGNAL_CHECKS: Duration = Duration::from_millis(50);
 ///        [3.5, 0.5]])
 #[pyfunction]
 #[pyo3(
-    signature = (pos, vel, friction, radius, *, r#box, mass=Given(None), restitution=1.0,
-                 t_end=Given(None), max_events=None),
+    signature = (pos, vel, friction, radius, *, r#box, mass=Given(None),
+                 restitution=Given(None), t_end=Given(None), max_events=None),
     text_signature = "(pos, vel, friction, radius, *, box, mass=1.0, restitution=1.0, \
                       t_end=1e999, max_events=None)"
 )]
@@ -611,9 +605,9 @@ pub(super) fn simulate<'py>(
     radius: &Bound<'py, PyAny>,
     r#box: &Bound<'py, PyAny>,
     mass: Given<'py>,
-    restitution: f64,
+    restitution: Given<'py>,
     t_end: Given<'py>,
-    max_events: Option<usize>,
+    max_events: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<(
     Bound<'py, PyArray1<f64>>,
     Bound<'py, PyArray1<i64>>,
@@ -632,9 +626,9 @@ pub(super) fn simulate<'py>(
     };
     let options = SimulationOptions {
         mass,
-        restitution,
+        restitution: restitution.number_or("restitution", 1.0)?,
         t_end: t_end.number_or("t_end", f64::INFINITY)?,
-        max_events,
+        max_events: read::count("max_events", max_events)?,
     };
     // Ctrl-C: the run looks for Python's signals every few hundredths of a second (with the
     // GIL for that moment) and stops on the first that raises.

@@ -8,7 +8,7 @@ use super::reach::{Reach, reach};
 use super::walls::{Side, Walls, first_wall_contact};
 use crate::collision::path_bounds::PathBounds;
 use crate::collision::path_contact::{first_bounded_contact_one, first_path_contact};
-use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
+use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon, finite};
 use crate::motion::Ball;
 use crate::path::{Path, Segment};
 
@@ -280,14 +280,17 @@ impl<const D: usize> CollisionSchedule<D> {
             return Err(InputError::new("paths", kind));
         }
         for (i, &r) in radii.iter().enumerate() {
-            check_radius("radius", r).map_err(|e| e.at(i))?;
+            check_ball_radius("radius", r).map_err(|e| e.at(i))?;
         }
         let t_max = check_horizon("t_max", options.t_max)?;
+        // `+ 0.0`: times are taken in with −0 made +0 (the calendar's time and the
+        // friction paths' starts), so that a start of −0 never shows as the time.
         let time = paths
             .iter()
             .map(Path::first_start)
             .reduce(f64::min)
-            .unwrap_or(0.0);
+            .unwrap_or(0.0)
+            + 0.0;
         let cell = cell_size(&paths, radii, options.walls.as_ref());
         let (lo, hi) = region(&paths, options.walls.as_ref(), cell);
         let grid = Grid::new(lo, hi, cell, n);
@@ -521,7 +524,7 @@ impl<const D: usize> CollisionSchedule<D> {
         let Some(t) = paths.first().map(Path::first_start) else {
             return Ok(());
         };
-        self.time = t;
+        self.time = t + 0.0;
         for (&i, path) in indices.iter().zip(paths) {
             self.paths[i] = path;
             self.replaced(i);
@@ -599,7 +602,7 @@ impl<const D: usize> CollisionSchedule<D> {
     where
         Ball: FrictionPath<D>,
     {
-        let t = finite("t", t)?;
+        let t = finite("t", t)? + 0.0;
         if t < self.time {
             let kind = InputErrorKind::BeforeCurrentTime {
                 time: t,
@@ -1056,7 +1059,7 @@ fn friction_paths<const D: usize>(balls: &[Ball], t: f64) -> Result<Vec<Path<D>>
 where
     Ball: FrictionPath<D>,
 {
-    finite("t", t)?;
+    let t = finite("t", t)? + 0.0;
     balls
         .iter()
         .enumerate()

@@ -339,6 +339,10 @@ fn collide(
     let n = d / distance;
     // The normal speed at which they part (negative: approach).
     let parting = (a.1 - b.1).dot(&n);
+    // Each ball's share of the change of relative velocity, m_b/(m_a + m_b) and
+    // m_a/(m_a + m_b) (the impulse over each mass), from the mass ratio: in [0, 1] for any
+    // masses from 5e-324 to f64::MAX, where 1/m and m_a + m_b overflow; ½ exactly for equal
+    // masses.
     let [ma, mb] = masses;
     let share_a = 1.0 / (1.0 + ma / mb);
     let share_b = 1.0 / (1.0 + mb / ma);

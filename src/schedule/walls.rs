@@ -11,7 +11,7 @@
 //! jumps beyond a plane at a later segment start collides at that start; a tangency is no
 //! contact.
 
-use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
+use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon, finite};
 use crate::path::{Path, Segment, spans};
 use crate::poly::solve_quadratic;
 
@@ -97,7 +97,7 @@ impl<const D: usize> Walls<D> {
         radius: f64,
         t_max: f64,
     ) -> Result<Option<(f64, usize, Side)>, InputError> {
-        let radius = check_radius("radius", radius)?;
+        let radius = check_ball_radius("radius", radius)?;
         let t_max = check_horizon("t_max", t_max)?;
         Ok(first_wall_contact(path.segments(), radius, self, t_max))
     }
