@@ -8,7 +8,8 @@
 //! The bar is the other reference tests' (`tests/support/reference_table.rs`): hit or miss as
 //! the reference says, the time within a small multiple of its floor. A friction pair is asked
 //! both ways, `collision_time` and `path_collision_time` on the balls' paths (`Ball::path`),
-//! and the two must agree on hit or miss.
+//! and the two must agree on hit or miss; a path pair's calendar (`CollisionSchedule` of the two
+//! balls) must give `path_collision_time`'s bits.
 //!
 //! Run with `--nocapture` to see the error/floor distribution per category.
 
@@ -16,6 +17,7 @@
 mod reference_table;
 
 use ballcollide::path::{Path, Segment};
+use ballcollide::schedule::{CollisionSchedule, ScheduleOptions};
 use ballcollide::{Ball, CollisionOptions, collision_time_with, path_collision_time};
 use nalgebra::{SVector, Vector2};
 use reference_table::Table;
@@ -69,6 +71,20 @@ fn check_path<const D: usize>(table: &mut Table, category: &str, mut fields: Fie
     let got = path_collision_time(&a, &b, radius, &CollisionOptions { t_max })
         .unwrap_or_else(|e| panic!("line {line}: {e}"));
     table.record(category, line, got, t_ref, floor, ambiguous);
+    assert_eq!(
+        calendar_time(a, b, radius).map(f64::to_bits),
+        got.map(f64::to_bits),
+        "line {line}: the calendar and path_collision_time"
+    );
+}
+
+/// The first collision of the calendar of two balls on `a` and `b` whose radii sum to `radius`
+/// (halves: exact).
+fn calendar_time<const D: usize>(a: Path<D>, b: Path<D>, radius: f64) -> Option<f64> {
+    let radii = [0.5 * radius, 0.5 * radius];
+    let mut calendar =
+        CollisionSchedule::new(vec![a, b], &radii, ScheduleOptions::default()).expect("valid");
+    calendar.next_collision().map(|c| c.time)
 }
 
 fn check_balls(table: &mut Table, category: &str, mut fields: Fields<'_>) {
@@ -150,7 +166,8 @@ fn the_reported_head_on_contacts_are_hits_for_every_query() {
         let expected = (2.0 - r) / (2.0 * v);
         let by_balls = collision_time_with(&a, &b, r, &options).expect("valid");
         let by_paths = path_collision_time(&pa, &pb, r, &options).expect("valid");
-        for t in [by_balls, by_paths] {
+        let by_calendar = calendar_time(pa, pb, r);
+        for t in [by_balls, by_paths, by_calendar] {
             let t = t.unwrap_or(f64::INFINITY);
             assert!(
                 (t - expected).abs() <= 4.0 * f64::EPSILON * expected,
