@@ -4,8 +4,8 @@ A family of exact, non-grazing contacts (and clear misses) whose contact distanc
 from the separation itself down to ``2^-400`` of it, several cases per octave, for friction
 balls and for paths in 2-D and 3-D; each answered by the repository's own independent
 references (``tools/collision_reference.py`` for balls, ``tools/path_reference.py`` for paths:
-mpmath at 256 bits from the exact binary inputs, here at 1200 bits so that r² is kept beside the separation's
-square), never by ballcollide.
+mpmath from the exact binary inputs, here at 1200 bits rather than their 256 so that r² is
+kept beside the separation's square), never by ballcollide.
 
 The inputs are built so that the motion float64 numbers describe is the one intended, exactly:
 
@@ -42,8 +42,8 @@ from multiprocessing import Pool
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-import collision_reference as cr  # noqa: E402
-import path_reference as pr  # noqa: E402
+import collision_reference as cr
+import path_reference as pr
 
 DEFAULT_OUT = os.path.join(os.path.dirname(__file__), "..", "tests", "data", "narrow_cases.txt")
 LOWEST_OCTAVE = 400
@@ -111,6 +111,7 @@ def ball_case(rng: random.Random, octave: int, offset: bool) -> tuple[str, tuple
     sa = speed
     sb = rng.choice([0.0, -integer(rng), -integer(rng), integer(rng, 20) * 0.25])
     closing = sa - sb
+
     # Friction: none, or enough to cover the gap before the stop (mostly), in the unit
     # length / time².
     def friction(s: float) -> float:
@@ -276,8 +277,10 @@ def main(argv: list[str] | None = None) -> int:
             fh.write(line + "\n")
     hits = sum(1 for line in lines if line.split()[-3] != "inf")
     ambiguous = sum(1 for line in lines if line.split()[-1] == "1")
-    print(f"wrote {len(lines)} cases ({hits} hits, {ambiguous} ambiguous) to {args.out} "
-          f"in {time.time() - start:.1f} s")
+    print(
+        f"wrote {len(lines)} cases ({hits} hits, {ambiguous} ambiguous) to {args.out} "
+        f"in {time.time() - start:.1f} s"
+    )
     return 0
 
 
