@@ -13,6 +13,8 @@ use ballcollide::poly::scaling::scale;
 mod exact;
 #[path = "../../tests/support/invariants.rs"]
 pub mod invariants;
+#[path = "../../tests/support/narrow_pairs.rs"]
+pub mod narrow_pairs;
 #[path = "../../tests/support/path_invariants.rs"]
 pub mod path_invariants;
 #[path = "../../tests/support/path_table.rs"]
@@ -21,6 +23,7 @@ mod path_table;
 pub mod simulation_invariants;
 
 use invariants::{BallInput, PairCase, SceneCase, Shared};
+use narrow_pairs::NarrowDraw;
 use path_invariants::{PathCase, SegmentInput};
 
 /// Inputs that start with this are read literally (see [`Raw`]) instead of decoded: the form of
@@ -443,5 +446,27 @@ pub fn simulation_case(u: &mut Unstructured) -> Result<simulation_invariants::Si
         mass,
         restitution,
         t_end,
+    })
+}
+
+/// A pair of the narrow family (`tests/support/narrow_pairs.rs`): head on or off axis, the
+/// contact distance down to 2⁻⁴⁰⁰ of the separation, for the invariant that every query gives
+/// the same hit or miss for it.
+pub fn narrow_draw(u: &mut Unstructured) -> Result<NarrowDraw> {
+    let mut fractions = [0.0; 6];
+    for f in &mut fractions {
+        *f = f64::from(u.arbitrary::<u32>()?) / 4_294_967_296.0;
+    }
+    Ok(NarrowDraw {
+        line: u.arbitrary()?,
+        sideways: u.arbitrary()?,
+        length: u.arbitrary()?,
+        time: u.arbitrary()?,
+        sep: u.arbitrary()?,
+        xa: u.arbitrary()?,
+        sa: u.arbitrary()?,
+        sb: u.arbitrary()?,
+        b_kind: u.arbitrary()?,
+        fractions,
     })
 }

@@ -20,6 +20,7 @@
 
 use super::exclusion::{OpenEighth, first_open_eighth};
 use super::long_window::long_window;
+use super::narrow_dip::narrow;
 use super::{in_own_unit, normal_time_unit};
 use crate::coefficients::Gap;
 
@@ -108,7 +109,9 @@ pub(crate) fn eighth_entry<const D: usize>(
             one_pair,
         )
     };
-    let missed = plain & dip & lowest_found & (g_lowest >= 0.0) & (g_hi > 0.0);
+    // A dip narrower than the float grid is not called a miss here: the window search decides
+    // it on the closest approach (`narrow_dip`).
+    let missed = plain & dip & lowest_found & (g_lowest >= 0.0) & (g_hi > 0.0) & !narrow(gap);
     EighthEntry {
         entry,
         found: crossing & entry_found,

@@ -1,6 +1,7 @@
 //! The first entry (+ → − sign change of the gap) on one time window.
 
 use super::exclusion::{OpenPieces, Shape};
+use super::narrow_dip::{narrow, narrow_entry};
 use crate::coefficients::Gap;
 use crate::poly::{bracketed_newton, solve_quadratic};
 
@@ -102,6 +103,7 @@ pub(crate) fn first_entry<const D: usize>(
         return WindowSearch::Entry(0.0);
     }
     let (critical, count) = critical_points(gap, end, gap.half_slope_noise());
+    let narrow_gap = narrow(gap);
     let mut seen_positive = previous_positive || g_start > 0.0;
     let (mut left, mut g_left) = (0.0, g_start);
     for &right in critical[..count].iter().chain([end].iter()) {
@@ -116,6 +118,17 @@ pub(crate) fn first_entry<const D: usize>(
                 (g_left, g_right),
                 gap.value_noise(),
             ));
+        }
+        // A minimum whose float samples stay positive may still be a dip narrower than the
+        // float grid: decided on the closest approach.
+        if narrow_gap
+            && seen_positive
+            && g_left > 0.0
+            && right < end
+            && gap.half_curvature(right) > 0.0
+            && let Some(u) = narrow_entry(gap, left, right)
+        {
+            return WindowSearch::Entry(u);
         }
         seen_positive |= g_right > 0.0;
         (left, g_left) = (right, g_right);
@@ -171,6 +184,10 @@ pub(crate) fn piecewise_entry<const D: usize>(gap: &Gap<D>, end: f64) -> Option<
                         (g_left, g_lowest),
                         noise,
                     )));
+                }
+                // A dip narrower than the float grid: decided on the closest approach.
+                if let Some(u) = narrow_entry(gap, left, lowest) {
+                    return Some(WindowSearch::Entry(u));
                 }
             }
             Shape::Other => return None,

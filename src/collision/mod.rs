@@ -33,6 +33,7 @@
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
 //! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `entry` (for `search_window`), `crossing`, `moving_entry` |
 //! | entry | `entry.rs` | the first + → − sign change on the pieces left: critical points, bracketed Newton | `search_window` |
+//! | narrow dip | `narrow_dip.rs` | a dip whose float samples stay positive, the radius tiny beside the motion (`≤ 2⁻⁴⁰`): a contact if the closest approach, `|d × d′|/|d′|` from the cross product's own coefficients, is within the radius | `entry` (its dips and minima); `eighth_entry` only declines to call such a dip a miss |
 //!
 //! ## Friction balls
 //!
@@ -95,6 +96,7 @@ mod exclusion;
 pub(crate) mod length_unit;
 pub(crate) mod long_window;
 pub(crate) mod moving_entry;
+pub(crate) mod narrow_dip;
 pub(crate) mod path_bounds;
 pub(crate) mod path_contact;
 pub(crate) mod prefilter;
