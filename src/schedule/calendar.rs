@@ -439,9 +439,22 @@ impl<const D: usize> CollisionSchedule<D> {
     /// (stale keys recomputed, boxes moved on); the answer is what recomputing every pair
     /// gives.
     pub fn next_collision(&mut self) -> Option<Collision> {
+        self.next_collision_until(f64::INFINITY)
+    }
+
+    /// [`next_collision`](Self::next_collision) if it comes at or before `limit`, else
+    /// `None`: the upkeep stops at `limit` (boxes are not moved on past it), so that a
+    /// calendar asked for its next event when a wall contact comes first does not look
+    /// further ahead for collisions.
+    fn next_collision_until(&mut self, limit: f64) -> Option<Collision> {
         loop {
             let owner = self.pairs.first()?;
             let key = *self.pairs.key(owner);
+            // Every key is a lower bound of its ball's next collision (a stale one, or a
+            // re-check, of a later one).
+            if key.time > limit {
+                return None;
+            }
             match key.kind {
                 Kind::Nothing => return None,
                 Kind::Recheck => self.recheck(owner),
@@ -506,8 +519,8 @@ impl<const D: usize> CollisionSchedule<D> {
     /// [`next_collision`]: Self::next_collision
     /// [`next_wall_contact`]: Self::next_wall_contact
     pub fn next_event(&mut self) -> Option<Event> {
-        let collision = self.next_collision();
         let wall = self.next_wall_contact();
+        let collision = self.next_collision_until(wall.map_or(f64::INFINITY, |w| w.time));
         Event::first_of(collision, wall)
     }
 
@@ -777,35 +790,57 @@ impl<const D: usize> CollisionSchedule<D> {
         (reach(segments, self.radii[i], from, end), horizon)
     }
 
-    /// How far ahead a box reaches: for ever for a path that comes to rest; else far enough
-    /// to cross a quarter of a cell (of about two ball spacings: measured on the benchmark's
+    /// How far ahead a box reaches: far enough to cross a quarter of a cell at the path's
+    /// fastest from `from` on (of about two ball spacings: measured on the benchmark's
     /// frictionless disks, shorter boxes in coarser cells ask the pair search less often
     /// than boxes of a whole cell), and at least twice as far from `from` as the `previous`
     /// horizon (so that a calendar whose time does not advance moves boxes on in ever larger
-    /// steps).
+    /// steps). For ever (`∞`: the box covers the rest of the path) once the path is at rest
+    /// within that reach, or once the boxes have grown [`LONGEST_STEPS`] times a step without
+    /// the time moving on: balls that never meet (moving apart, alone in open space) are then
+    /// settled by one search of their whole paths instead of doubling their reach a thousand
+    /// times up to the float range.
+    ///
+    /// A friction ball is thus covered a quarter cell at a time while it rolls, not over its
+    /// whole run to rest (which may cross the table and meet every ball).
     fn next_horizon(&self, segments: &[Segment<D>], from: f64, previous: Option<f64>) -> f64 {
         let Some(last) = segments.last() else {
             return f64::INFINITY;
         };
-        let (v, a) = (last.velocity.amax(), last.acceleration.amax());
-        if v == 0.0 && a == 0.0 {
+        let resting = last.velocity.amax() == 0.0 && last.acceleration.amax() == 0.0;
+        if resting && from >= last.start {
             return f64::INFINITY;
         }
-        let ahead = (from - last.start).max(0.0);
-        // (No acceleration: the same sum without the square root of 0.)
-        let speed = if a == 0.0 {
-            v + a * ahead
-        } else {
-            v + a * ahead + (a * self.cell).sqrt()
-        };
-        let mut step = 0.25 * self.cell / speed;
-        let base = previous.map_or(from, |h| h.max(from));
-        if let Some(h) = previous {
-            step = step.max(h - from);
+        // The fastest the path moves over the next quarter cell from `from`: each segment
+        // still to come (or under way) at its speed at `from`, or at its start, bounded for
+        // a quarter cell of acceleration.
+        let mut speed = 0.0f64;
+        for (k, segment) in segments.iter().enumerate() {
+            let over = segments.get(k + 1).is_some_and(|next| next.start <= from);
+            if over {
+                continue;
+            }
+            let (v, a) = (segment.velocity.amax(), segment.acceleration.amax());
+            let ahead = (from - segment.start).max(0.0);
+            // (No acceleration: the same sum without the square root of 0.)
+            let here = if a == 0.0 {
+                v
+            } else {
+                v + a * ahead + (a * self.cell).sqrt()
+            };
+            speed = speed.max(here);
         }
-        let horizon = base + step;
-        // No progress (rounding, or a NaN from an overflow): cover the rest.
-        if horizon > base {
+        let step = 0.25 * self.cell / speed;
+        let base = previous.map_or(from, |h| h.max(from));
+        let span = previous.map_or(0.0, |h| h - from);
+        if span >= LONGEST_STEPS * step {
+            return f64::INFINITY;
+        }
+        let horizon = base + step.max(span);
+        // At rest within reach; or no progress (rounding, or a NaN from an overflow): cover
+        // the rest.
+        let at_rest_within = resting && horizon >= last.start;
+        if horizon > base && !at_rest_within {
             horizon
         } else {
             f64::INFINITY
@@ -1089,6 +1124,11 @@ fn cell_size<const D: usize>(paths: &[Path<D>], radii: &[f64], walls: Option<&Wa
         1.0
     }
 }
+
+/// How many steps ahead (a quarter cell each) a ball's box may grow while the calendar's
+/// time stands still, before it covers the rest of the path (see
+/// [`CollisionSchedule::next_horizon`]).
+const LONGEST_STEPS: f64 = 64.0;
 
 /// The bit mask of the candidates a refresh searched, for [`Known::Since`]: bit `k` for ball
 /// `k < 64`. Balls from 64 on have no bit (a grid of one cell may hold any number of balls
