@@ -1,0 +1,140 @@
+"""The calendar's cost per event with and without friction, dense and dilute, boxed and
+open, and where pairs never meet (no horizon): ``bc.simulate`` and ``bc.CollisionSchedule``,
+one thread, in one run.
+
+- ``friction``: ``N`` balls in the unit box on a grid (``√N × √N``), radius ``¼/√N``,
+  velocities normal(0, 1) seeded by ``N``, ``max_events=5N``, friction ``μ`` from 0 to 5:
+  µs per event (median of ``--repeats`` runs, the calendar's build included), and each
+  friction's ratio to the frictionless run at the same ``N``.
+- ``horizons``: balls that never meet: one to 200 balls moving in parallel in a box (no
+  ``t_end``, against ``t_end=100``), and 100 or 400 balls moving in parallel in open space,
+  the first ``next_collision()`` with ``t_max=inf`` against ``t_max=1e3``.
+- ``build``: ``CollisionSchedule.from_balls`` of 10⁵ balls in a 100 × 100 box (radius 0.01),
+  frictionless and with friction 0.1.
+
+``python benchmarks/calendar_scaling.py`` prints the CPU model and one table per part.
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import time
+from functools import partial
+
+import numpy as np
+
+import ballcollide as bc
+
+
+def cpu_model() -> str:
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or platform.machine()
+
+
+def median_time(f, repeats: int):
+    times, result = [], None
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        result = f()
+        times.append(time.perf_counter() - t0)
+    return float(np.median(times)), result
+
+
+def grid_scene(n: int):
+    side = int(np.ceil(np.sqrt(n)))
+    k = np.arange(n)
+    pos = np.stack([(k % side + 0.5) / side, (k // side + 0.5) / side], 1)
+    return pos, 0.25 / np.sqrt(n)
+
+
+def friction(sizes, frictions, repeats: int) -> None:
+    print("\n| N | " + " | ".join(f"μ = {mu} µs/event (× μ=0)" for mu in frictions) + " |")
+    print("|---:|" + "---:|" * len(frictions))
+    for n in sizes:
+        pos, r = grid_scene(n)
+        vel = np.random.default_rng(n).normal(size=(n, 2))
+        cells = []
+        base = None
+        for mu in frictions:
+            run = partial(bc.simulate, pos, vel, mu, r, box=([0, 0], [1, 1]), max_events=5 * n)
+            seconds, result = median_time(run, repeats)
+            per = seconds / max(1, len(result[0])) * 1e6
+            base = per if mu == 0 else base
+            ratio = f" ({per / base:.1f}×)" if base and mu != 0 else ""
+            cells.append(f"{per:.1f}{ratio}")
+        print(f"| {n:,} | " + " | ".join(cells) + " |", flush=True)
+
+
+def first_collision(pos, vel, t_max):
+    return bc.CollisionSchedule.from_balls(pos, vel, 0.0, 0.5, t_max=t_max).next_collision()
+
+
+def horizons(repeats: int) -> None:
+    print("\n| scene | no horizon | with a horizon |")
+    print("|---|---:|---:|")
+    for n in [1, 4, 200]:
+        pos, r = grid_scene(n)
+        vel = np.tile([0.3, 0.7], (n, 1))
+        cells = []
+        for t_end in [np.inf, 100.0]:
+            box = ([0, 0], [1, 1])
+            run = partial(bc.simulate, pos, vel, 0.0, r, box=box, t_end=t_end, max_events=2000)
+            seconds, result = median_time(run, repeats)
+            cells.append(f"{seconds / max(1, len(result[0])) * 1e6:.1f} µs/event")
+        print(f"| {n} parallel balls in a box | {cells[0]} | {cells[1]} (t_end=100) |")
+    for n in [100, 400]:
+        pos = np.stack([np.arange(n) * 3.0, np.zeros(n)], 1)
+        vel = np.tile([0.0, 1.0], (n, 1))
+        cells = []
+        for t_max in [np.inf, 1e3]:
+            seconds, _ = median_time(partial(first_collision, pos, vel, t_max), repeats)
+            cells.append(f"{seconds * 1e3:.2f} ms")
+        print(
+            f"| {n} parallel balls in open space, first next_collision | {cells[0]} | "
+            f"{cells[1]} (t_max=1e3) |",
+            flush=True,
+        )
+
+
+def build(repeats: int) -> None:
+    print("\n| from_balls, 10⁵ balls | seconds |")
+    print("|---|---:|")
+    n = 100_000
+    rng = np.random.default_rng(2)
+    pos = rng.uniform(0, 100, size=(n, 2))
+    vel = rng.normal(size=(n, 2))
+    for mu in [0.0, 0.1]:
+        seconds, _ = median_time(
+            lambda mu=mu: bc.CollisionSchedule.from_balls(
+                pos, vel, mu, 0.01, box=([0, 0], [100, 100])
+            ),
+            repeats,
+        )
+        print(f"| friction {mu} | {seconds:.3f} |", flush=True)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--sizes", type=int, nargs="+", default=[16, 100, 400, 1600, 6400])
+    parser.add_argument("--frictions", type=float, nargs="+", default=[0.0, 0.01, 0.5, 5.0])
+    parser.add_argument("--parts", nargs="+", default=["friction", "horizons", "build"])
+    args = parser.parse_args()
+    print(f"CPU: {cpu_model()}; one thread (simulate and the calendar are sequential)")
+    if "friction" in args.parts:
+        friction(args.sizes, args.frictions, args.repeats)
+    if "horizons" in args.parts:
+        horizons(args.repeats)
+    if "build" in args.parts:
+        build(args.repeats)
+
+
+if __name__ == "__main__":
+    main()
