@@ -2,7 +2,7 @@
 # in src/python.rs and src/python/*.rs (what `help()` shows): the one place the
 # Python API is documented.
 
-from typing import Final, NamedTuple, SupportsFloat, SupportsIndex, final
+from typing import Any, Final, NamedTuple, Protocol, SupportsFloat, SupportsIndex, final
 
 import numpy as np
 import numpy.typing as npt
@@ -142,6 +142,11 @@ def first_contacts(
 _Box = tuple[npt.ArrayLike, npt.ArrayLike] | list[npt.ArrayLike]
 _Indices = SupportsIndex | npt.ArrayLike
 
+class _ProgressBar(Protocol):
+    def update(self, n: int = ..., /) -> Any: ...
+    def set_postfix(self, *args: Any, **kwargs: Any) -> Any: ...
+    def close(self) -> Any: ...
+
 class Event(NamedTuple):
     time: float
     i: int
@@ -206,4 +211,5 @@ def simulate(
     restitution: _Number = 1.0,
     t_end: _Number = ...,
     max_events: SupportsIndex | None = None,
+    progress: bool | _ProgressBar | None = False,
 ) -> tuple[_F64Array, _I64Array, _I64Array, _F64Array, _F64Array]: ...

@@ -517,6 +517,74 @@ fn build<const D: usize>(
     Core::new(paths, radii, options).map_err(|e| from_core(py, e))
 }
 
+/// A progress bar for a long call: a ``tqdm`` bar (``progress=True``) or the caller's own
+/// object with tqdm's ``update(n)``, ``set_postfix(**values)`` and ``close()``.
+struct ProgressBar(Py<PyAny>);
+
+impl ProgressBar {
+    /// `events` more events, the simulation at `time`.
+    fn show(&self, py: Python<'_>, events: usize, time: f64) -> PyResult<()> {
+        let bar = self.0.bind(py);
+        let postfix = [
+            ("t", time.into_pyobject(py)?.into_any()),
+            ("refresh", false.into_pyobject(py)?.to_owned().into_any()),
+        ];
+        bar.call_method("set_postfix", (), Some(&postfix.into_py_dict(py)?))?;
+        bar.call_method1("update", (events,))?;
+        Ok(())
+    }
+
+    /// The last `events` and the end time, then closed.
+    fn close(&self, py: Python<'_>, events: usize, time: f64) -> PyResult<()> {
+        if time.is_finite() {
+            self.show(py, events, time)?;
+        }
+        self.0.bind(py).call_method0("close")?;
+        Ok(())
+    }
+}
+
+/// The progress bar `progress` asks for: none for `None`/`False`; for `True`, a `tqdm` bar
+/// of `total` events (unknown if `None`), an error naming `progress` if tqdm is not
+/// installed; else the object itself, which must have tqdm's `update`, `set_postfix` and
+/// `close`.
+fn progress_bar(
+    py: Python<'_>,
+    progress: Option<&Bound<'_, PyAny>>,
+    total: Option<usize>,
+) -> PyResult<Option<ProgressBar>> {
+    let Some(progress) = progress.filter(|p| !p.is_none()) else {
+        return Ok(None);
+    };
+    if let Ok(flag) = progress.cast::<pyo3::types::PyBool>() {
+        if !flag.is_true() {
+            return Ok(None);
+        }
+        let tqdm = py.import("tqdm").map_err(|_| {
+            pyo3::exceptions::PyImportError::new_err(
+                "progress: progress=True needs tqdm (pip install tqdm)",
+            )
+        })?;
+        let kwargs = [
+            ("total", total.into_pyobject(py)?.into_any()),
+            ("unit", "event".into_pyobject(py)?.into_any()),
+        ];
+        let bar = tqdm
+            .getattr("tqdm")?
+            .call((), Some(&kwargs.into_py_dict(py)?))?;
+        return Ok(Some(ProgressBar(bar.unbind())));
+    }
+    for method in ["update", "set_postfix", "close"] {
+        if !progress.hasattr(method)? {
+            return Err(PyTypeError::new_err(format!(
+                "progress: expected True, False, None or a tqdm-like bar (with update, \
+                 set_postfix and close), got an object without {method}"
+            )));
+        }
+    }
+    Ok(Some(ProgressBar(progress.clone().unbind())))
+}
+
 /// How often a long run looks for Ctrl-C (Python's signal handlers).
 const SIGNAL_CHECKS: Duration = Duration::from_millis(50);
 
@@ -550,6 +618,10 @@ const SIGNAL_CHECKS: Duration = Duration::from_millis(50);
 ///     The end time (``inf``: until no event is left).
 /// max_events
 ///     ``None``, or an int ``≥ 0``: the number of events after which to stop.
+/// progress
+///     ``True`` for a progress bar (``tqdm``, which must be installed: the ``progress``
+///     extra), or a tqdm-like bar of your own (``update``, ``set_postfix``, ``close``);
+///     ``False`` or ``None`` (the default) for none. Moved on every 0.05 s.
 ///
 /// Returns
 /// -------
@@ -592,9 +664,9 @@ const SIGNAL_CHECKS: Duration = Duration::from_millis(50);
 #[pyfunction]
 #[pyo3(
     signature = (pos, vel, friction, radius, *, r#box, mass=Given(None),
-                 restitution=Given(None), t_end=Given(None), max_events=None),
+                 restitution=Given(None), t_end=Given(None), max_events=None, progress=None),
     text_signature = "(pos, vel, friction, radius, *, box, mass=1.0, restitution=1.0, \
-                      t_end=1e999, max_events=None)"
+                      t_end=1e999, max_events=None, progress=False)"
 )]
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 pub(super) fn simulate<'py>(
@@ -608,6 +680,7 @@ pub(super) fn simulate<'py>(
     restitution: Given<'py>,
     t_end: Given<'py>,
     max_events: Option<&Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<(
     Bound<'py, PyArray1<f64>>,
     Bound<'py, PyArray1<i64>>,
@@ -630,18 +703,28 @@ pub(super) fn simulate<'py>(
         t_end: t_end.number_or("t_end", f64::INFINITY)?,
         max_events: read::count("max_events", max_events)?,
     };
-    // Ctrl-C: the run looks for Python's signals every few hundredths of a second (with the
-    // GIL for that moment) and stops on the first that raises.
+    let bar = progress_bar(py, progress, options.max_events)?;
+    // Ctrl-C and the progress bar: the run looks for Python's signals, and moves the bar on,
+    // every few hundredths of a second (with the GIL for that moment), and stops on the first
+    // signal that raises.
     let mut interrupted: Option<PyErr> = None;
     let mut checked = Instant::now();
+    let mut shown = 0usize;
     let run = py
         .detach(|| {
-            crate::schedule::simulate_observed(&balls, &radii, walls, &options, |_| {
+            crate::schedule::simulate_observed(&balls, &radii, walls, &options, |p| {
                 if checked.elapsed() < SIGNAL_CHECKS {
                     return ControlFlow::Continue(());
                 }
                 checked = Instant::now();
-                match Python::attach(|py| py.check_signals()) {
+                let checked = Python::attach(|py| {
+                    if let Some(bar) = &bar {
+                        bar.show(py, p.events - shown, p.time)?;
+                        shown = p.events;
+                    }
+                    py.check_signals()
+                });
+                match checked {
                     Ok(()) => ControlFlow::Continue(()),
                     Err(e) => {
                         interrupted = Some(e);
@@ -650,7 +733,14 @@ pub(super) fn simulate<'py>(
                 }
             })
         })
-        .map_err(|e| from_core(py, e))?;
+        .map_err(|e| from_core(py, e));
+    if let Some(bar) = &bar {
+        let (events, end) = run
+            .as_ref()
+            .map_or((shown, f64::NAN), |r| (r.events.len(), r.end));
+        bar.close(py, events - shown, end)?;
+    }
+    let run = run?;
     if let Some(e) = interrupted {
         return Err(e);
     }

@@ -62,19 +62,73 @@ def test_ctrl_c_stops_a_long_simulation_within_a_fraction_of_a_second():
     code = textwrap.dedent(
         """
         import os, signal, threading, time, ballcollide as bc
-        threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
-        t0 = time.perf_counter()
+        sent = []
+        def interrupt():
+            sent.append(time.perf_counter())
+            os.kill(os.getpid(), signal.SIGINT)
+        threading.Timer(0.5, interrupt).start()
         try:
             bc.simulate([[0.5, 0.5]], [[1, 0.3]], 0.0, 0.1, box=([0, 0], [1, 2]), t_end=1e12)
         except KeyboardInterrupt:
-            print(f"interrupted {time.perf_counter() - t0:.3f}")
+            print(f"interrupted {time.perf_counter() - sent[0]:.3f}")
         """
     )
     out = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, env=os.environ
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=120, env=os.environ
     )
     assert out.returncode == 0, out.stderr
     kind, seconds = out.stdout.split()
     assert kind == "interrupted"
-    # The signal comes at 0.5 s; the run looks for it every 0.05 s.
-    assert float(seconds) < 1.5, seconds
+    # From the signal to the exception: the run looks for it every 0.05 s (a loaded machine
+    # may take longer to schedule the process; the run itself would last for ever).
+    assert float(seconds) < 2.0, seconds
+
+
+class Bar:
+    """A tqdm-like bar that records what it is shown."""
+
+    def __init__(self):
+        self.n, self.closed, self.postfix = 0, False, None
+
+    def update(self, n):
+        self.n += n
+
+    def set_postfix(self, **values):
+        self.postfix = values
+
+    def close(self):
+        self.closed = True
+
+
+def grid(n=400):
+    side = int(np.sqrt(n))
+    k = np.arange(n)
+    pos = np.stack([(k % side + 0.5) / side, (k // side + 0.5) / side], 1)
+    return pos, np.random.default_rng(1).normal(size=(n, 2)), 0.25 / side
+
+
+def test_a_progress_bar_counts_every_event_and_changes_nothing():
+    pos, vel, r = grid()
+    plain = bc.simulate(pos, vel, 0.5, r, box=([0, 0], [1, 1]), max_events=20_000)
+    bar = Bar()
+    shown = bc.simulate(pos, vel, 0.5, r, box=([0, 0], [1, 1]), max_events=20_000, progress=bar)
+    assert bar.closed and bar.n == len(plain[0])
+    assert bar.postfix["t"] >= plain[0][-1]  # the end of the run
+    for a, b in zip(plain, shown):
+        np.testing.assert_array_equal(a, b)
+
+
+def test_progress_true_uses_tqdm():
+    # tqdm is one of the development tools (requirements-dev.txt): no skip.
+    import tqdm  # noqa: F401
+
+    pos, vel, r = grid(16)
+    run = bc.simulate(pos, vel, 0.5, r, box=([0, 0], [1, 1]), max_events=100, progress=True)
+    assert len(run[0]) == 100
+
+
+@pytest.mark.parametrize("progress", [3, "yes", object()])
+def test_a_progress_that_is_not_a_bar_is_refused_naming_it(progress):
+    pos, vel, r = grid(16)
+    with pytest.raises(TypeError, match=r"^progress: "):
+        bc.simulate(pos, vel, 0.5, r, box=([0, 0], [1, 1]), max_events=10, progress=progress)
