@@ -17,7 +17,8 @@ import ballcollide as bc
 
 INF = math.inf
 
-# Contacts later than this are not reported (README): time scalings are checked only below it.
+# Contacts later than this are not reported (docs/contract.md): time scalings are checked
+# only below it.
 LATEST = 1e301
 
 

@@ -37,8 +37,8 @@ use std::num::NonZeroUsize;
 
 use super::exact::{sign_exact, within_backward_error};
 
-/// Contacts later than this are not reported (README); the time scaling is checked only where
-/// every time involved, before and after scaling, is earlier.
+/// Contacts later than this are not reported (docs/contract.md); the time scaling is checked
+/// only where every time involved, before and after scaling, is earlier.
 pub const LATEST: f64 = 1e301;
 
 /// The outcome of one check.
