@@ -32,6 +32,10 @@ use crate::coefficients::Gap;
 /// above `2⁻¹²` of `r²`.
 const NARROW: f64 = 1.0 / ((1u64 << 40) as f64);
 
+/// How close to 0 the separation must come, relative to the window's magnitudes, at a narrow
+/// dip that is a crossing: `2²⁰·ε` (see [`narrow_entry`]).
+const CROSSING: f64 = (1u64 << 20) as f64 * f64::EPSILON;
+
 /// Whether `gap` (time scaled to its window, `u ∈ [0, ≤ 1]`) is in the regime where a dip
 /// that float samples find positive may still hold a contact ([`narrow_entry`] decides it).
 /// Branch-free, for the lanes.
@@ -58,6 +62,18 @@ pub(crate) fn narrow_entry<const D: usize>(gap: &Gap<D>, left: f64, lowest: f64)
     let u = lowest;
     let w = gap.relative_velocity(u);
     let speed2 = w.norm_squared();
+    // A crossing, not a turn: at a dip where the balls pass each other, the separation at
+    // the float time next to the minimum is at rounding level (the slope's root is found to
+    // its noise, `4ε·S·S′/|d′|²`, so `|d| ≤ 4ε·S·S′/|d′|`, below `2²⁰·ε·S` for any crossing
+    // outside the grazing band, where `|d′| ≥ ~3e-5·S′`); a dip whose floor is a real
+    // distance (the balls turn back short of each other, `d′ ≈ 0` there, and the cross
+    // product vanishes with it on a line) is a miss, whatever `|C|/|d′|` says.
+    let size = p.abs().sum() + v.abs().sum() + a.abs().sum();
+    let floor = gap.separation(u).abs().sum();
+    let crossing = floor <= CROSSING * size; // (false for a NaN)
+    if !crossing {
+        return None;
+    }
     // C(u) component by component (the pairs of axes), in the unit that brings `r` into
     // [2, 4): the comparison |C|² < r²|d′|² then neither underflows nor overflows for any
     // motion the contract covers (a speed so small that |d′|² underflows has a band of time
@@ -129,6 +145,33 @@ mod tests {
             };
             assert_eq!(narrow_entry(&gap, 0.0, 0.5).is_some(), hit, "{a}");
         }
+    }
+
+    #[test]
+    fn a_turn_short_of_the_other_ball_is_no_contact() {
+        // On one line (the cross product is 0 for every u), closing at 1 and decelerating at
+        // 2: the separation turns at u = 1/2 at 1 − 1/4 = 3/4 (in the window's units), far
+        // from a tiny radius: no contact, though |d′| = 0 there makes |C|/|d′| = 0/0.
+        let gap = Gap {
+            offset: Vector2::new(1.0, 0.0),
+            velocity: Vector2::new(-1.0, 0.0),
+            acceleration: Vector2::new(2.0, 0.0),
+            radius: 1e-100,
+        };
+        assert!(narrow(&gap));
+        assert_eq!(narrow_entry(&gap, 0.0, 0.5), None);
+        // Turning 1e-6 short: still none; a crossing at the same rate: a contact.
+        let close = Gap {
+            offset: Vector2::new(0.25 + 1e-6, 0.0),
+            ..gap
+        };
+        assert_eq!(narrow_entry(&close, 0.0, 0.5), None);
+        let crossing = Gap {
+            offset: Vector2::new(0.5, 0.0),
+            acceleration: Vector2::zeros(),
+            ..gap
+        };
+        assert!(narrow_entry(&crossing, 0.0, 0.5).is_some());
     }
 
     #[test]
