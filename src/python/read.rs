@@ -2,8 +2,9 @@
 //! `out`. Each reader accepts what Python and numpy users hand over (lists and tuples,
 //! any real dtype, C or Fortran order, strided views, read-only or big-endian arrays, and
 //! any number `float()` accepts where a scalar goes) and gives the Rust core float64 data in
-//! C order: in place when it already is so, else converted once (rust-numpy's
-//! [`PyArrayLike`] with [`AllowTypeChange`]). Booleans are not numbers here.
+//! C order: in place when it already is so, else gathered and converted in one pass of our
+//! own (numpy's conversion for the rare dtypes that pass cannot read). Booleans are not
+//! numbers here.
 //!
 //! Errors name the argument: `TypeError` for what is not made of real numbers,
 //! [`InputError`](super::input_error::InputError) (a `ValueError`) for a wrong shape,
@@ -15,7 +16,7 @@ use std::sync::OnceLock;
 
 use numpy::ndarray::{Dimension, IxDyn};
 use numpy::npyffi::{self, NPY_TYPES, NpyTypes, PY_ARRAY_API};
-use numpy::{AllowTypeChange, PyArray, PyArrayLike, PyArrayMethods};
+use numpy::{PyArray, PyArrayMethods};
 use numpy::{PyArrayDescr, PyArrayDescrMethods};
 use numpy::{PyReadonlyArray, PyReadwriteArray, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOverflowError, PyTypeError};
@@ -219,7 +220,14 @@ fn native_float64(dtype: &Bound<'_, PyArrayDescr>) -> bool {
     dtype.num() == NPY_TYPES::NPY_DOUBLE as c_int && dtype.is_native_byteorder() != Some(false)
 }
 
-/// The float64 values of a real array, in C order.
+/// The float64 values of a real array, in C order: the one reader of every array argument.
+///
+/// A C-contiguous, aligned, native float64 array is read in place. Any other layout of
+/// float64, float32 or an integer type in this machine's byte order (Fortran order, a column
+/// of a wider array, every other row, negative strides, unaligned) is gathered by [`gather`]
+/// in one pass into memory of our own, converted as numpy's casts convert. What remains
+/// (float16, longdouble, byte-swapped) numpy converts: `numpy.ascontiguousarray(array,
+/// dtype=float64)`, read in place.
 fn floats<'py>(real: &Real<'py>) -> PyResult<Floats<'py>> {
     let Real { array, dtype } = real;
     let source = (array.clone(), extent(array, dtype));
@@ -229,14 +237,127 @@ fn floats<'py>(real: &Real<'py>) -> PyResult<Floats<'py>> {
         let data = Data::InPlace(a.clone());
         return Ok(Floats { data, source });
     }
-    let converted: PyArrayLike<'py, f64, IxDyn, AllowTypeChange> = array.extract()?;
-    let data = if converted.is_c_contiguous() && converted.is_aligned() {
-        // A new array (or a view of a native float64 one): this call is its only reader.
-        Data::InPlace((**converted).clone())
-    } else {
-        Data::Copied(converted.as_array().iter().copied().collect())
-    };
-    Ok(Floats { data, source })
+    if let Some(values) = gather(array, dtype) {
+        let data = Data::Copied(values);
+        return Ok(Floats { data, source });
+    }
+    let converted = ascontiguous_float64(array)?;
+    // SAFETY: `numpy.ascontiguousarray(…, dtype=float64)` gives a C-contiguous, aligned array
+    // of native float64; a new one (this call is its only reader) or `array` itself.
+    let a = unsafe { converted.cast_into_unchecked::<PyArray<f64, IxDyn>>() };
+    Ok(Floats {
+        data: Data::InPlace(a),
+        source,
+    })
+}
+
+/// `numpy.ascontiguousarray(array, dtype=numpy.float64)`.
+fn ascontiguous_float64<'py>(array: &Bound<'py, PyUntypedArray>) -> PyResult<Bound<'py, PyAny>> {
+    let py = array.py();
+    static ASCONTIGUOUS: pyo3::sync::PyOnceLock<Py<PyAny>> = pyo3::sync::PyOnceLock::new();
+    static FLOAT64: pyo3::sync::PyOnceLock<Py<PyAny>> = pyo3::sync::PyOnceLock::new();
+    let f = ASCONTIGUOUS.import(py, "numpy", "ascontiguousarray")?;
+    let float64 = FLOAT64.import(py, "numpy", "float64")?;
+    let converted = f.call1((array, float64))?;
+    match converted.cast::<PyUntypedArray>() {
+        Ok(a) if native_float64(&a.dtype()) && a.is_c_contiguous() && a.is_aligned() => {
+            Ok(converted)
+        }
+        _ => Err(PyTypeError::new_err(
+            "numpy.ascontiguousarray gave no C-contiguous float64 array",
+        )),
+    }
+}
+
+/// The values of `array` in C order as float64, in one pass over its memory (its strides,
+/// any sign, any alignment), if its dtype is float64, float32 or an integer type of 1 to 8
+/// bytes in this machine's byte order; `None` for any other dtype.
+///
+/// Each value is converted as numpy's cast (`astype(float64)`) converts it: exactly, or for an
+/// integer beyond 2^53 rounded to the nearest float64 (ties to even).
+fn gather(array: &Bound<'_, PyUntypedArray>, dtype: &Bound<'_, PyArrayDescr>) -> Option<Vec<f64>> {
+    if dtype.is_native_byteorder() == Some(false) {
+        return None;
+    }
+    let shape = array.shape();
+    let strides = array.strides();
+    let mut values = vec![0.0; shape.iter().product()];
+    if values.is_empty() {
+        return Some(values);
+    }
+    // SAFETY: a live array's header; its data pointer.
+    let src = unsafe { (*npyffi::_PyArray_GET_ITEM_DATA(array.as_array_ptr())).data }
+        .cast_const()
+        .cast::<u8>();
+    // SAFETY (each `fill` below): `src`, `shape` and `strides` are the array's own, so every
+    // element read lies in its memory, and the element type is the dtype's (kind and size);
+    // nothing writes into the array meanwhile (the GIL is held: see `Floats`).
+    unsafe {
+        match (dtype.kind(), dtype.itemsize()) {
+            (b'f', 8) => fill::<f64>(&mut values, src, shape, strides, |x| x),
+            (b'f', 4) => fill::<f32>(&mut values, src, shape, strides, f64::from),
+            (b'i', 8) => fill::<i64>(&mut values, src, shape, strides, |x| x as f64),
+            (b'i', 4) => fill::<i32>(&mut values, src, shape, strides, f64::from),
+            (b'i', 2) => fill::<i16>(&mut values, src, shape, strides, f64::from),
+            (b'i', 1) => fill::<i8>(&mut values, src, shape, strides, f64::from),
+            (b'u', 8) => fill::<u64>(&mut values, src, shape, strides, |x| x as f64),
+            (b'u', 4) => fill::<u32>(&mut values, src, shape, strides, f64::from),
+            (b'u', 2) => fill::<u16>(&mut values, src, shape, strides, f64::from),
+            (b'u', 1) => fill::<u8>(&mut values, src, shape, strides, f64::from),
+            _ => return None,
+        }
+    }
+    Some(values)
+}
+
+/// Writes the elements of the strided array at `src` (`shape`, byte `strides`, element type
+/// `T`) into `dst` in C order, each through `to`. Rows of 2 or 3 numbers (the last dimension
+/// of positions and velocities) are read whole: a Fortran-ordered `(N, 2)` array is then two
+/// sequential streams, read at memory speed.
+///
+/// # Safety
+///
+/// `dst` holds the product of `shape` elements, at least one; every element
+/// `src + Σ index·stride` is a readable `T` (unaligned allowed).
+unsafe fn fill<T: Copy>(
+    dst: &mut [f64],
+    src: *const u8,
+    shape: &[usize],
+    strides: &[isize],
+    to: impl Fn(T) -> f64 + Copy,
+) {
+    // SAFETY: within the array (the caller's promise); `offset`s stay in it.
+    let at = |p: *const u8| to(unsafe { p.cast::<T>().read_unaligned() });
+    let step = |p: *const u8, k: usize, stride: isize| unsafe { p.offset(k as isize * stride) };
+    match (shape, strides) {
+        ([], _) => dst[0] = at(src),
+        ([_], &[s]) => {
+            for (k, d) in dst.iter_mut().enumerate() {
+                *d = at(step(src, k, s));
+            }
+        }
+        ([_, 2], &[s, t]) => {
+            for (k, row) in dst.as_chunks_mut::<2>().0.iter_mut().enumerate() {
+                let p = step(src, k, s);
+                *row = [at(p), at(step(p, 1, t))];
+            }
+        }
+        ([_, 3], &[s, t]) => {
+            for (k, row) in dst.as_chunks_mut::<3>().0.iter_mut().enumerate() {
+                let p = step(src, k, s);
+                *row = [at(p), at(step(p, 1, t)), at(step(p, 2, t))];
+            }
+        }
+        ([n, inner @ ..], [s, inner_strides @ ..]) => {
+            let len = dst.len() / n;
+            for (k, part) in dst.chunks_exact_mut(len).enumerate() {
+                // SAFETY: the `k`th sub-array, within the array.
+                unsafe { fill(part, step(src, k, *s), inner, inner_strides, to) };
+            }
+        }
+        // As many strides as dimensions: not reached.
+        _ => {}
+    }
 }
 
 /// The addresses `array`'s elements span, from its lowest byte to past its highest, whatever
