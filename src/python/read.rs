@@ -2,20 +2,23 @@
 //! `out`. Each reader accepts what Python and numpy users hand over (lists and tuples,
 //! any real dtype, C or Fortran order, strided views, read-only or big-endian arrays, and
 //! any number `float()` accepts where a scalar goes) and gives the Rust core float64 data in
-//! C order: in place when it already is so, else converted once (rust-numpy's
-//! [`PyArrayLike`] with [`AllowTypeChange`]). Booleans are not numbers here.
+//! C order: in place when it already is so, else gathered and converted in one pass of our
+//! own into a reused buffer (numpy's conversion for the rare dtypes that pass cannot read);
+//! nested lists and tuples of Python numbers are read directly, not through numpy. Booleans
+//! are not numbers here.
 //!
 //! Errors name the argument: `TypeError` for what is not made of real numbers,
 //! [`InputError`](super::input_error::InputError) (a `ValueError`) for a wrong shape,
 //! layout or value.
 
 use std::ffi::c_int;
+use std::mem::MaybeUninit;
 use std::num::NonZeroUsize;
 use std::sync::OnceLock;
 
 use numpy::ndarray::{Dimension, IxDyn};
 use numpy::npyffi::{self, NPY_TYPES, NpyTypes, PY_ARRAY_API};
-use numpy::{AllowTypeChange, PyArray, PyArrayLike, PyArrayMethods};
+use numpy::{PyArray, PyArrayMethods};
 use numpy::{PyArrayDescr, PyArrayDescrMethods};
 use numpy::{PyReadonlyArray, PyReadwriteArray, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOverflowError, PyTypeError};
@@ -49,7 +52,59 @@ enum Data<'py> {
     /// A C-contiguous, aligned, native float64 array.
     InPlace(Bound<'py, PyArray<f64, IxDyn>>),
     /// The values gathered or converted into memory of our own.
-    Copied(Vec<f64>),
+    Copied(Buffer),
+}
+
+/// A buffer of gathered values, handed back to [`SPARE`] when dropped: the next call that
+/// gathers reuses its memory instead of asking the system for fresh pages. A fresh page costs
+/// a fault and the kernel's zeroing on first touch, which on virtual machines costs more than
+/// gathering the values into it (~25 ns a pair for a float64 `(N, 2)` array here).
+struct Buffer(Vec<f64>);
+
+/// Buffers kept for reuse: at most [`SPARE_BUFFERS`] of them and [`SPARE_BYTES`] in all, the
+/// largest kept first.
+static SPARE: std::sync::Mutex<Vec<Vec<f64>>> = std::sync::Mutex::new(Vec::new());
+const SPARE_BUFFERS: usize = 8;
+const SPARE_BYTES: usize = 64 << 20;
+
+impl Buffer {
+    /// A buffer of `len` values, each written by `write` (which must write all of them): a
+    /// spare one if one is large enough (the smallest such), else a new one.
+    fn filled(len: usize, write: impl FnOnce(&mut [MaybeUninit<f64>])) -> Self {
+        let spare = SPARE.lock().ok().and_then(|mut spare| {
+            let fits = (0..spare.len())
+                .filter(|&k| spare[k].capacity() >= len)
+                .min_by_key(|&k| spare[k].capacity())?;
+            Some(spare.swap_remove(fits))
+        });
+        let mut values = spare.unwrap_or_default();
+        values.clear();
+        values.reserve_exact(len);
+        write(&mut values.spare_capacity_mut()[..len]);
+        // SAFETY: `write` initialised the first `len` elements.
+        unsafe { values.set_len(len) };
+        Self(values)
+    }
+}
+
+impl Drop for Buffer {
+    fn drop(&mut self) {
+        let values = std::mem::take(&mut self.0);
+        let bytes = |v: &Vec<f64>| v.capacity() * size_of::<f64>();
+        if bytes(&values) == 0 || bytes(&values) > SPARE_BYTES {
+            return;
+        }
+        let Ok(mut spare) = SPARE.lock() else { return };
+        spare.push(values);
+        // Keep the largest buffers within the bounds.
+        spare.sort_unstable_by_key(|v| std::cmp::Reverse(v.capacity()));
+        let mut total = 0;
+        spare.retain(|v| {
+            total += bytes(v);
+            total <= SPARE_BYTES
+        });
+        spare.truncate(SPARE_BUFFERS);
+    }
 }
 
 impl<'py> Floats<'py> {
@@ -61,7 +116,7 @@ impl<'py> Floats<'py> {
             // and no other thread modifies a call's inputs). `as_slice` succeeds: `InPlace`
             // holds only C-contiguous, aligned arrays.
             Data::InPlace(a) => unsafe { a.as_slice() }.unwrap_or(&[]),
-            Data::Copied(v) => v,
+            Data::Copied(v) => &v.0,
         }
     }
 
@@ -157,6 +212,9 @@ fn real_array<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Real<'py>> {
 /// `numpy.asarray(obj)`, or an error naming the argument.
 fn asarray<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyUntypedArray>> {
     let py = obj.py();
+    if let Some(array) = nested_numbers(obj) {
+        return Ok(array);
+    }
     // SAFETY: `obj` is a live object; `PyArray_FromAny` returns a new reference or NULL with
     // an exception set, and with no dtype asked for it returns an ndarray.
     let made = unsafe {
@@ -177,6 +235,65 @@ fn asarray<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyUn
         input_error(py, name, None, &reason)
     })?;
     Ok(made.cast_into::<PyUntypedArray>()?)
+}
+
+/// Nested lists or tuples of Python floats and ints (not bools) of a regular shape, read
+/// directly into a new C-ordered float64 array, about ten times as fast as numpy's reading of
+/// them: the values and shape `numpy.asarray(obj)` would hold after `astype(float64)` (an
+/// int converted as numpy converts an int64: to the nearest float64, ties to even). `None`
+/// for anything else (another item type, an int beyond 64 bits, a ragged shape, a scalar),
+/// which numpy then reads.
+fn nested_numbers<'py>(obj: &Bound<'py, PyAny>) -> Option<Bound<'py, PyUntypedArray>> {
+    let mut shape = Vec::new();
+    let mut item = obj.clone();
+    loop {
+        let (len, first) = if let Ok(list) = item.cast::<PyList>() {
+            (list.len(), list.get_item(0))
+        } else if let Ok(tuple) = item.cast::<PyTuple>() {
+            (tuple.len(), tuple.get_item(0))
+        } else {
+            break;
+        };
+        shape.push(len);
+        if len == 0 || shape.len() > 32 {
+            break;
+        }
+        item = first.ok()?;
+    }
+    if shape.is_empty() {
+        return None;
+    }
+    let mut values = Vec::with_capacity(shape.iter().product());
+    read_nested(obj, &shape, &mut values)?;
+    let array = PyArray::from_vec(obj.py(), values).reshape(shape).ok()?;
+    array.into_any().cast_into::<PyUntypedArray>().ok()
+}
+
+/// Appends the numbers of `obj`, nested lists or tuples of `shape`, in C order.
+fn read_nested(obj: &Bound<'_, PyAny>, shape: &[usize], values: &mut Vec<f64>) -> Option<()> {
+    let Some((&len, inner)) = shape.split_first() else {
+        let value = if obj.is_exact_instance_of::<PyFloat>() {
+            obj.cast::<PyFloat>().ok()?.value()
+        } else if obj.is_exact_instance_of::<PyInt>() {
+            obj.extract::<i64>().ok()? as f64
+        } else {
+            return None;
+        };
+        values.push(value);
+        return Some(());
+    };
+    let each = |item: Bound<'_, PyAny>| read_nested(&item, inner, values);
+    if let Ok(list) = obj.cast::<PyList>() {
+        if list.len() != len {
+            return None;
+        }
+        return list.iter().try_for_each(each);
+    }
+    let tuple = obj.cast::<PyTuple>().ok()?;
+    if tuple.len() != len {
+        return None;
+    }
+    tuple.iter().try_for_each(each)
 }
 
 /// `array` (read from `obj`) if its dtype is a real one: a float or integer kind.
@@ -219,7 +336,15 @@ fn native_float64(dtype: &Bound<'_, PyArrayDescr>) -> bool {
     dtype.num() == NPY_TYPES::NPY_DOUBLE as c_int && dtype.is_native_byteorder() != Some(false)
 }
 
-/// The float64 values of a real array, in C order.
+/// The float64 values of a real array, in C order: the one reader of every array argument.
+///
+/// A C-contiguous, aligned, native float64 array is read in place. Any other layout of
+/// float64, float32 or an integer type in this machine's byte order (Fortran order, a column
+/// of a wider array, every other row, negative strides, unaligned) is gathered by [`gather`]
+/// in one pass into memory of our own (a [`Buffer`], reused from call to call), converted as
+/// numpy's casts convert. What remains
+/// (float16, longdouble, byte-swapped) numpy converts: `numpy.ascontiguousarray(array,
+/// dtype=float64)`, read in place.
 fn floats<'py>(real: &Real<'py>) -> PyResult<Floats<'py>> {
     let Real { array, dtype } = real;
     let source = (array.clone(), extent(array, dtype));
@@ -229,14 +354,131 @@ fn floats<'py>(real: &Real<'py>) -> PyResult<Floats<'py>> {
         let data = Data::InPlace(a.clone());
         return Ok(Floats { data, source });
     }
-    let converted: PyArrayLike<'py, f64, IxDyn, AllowTypeChange> = array.extract()?;
-    let data = if converted.is_c_contiguous() && converted.is_aligned() {
-        // A new array (or a view of a native float64 one): this call is its only reader.
-        Data::InPlace((**converted).clone())
-    } else {
-        Data::Copied(converted.as_array().iter().copied().collect())
-    };
-    Ok(Floats { data, source })
+    if let Some(values) = gather(array, dtype) {
+        let data = Data::Copied(values);
+        return Ok(Floats { data, source });
+    }
+    let converted = ascontiguous_float64(array)?;
+    // SAFETY: `numpy.ascontiguousarray(…, dtype=float64)` gives a C-contiguous, aligned array
+    // of native float64; a new one (this call is its only reader) or `array` itself.
+    let a = unsafe { converted.cast_into_unchecked::<PyArray<f64, IxDyn>>() };
+    Ok(Floats {
+        data: Data::InPlace(a),
+        source,
+    })
+}
+
+/// `numpy.ascontiguousarray(array, dtype=numpy.float64)`.
+fn ascontiguous_float64<'py>(array: &Bound<'py, PyUntypedArray>) -> PyResult<Bound<'py, PyAny>> {
+    let py = array.py();
+    static ASCONTIGUOUS: pyo3::sync::PyOnceLock<Py<PyAny>> = pyo3::sync::PyOnceLock::new();
+    static FLOAT64: pyo3::sync::PyOnceLock<Py<PyAny>> = pyo3::sync::PyOnceLock::new();
+    let f = ASCONTIGUOUS.import(py, "numpy", "ascontiguousarray")?;
+    let float64 = FLOAT64.import(py, "numpy", "float64")?;
+    let converted = f.call1((array, float64))?;
+    match converted.cast::<PyUntypedArray>() {
+        Ok(a) if native_float64(&a.dtype()) && a.is_c_contiguous() && a.is_aligned() => {
+            Ok(converted)
+        }
+        _ => Err(PyTypeError::new_err(
+            "numpy.ascontiguousarray gave no C-contiguous float64 array",
+        )),
+    }
+}
+
+/// The values of `array` in C order as float64, in one pass over its memory (its strides,
+/// any sign, any alignment), if its dtype is float64, float32 or an integer type of 1 to 8
+/// bytes in this machine's byte order; `None` for any other dtype.
+///
+/// Each value is converted as numpy's cast (`astype(float64)`) converts it: exactly, or for an
+/// integer beyond 2^53 rounded to the nearest float64 (ties to even).
+fn gather(array: &Bound<'_, PyUntypedArray>, dtype: &Bound<'_, PyArrayDescr>) -> Option<Buffer> {
+    let (kind, size) = (dtype.kind(), dtype.itemsize());
+    let readable = matches!((kind, size), (b'f', 4 | 8) | (b'i' | b'u', 1 | 2 | 4 | 8));
+    if !readable || dtype.is_native_byteorder() == Some(false) {
+        return None;
+    }
+    let shape = array.shape();
+    let strides = array.strides();
+    // SAFETY: a live array's header; its data pointer.
+    let src = unsafe { (*npyffi::_PyArray_GET_ITEM_DATA(array.as_array_ptr())).data }
+        .cast_const()
+        .cast::<u8>();
+    Some(Buffer::filled(shape.iter().product(), |dst| {
+        if dst.is_empty() {
+            return;
+        }
+        // SAFETY (each `fill`): `src`, `shape` and `strides` are the array's own, so every
+        // element read lies in its memory, and the element type is the dtype's (kind and
+        // size); `dst` holds as many elements as the array; nothing writes into the array
+        // meanwhile (the GIL is held: see `Floats`).
+        unsafe {
+            match (kind, size) {
+                (b'f', 8) => fill::<f64>(dst, src, shape, strides, |x| x),
+                (b'f', 4) => fill::<f32>(dst, src, shape, strides, f64::from),
+                (b'i', 8) => fill::<i64>(dst, src, shape, strides, |x| x as f64),
+                (b'i', 4) => fill::<i32>(dst, src, shape, strides, f64::from),
+                (b'i', 2) => fill::<i16>(dst, src, shape, strides, f64::from),
+                (b'i', 1) => fill::<i8>(dst, src, shape, strides, f64::from),
+                (b'u', 8) => fill::<u64>(dst, src, shape, strides, |x| x as f64),
+                (b'u', 4) => fill::<u32>(dst, src, shape, strides, f64::from),
+                (b'u', 2) => fill::<u16>(dst, src, shape, strides, f64::from),
+                (b'u', 1) => fill::<u8>(dst, src, shape, strides, f64::from),
+                // Not reached (`readable`); every element written all the same.
+                _ => dst.fill(MaybeUninit::new(f64::NAN)),
+            }
+        }
+    }))
+}
+
+/// Writes the elements of the strided array at `src` (`shape`, byte `strides`, element type
+/// `T`) into `dst` in C order, each through `to`. Rows of 2 or 3 numbers (the last dimension
+/// of positions and velocities) are read whole: a Fortran-ordered `(N, 2)` array is then two
+/// sequential streams, read at memory speed.
+///
+/// # Safety
+///
+/// `dst` holds the product of `shape` elements, at least one, and each is written; every element
+/// `src + Σ index·stride` is a readable `T` (unaligned allowed).
+unsafe fn fill<T: Copy>(
+    dst: &mut [MaybeUninit<f64>],
+    src: *const u8,
+    shape: &[usize],
+    strides: &[isize],
+    to: impl Fn(T) -> f64 + Copy,
+) {
+    // SAFETY: within the array (the caller's promise); `offset`s stay in it.
+    let at = |p: *const u8| MaybeUninit::new(to(unsafe { p.cast::<T>().read_unaligned() }));
+    let step = |p: *const u8, k: usize, stride: isize| unsafe { p.offset(k as isize * stride) };
+    match (shape, strides) {
+        ([], _) => dst[0] = at(src),
+        ([_], &[s]) => {
+            for (k, d) in dst.iter_mut().enumerate() {
+                *d = at(step(src, k, s));
+            }
+        }
+        ([_, 2], &[s, t]) => {
+            for (k, row) in dst.as_chunks_mut::<2>().0.iter_mut().enumerate() {
+                let p = step(src, k, s);
+                *row = [at(p), at(step(p, 1, t))];
+            }
+        }
+        ([_, 3], &[s, t]) => {
+            for (k, row) in dst.as_chunks_mut::<3>().0.iter_mut().enumerate() {
+                let p = step(src, k, s);
+                *row = [at(p), at(step(p, 1, t)), at(step(p, 2, t))];
+            }
+        }
+        ([n, inner @ ..], [s, inner_strides @ ..]) => {
+            let len = dst.len() / n;
+            for (k, part) in dst.chunks_exact_mut(len).enumerate() {
+                // SAFETY: the `k`th sub-array, within the array.
+                unsafe { fill(part, step(src, k, *s), inner, inner_strides, to) };
+            }
+        }
+        // As many strides as dimensions: not reached; every element written all the same.
+        _ => dst.fill(MaybeUninit::new(f64::NAN)),
+    }
 }
 
 /// The addresses `array`'s elements span, from its lowest byte to past its highest, whatever
