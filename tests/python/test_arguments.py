@@ -42,6 +42,7 @@ ANY_NUMBER = {"float", "huge", "negative", "negative huge"}  # a time, of any si
 THREADS = {"huge", "beyond float", "None"}  # at most the cores there are
 COUNT = {"huge", "beyond float", "None"}  # max_events: beyond 64 bits is no limit
 OPTIONAL = {"None"}  # out=, box= of the calendar
+FLAG = {"bool", "None"}  # progress=: True, False or None (or a tqdm-like bar)
 NOTHING: set[str] = set()  # arrays, paths, indices, restitution (in [0, 1])
 
 
@@ -183,6 +184,7 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
             "restitution": 1.0,
             "t_end": math.inf,
             "max_events": 5,
+            "progress": False,
         },
         {
             "pos": NOTHING,
@@ -194,6 +196,7 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
             "restitution": NOTHING,
             "t_end": NUMBER,
             "max_events": COUNT,
+            "progress": FLAG,
         },
     ),
     "CollisionSchedule": (
