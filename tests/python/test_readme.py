@@ -1,13 +1,16 @@
 """Every ```python block of README.md runs as written (each in a fresh namespace).
 
 Blocks that import an optional package (dask, pooltool) are skipped where it is not
-installed; the first install command of the README and the test command are checked to be
-the ones the README starts with.
+installed, unless ``BALLCOLLIDE_REQUIRE_<PACKAGE>=1`` says it must be there
+(``scripts/test-pooltool`` runs this file in its pooltool environment with
+``BALLCOLLIDE_REQUIRE_POOLTOOL=1``, so every block runs somewhere). The first install
+command of the README and the test command are checked to be the ones it starts with.
 """
 
 from __future__ import annotations
 
 import importlib.util
+import os
 import re
 from pathlib import Path
 
@@ -48,5 +51,7 @@ def test_readme_example_runs(line: int, code: str) -> None:
     for name in OPTIONAL:
         if re.search(rf"^\s*import {name}\b", code, flags=re.MULTILINE):
             if importlib.util.find_spec(name) is None:
+                if os.environ.get(f"BALLCOLLIDE_REQUIRE_{name.upper()}") == "1":
+                    pytest.fail(f"{name} is required here but not installed")
                 pytest.skip(f"{name} is not installed")
     exec(compile(code, f"README.md:{line}", "exec"), {"__name__": "readme_example"})
