@@ -43,6 +43,10 @@ pub use error::{InputError, InputErrorKind};
 pub use motion::Ball;
 pub use path::{Path, Path2, Path3, Segment, Segment2, Segment3};
 
+/// The property tests' case counts (`PROPTEST_CASES`, else the fast tier's).
+#[cfg(test)]
+#[path = "../tests/support/cases.rs"]
+mod test_cases;
 /// The tests' and benchmarks' shared deterministic generator.
 #[cfg(test)]
 #[path = "../tests/support/rng.rs"]

@@ -6,6 +6,9 @@
 //! tolerance, on configurations that are not within rounding of a grazing contact or of a stop
 //! (where the hit/miss answer is legitimately undecided).
 
+#[path = "support/cases.rs"]
+mod cases;
+
 use ballcollide::{Ball, collision_time};
 use nalgebra::{Rotation2, Vector2};
 use proptest::prelude::*;
@@ -110,7 +113,7 @@ fn assert_near(x: Option<f64>, y: Option<f64>, rel: f64) -> Result<(), TestCaseE
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(2000))]
+    #![proptest_config(ProptestConfig::with_cases(cases::cases(500)))]
 
     #[test]
     fn swapping_a_and_b_is_exact(cfg in config()) {

@@ -3,6 +3,8 @@
 //! two, with shared or per-pair parameters; valid input never errors. The fuzz target `batch`
 //! checks the same (docs/fuzzing.md).
 
+#[path = "support/cases.rs"]
+mod cases;
 #[path = "support/exact.rs"]
 mod exact;
 #[path = "support/invariants.rs"]
@@ -16,7 +18,7 @@ proptest! {
     // A fixed seed: the same cases on every run, so that CI is repeatable; the fuzz target
     // draws new ones (docs/fuzzing.md).
     #![proptest_config(ProptestConfig {
-        cases: 600,
+        cases: cases::cases(150),
         rng_seed: proptest::test_runner::RngSeed::Fixed(23),
         ..ProptestConfig::default()
     })]

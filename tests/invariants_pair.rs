@@ -3,6 +3,8 @@
 //! only cuts, and A/B swap, ±0 flips and power-of-two scalings of lengths and of time change
 //! no bit. The fuzz target `pair` checks the same (docs/fuzzing.md).
 
+#[path = "support/cases.rs"]
+mod cases;
 #[path = "support/exact.rs"]
 mod exact;
 #[path = "support/invariants.rs"]
@@ -17,7 +19,7 @@ proptest! {
     // A fixed seed: the same cases on every run, so that CI is repeatable; the fuzz target
     // draws new ones (docs/fuzzing.md).
     #![proptest_config(ProptestConfig {
-        cases: 4000,
+        cases: cases::cases(1000),
         rng_seed: proptest::test_runner::RngSeed::Fixed(21),
         ..ProptestConfig::default()
     })]

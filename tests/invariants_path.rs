@@ -6,6 +6,8 @@
 //! thread and two) gives the single query's bits. The fuzz target `path` checks the same
 //! (docs/fuzzing.md).
 
+#[path = "support/cases.rs"]
+mod cases;
 #[path = "support/exact.rs"]
 mod exact;
 #[path = "support/invariants.rs"]
@@ -25,7 +27,7 @@ proptest! {
     // A fixed seed: the same cases on every run, so that CI is repeatable; the fuzz target
     // draws new ones (docs/fuzzing.md).
     #![proptest_config(ProptestConfig {
-        cases: 2000,
+        cases: cases::cases(500),
         rng_seed: proptest::test_runner::RngSeed::Fixed(25),
         ..ProptestConfig::default()
     })]

@@ -4,6 +4,8 @@
 //! flips and power-of-two scalings of lengths change no bit; valid input never errors. The
 //! fuzz target `scene` checks the same (docs/fuzzing.md).
 
+#[path = "support/cases.rs"]
+mod cases;
 #[path = "support/exact.rs"]
 mod exact;
 #[path = "support/invariants.rs"]
@@ -17,7 +19,7 @@ proptest! {
     // A fixed seed: the same cases on every run, so that CI is repeatable; the fuzz target
     // draws new ones (docs/fuzzing.md).
     #![proptest_config(ProptestConfig {
-        cases: 400,
+        cases: cases::cases(100),
         rng_seed: proptest::test_runner::RngSeed::Fixed(22),
         ..ProptestConfig::default()
     })]

@@ -20,6 +20,9 @@
 //! Every property runs a fixed number of cases from a fixed seed, so that a run is the same
 //! on every machine.
 
+#[path = "support/cases.rs"]
+mod cases;
+
 use ballcollide::batch::{PathPairs, PathRows, PerPair, Threads, path_collision_times};
 use ballcollide::path::{Path, Segment};
 use ballcollide::{Ball, CollisionOptions, InputError, InputErrorKind};
@@ -98,10 +101,10 @@ fn bits(t: Option<f64>) -> Option<u64> {
     t.map(f64::to_bits)
 }
 
-/// A fixed number of cases from a fixed seed.
-fn config(cases: u32, seed: u64) -> ProptestConfig {
+/// `fast` cases in the fast tier (`PROPTEST_CASES` in the thorough one) from a fixed seed.
+fn config(fast: u32, seed: u64) -> ProptestConfig {
     ProptestConfig {
-        cases,
+        cases: cases::cases(fast),
         rng_seed: RngSeed::Fixed(seed),
         max_global_rejects: 4096,
         ..ProptestConfig::default()
@@ -834,7 +837,7 @@ fn check_batch<const D: usize>(case: &BatchCase<D>) -> Result<(), TestCaseError>
 // The properties
 
 proptest! {
-    #![proptest_config(config(1500, 0x17_0001))]
+    #![proptest_config(config(400, 0x17_0001))]
 
     #[test]
     fn swapping_a_and_b_is_exact_in_2d(pair in pair::<2>()) {
@@ -1018,7 +1021,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(config(1000, 0x17_0002))]
+    #![proptest_config(config(250, 0x17_0002))]
 
     #[test]
     fn translation_moves_nothing_in_2d(
@@ -1237,7 +1240,7 @@ fn check_split<const D: usize>(
 }
 
 proptest! {
-    #![proptest_config(config(3000, 0x17_0003))]
+    #![proptest_config(config(750, 0x17_0003))]
 
     #[test]
     fn answers_are_valid_for_any_valid_input_in_2d((pair, t_max) in wild_pair::<2>()) {
@@ -1353,7 +1356,7 @@ fn horizon_error(t_max: f64) -> InputError {
 }
 
 proptest! {
-    #![proptest_config(config(500, 0x17_0004))]
+    #![proptest_config(config(125, 0x17_0004))]
 
     #[test]
     fn a_non_finite_value_names_its_field_and_segment_in_2d(
@@ -1543,7 +1546,7 @@ fn batch_error(batch: &Batch) -> String {
 }
 
 proptest! {
-    #![proptest_config(config(300, 0x17_0005))]
+    #![proptest_config(config(75, 0x17_0005))]
 
     #[test]
     fn a_bad_value_in_a_batch_names_the_argument_the_pair_and_the_segment(
@@ -1811,7 +1814,7 @@ fn fuzz_value() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(config(1500, 0x17_0006))]
+    #![proptest_config(config(400, 0x17_0006))]
 
     /// Any shapes and values: an answer or an error, never a panic; and an answer exactly when
     /// every pair is valid, the same as the single query's, or the error of the lowest invalid

@@ -18,6 +18,9 @@
 //! with a margin of about 6, yet any real loss of accuracy in the solver (a missed polishing
 //! step, a wrong branch) shows up far above it.
 
+#[path = "support/cases.rs"]
+mod cases;
+
 use ballcollide::poly::{solve_cubic, solve_quartic};
 use proptest::prelude::*;
 
@@ -88,7 +91,7 @@ fn lead() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 4000, max_global_rejects: 100_000, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: cases::cases(1000), max_global_rejects: 100_000, ..ProptestConfig::default() })]
 
     #[test]
     fn quartic_recovers_well_separated_roots(

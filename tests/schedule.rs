@@ -6,6 +6,9 @@
 //! at rest, piecewise with jumps, accelerating for ever; on dyadic grids (exact contacts,
 //! tangencies, ties) and with full-mantissa numbers; with and without walls and a horizon.
 
+#[path = "support/cases.rs"]
+mod cases;
+
 use ballcollide::path::{Path, Segment};
 use ballcollide::schedule::{
     Collision, CollisionSchedule, Event, FrictionPath, ScheduleOptions, Side, WallContact, Walls,
@@ -19,10 +22,10 @@ use proptest::test_runner::RngSeed;
 mod rng;
 use rng::Rng;
 
-/// A fixed number of cases from a fixed seed.
-fn config(cases: u32, seed: u64) -> ProptestConfig {
+/// `fast` cases in the fast tier (`PROPTEST_CASES` in the thorough one) from a fixed seed.
+fn config(fast: u32, seed: u64) -> ProptestConfig {
     ProptestConfig {
-        cases,
+        cases: cases::cases(fast),
         rng_seed: RngSeed::Fixed(seed),
         ..ProptestConfig::default()
     }

@@ -689,8 +689,7 @@ mod tests {
     }
 
     fn lanes_settle_what_the_path_bounds_settle<const K: usize>() {
-        if !std::arch::is_x86_feature_detected!("avx512f") {
-            eprintln!("no AVX-512 here: the lanes are not run");
+        if !crate::batch::X86Level::avx512_for_tests() {
             return;
         }
         let mut rng = Rng(K as u64);
@@ -743,8 +742,7 @@ mod tests {
     /// magnitudes are ordinary (no underflow or overflow in sight), they settle exactly the
     /// pairs whose every window the pair's own window screens prove apart.
     fn lanes_settle_what_the_window_screens_settle<const K: usize>() {
-        if !std::arch::is_x86_feature_detected!("avx512f") {
-            eprintln!("no AVX-512 here: the lanes are not run");
+        if !crate::batch::X86Level::avx512_for_tests() {
             return;
         }
         let mut rng = Rng(100 + K as u64);

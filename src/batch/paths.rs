@@ -723,7 +723,7 @@ mod tests {
                 assert_eq!(done, Ok(()));
                 assert_eq!(bits(&portable), bits(&copy));
             }
-            if level == X86Level::Avx512 {
+            if X86Level::avx512_for_tests() {
                 // SAFETY: AVX-512 F, VL and DQ are supported, just detected.
                 let done = unsafe { path_chunk_avx512(&pairs, 0, &mut copy, &shared) };
                 assert_eq!(done, Ok(()));

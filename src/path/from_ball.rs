@@ -175,7 +175,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(4000))]
+        #![proptest_config(ProptestConfig::with_cases(crate::test_cases::cases(1000)))]
         #[test]
         fn positions_and_velocities_agree_to_a_couple_of_ulps(
             p in prop::array::uniform2(-3.0..3.0f64),

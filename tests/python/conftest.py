@@ -6,18 +6,16 @@ import os
 
 from hypothesis import HealthCheck, settings
 
-# Property tests: no deadline (the first call of a process may be slow), more examples in CI.
-settings.register_profile(
-    "default", deadline=None, suppress_health_check=[HealthCheck.too_slow], max_examples=150
-)
-settings.register_profile(
-    "ci",
+# Property tests, in two tiers: "fast" (the default; ./scripts/test) and "thorough" (.ci/run
+# sets BALLCOLLIDE_HYPOTHESIS_PROFILE=thorough). No deadline (the first call of a process may be
+# slow). Under CI the examples are the same on every run, so that CI is repeatable; local runs
+# and the fuzz targets (docs/fuzzing.md) draw new ones.
+_COMMON = dict(
     deadline=None,
     suppress_health_check=[HealthCheck.too_slow],
-    max_examples=400,
+    derandomize=bool(os.environ.get("CI")),
     print_blob=True,
-    # The same examples on every CI run, so that CI is repeatable; local runs and the fuzz
-    # targets (docs/fuzzing.md) draw new ones.
-    derandomize=True,
 )
-settings.load_profile("ci" if os.environ.get("CI") else "default")
+settings.register_profile("fast", max_examples=50, **_COMMON)
+settings.register_profile("thorough", max_examples=400, **_COMMON)
+settings.load_profile(os.environ.get("BALLCOLLIDE_HYPOTHESIS_PROFILE", "fast"))
