@@ -18,7 +18,6 @@
 //! ([`first_window_lanes`](super::first_window_lanes)); what is left goes on one by one.
 
 #[cfg(target_arch = "x86_64")]
-use super::X86Level;
 use super::first_window_lanes::{HeldPairs, eighth_contacts};
 #[cfg(target_arch = "x86_64")]
 use super::path_lanes::{LANES as LANE_WIDTH, settled};
@@ -28,6 +27,7 @@ use crate::collision::path_contact::{Prior, first_bounded_contact};
 use crate::collision::stage_counts::{Stage, count};
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::path::{Names, Segment, locate, segments_from_rows};
+use crate::simd::Level;
 
 /// One side of a batch of path pairs: `N` paths of `segments` rows each, row `k` of path `i`
 /// at `i·segments + k` of every slice.
@@ -144,27 +144,30 @@ pub fn path_collision_times<const D: usize>(
     threads: Threads,
 ) -> Result<(), InputError> {
     let shared = check_path_pairs(pairs, out.len())?;
+    let level = crate::simd::current();
     run_chunks(out, threads, |offset, chunk| {
-        path_chunk(pairs, offset, chunk, &shared)
+        path_chunk(level, pairs, offset, chunk, &shared)
     })
 }
 
 /// The answers of pairs `offset..` into `chunk`, in the widest copy of [`path_chunk_portable`]
 /// this CPU runs (the copies compute the same bits: only the instructions differ).
 fn path_chunk<const D: usize>(
+    level: Level,
     pairs: &PathPairs<'_, D>,
     offset: usize,
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
-    #[cfg(target_arch = "x86_64")]
-    match X86Level::detect() {
-        // SAFETY: the CPU supports the features each copy is compiled for, just detected.
-        X86Level::Avx512 => return unsafe { path_chunk_avx512(pairs, offset, chunk, shared) },
-        X86Level::Avx2 => return unsafe { path_chunk_avx2(pairs, offset, chunk, shared) },
-        X86Level::Baseline => {}
+    match level {
+        // SAFETY: `level` is supported by this CPU (`simd` hands out no other), and each copy
+        // needs only its level's features.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { path_chunk_avx512(pairs, offset, chunk, shared) },
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2Fma => unsafe { path_chunk_avx2(pairs, offset, chunk, shared) },
+        _ => path_chunk_portable(pairs, offset, chunk, shared),
     }
-    path_chunk_portable(pairs, offset, chunk, shared)
 }
 
 /// [`path_chunk_portable`] compiled with AVX2 and FMA enabled.
@@ -711,24 +714,11 @@ mod tests {
             let single = first_path_contact_of(&path(&pairs.a), &path(&pairs.b), 0.3);
             assert_eq!(single.to_bits(), portable[i].to_bits(), "pair {i}");
         }
-        let mut copy = vec![0.0; n];
-        assert_eq!(path_chunk(&pairs, 0, &mut copy, &shared), Ok(()));
-        assert_eq!(bits(&portable), bits(&copy));
-        #[cfg(target_arch = "x86_64")]
-        {
-            let level = X86Level::detect();
-            if level != X86Level::Baseline {
-                // SAFETY: AVX2 and FMA are supported (both vector levels include them).
-                let done = unsafe { path_chunk_avx2(&pairs, 0, &mut copy, &shared) };
-                assert_eq!(done, Ok(()));
-                assert_eq!(bits(&portable), bits(&copy));
-            }
-            if level == X86Level::Avx512 {
-                // SAFETY: AVX-512 F, VL and DQ are supported, just detected.
-                let done = unsafe { path_chunk_avx512(&pairs, 0, &mut copy, &shared) };
-                assert_eq!(done, Ok(()));
-                assert_eq!(bits(&portable), bits(&copy));
-            }
+        for level in crate::simd::test_levels() {
+            let mut copy = vec![0.0; n];
+            assert_eq!(path_chunk(level, &pairs, 0, &mut copy, &shared), Ok(()));
+            assert_eq!(bits(&portable), bits(&copy), "{level}");
+            eprintln!("path chunk at {level}: same bits as the portable copy");
         }
     }
 
