@@ -7,10 +7,9 @@
 //! answers are identical, and so are the answers for any number of threads.
 
 mod first_window_lanes;
-#[cfg(target_arch = "x86_64")]
+mod lane_ops;
 mod path_lanes;
 mod paths;
-#[cfg(target_arch = "x86_64")]
 mod window_lanes;
 
 pub use paths::{PathPairs, PathRows, path_collision_times, path_positions_at};

@@ -9,8 +9,8 @@
 //! [`path_collision_time`](crate::path_collision_time), so batch and single answers are
 //! identical, and so are the answers for any number of threads.
 //!
-//! On CPUs with AVX-512, rows of 2 and 3 segments (a friction ball's, a pool ball's) first go
-//! through the path bounds and the chord normals eight pairs at a time
+//! At every SIMD level ([`simd`](crate::simd)), rows of 2 and 3 segments (a friction ball's,
+//! a pool ball's) first go through the path bounds and the chord normals eight pairs at a time
 //! ([`path_lanes`](super::path_lanes)), then the window screens on every window of the pairs
 //! left ([`window_lanes`](super::window_lanes)): the same proofs, to the bit, on the pairs they
 //! can take whole, at a fraction of the cost. The pairs they take and do not settle are held
@@ -197,7 +197,7 @@ unsafe fn path_chunk_avx512<const D: usize>(
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
-    path_chunk_in::<D, true>(pairs, offset, chunk, shared)
+    path_chunk_portable(pairs, offset, chunk, shared)
 }
 
 /// Every pair of the chunk in turn, with one buffer per side reused for every pair.
@@ -208,39 +208,27 @@ fn path_chunk_portable<const D: usize>(
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
-    path_chunk_in::<D, false>(pairs, offset, chunk, shared)
-}
-
-/// [`path_chunk_portable`], with the lane-wise screens in front where `LANES` (only in the
-/// AVX-512 copy, whose CPU runs them).
-#[inline(always)]
-fn path_chunk_in<const D: usize, const LANES: bool>(
-    pairs: &PathPairs<'_, D>,
-    offset: usize,
-    chunk: &mut [f64],
-    shared: &SharedPaths<D>,
-) -> Result<(), InputError> {
     // The common row counts, a friction ball's (move, rest) and a pool ball's (slide, roll,
     // rest), with the loops over the rows unrolled: 6 % less time per pool-table pair.
     match (pairs.a.segments, pairs.b.segments) {
-        (2, 2) => path_pairs_in_turn::<D, 2, LANES>(pairs, offset, chunk, shared),
-        (3, 3) => path_pairs_in_turn::<D, 3, LANES>(pairs, offset, chunk, shared),
-        _ => path_pairs_in_turn::<D, 0, false>(pairs, offset, chunk, shared),
+        (2, 2) => path_pairs_in_turn::<D, 2>(pairs, offset, chunk, shared),
+        (3, 3) => path_pairs_in_turn::<D, 3>(pairs, offset, chunk, shared),
+        _ => path_pairs_in_turn::<D, 0>(pairs, offset, chunk, shared),
     }
 }
 
-/// [`path_chunk_portable`] for rows of `K` segments on both sides (`K = 0`: any number); with
-/// `LANES`, blocks of pairs first go through the lane-wise screens
+/// [`path_chunk_portable`] for rows of `K` segments on both sides (`K = 0`: any number); for
+/// `K > 0`, blocks of pairs first go through the lane-wise screens
 /// ([`path_lanes`](super::path_lanes)), where neither side is broadcast.
 #[inline(always)]
-fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
+fn path_pairs_in_turn<const D: usize, const K: usize>(
     pairs: &PathPairs<'_, D>,
     offset: usize,
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
     let mut buffers = [PathBuffer::new(), PathBuffer::new()];
-    let lanes = LANES && K > 0 && shared[0].is_none() && shared[1].is_none();
+    let lanes = K > 0 && shared[0].is_none() && shared[1].is_none();
     let mut held = HeldPairs::default();
     // Block by block: the pairs the lanes settle all at once (most pairs: they then cost no
     // work of their own here); those they take and leave held for the first-window lanes,
@@ -260,11 +248,9 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
             let here = block * LANE_WIDTH;
             let len = LANE_WIDTH.min(chunk.len() - here);
             let (settled, taken) = if lanes && len == LANE_WIDTH {
-                // SAFETY: `LANES` is set only in the AVX-512 copy, run where the CPU has it;
-                // the sides were checked to hold a path per pair in rows of `K`, the per-pair
+                // The sides were checked to hold a path per pair in rows of `K`, the per-pair
                 // values to have one per pair, and the block is in range.
-                let (bounds, chords, windows, taken) =
-                    unsafe { settled_block::<D, K>(pairs, offset + here) };
+                let (bounds, chords, windows, taken) = settled_block::<D, K>(pairs, offset + here);
                 count_settled(bounds, chords, windows);
                 (u32::from(bounds | chords | windows), u32::from(taken))
             } else {
@@ -378,43 +364,23 @@ fn count_settled(bounds: u8, chords: u8, windows: u8) {
 }
 
 /// The pairs of the block at `first` that the lane-wise screens settle, by the path bounds, by
-/// the chords and by their windows (bit `l` for pair `first + l`).
+/// the chords and by their windows (bit `l` for pair `first + l`), and those they take.
 ///
-/// # Safety
-/// As [`settled`]: the CPU has AVX-512 F, and the block is in range of checked sides that hold
-/// a path per pair in rows of `K`.
-#[cfg(target_arch = "x86_64")]
+/// # Panics
+/// As [`settled`]: unless the block is in range of checked sides that hold a path per pair in
+/// rows of `K`.
 #[inline(always)]
-unsafe fn settled_block<const D: usize, const K: usize>(
+fn settled_block<const D: usize, const K: usize>(
     pairs: &PathPairs<'_, D>,
     first: usize,
 ) -> (u8, u8, u8, u8) {
-    // SAFETY: the caller's promise, passed on.
-    let settled = unsafe { settled::<D, K>(pairs, first) };
+    let settled = settled::<D, K>(pairs, first);
     (
         settled.bounds,
         settled.chords,
         settled.windows,
         settled.taken,
     )
-}
-
-/// Without the lanes (other CPUs): nothing settled.
-#[cfg(not(target_arch = "x86_64"))]
-const LANE_WIDTH: usize = 8;
-
-/// Without the lanes (other CPUs): nothing settled. Never called (the lanes run only in the
-/// AVX-512 copy).
-///
-/// # Safety
-/// None needed.
-#[cfg(not(target_arch = "x86_64"))]
-#[inline(always)]
-unsafe fn settled_block<const D: usize, const K: usize>(
-    _pairs: &PathPairs<'_, D>,
-    _first: usize,
-) -> (u8, u8, u8, u8) {
-    (0, 0, 0, 0)
 }
 
 /// The broadcast paths of a batch of path pairs (A's, B's), read and checked once, with their
