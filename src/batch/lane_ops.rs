@@ -34,11 +34,10 @@ fn zip(x: V, y: V, f: impl Fn(f64, f64) -> f64) -> V {
 
 #[inline(always)]
 fn mask(x: V, y: V, f: impl Fn(f64, f64) -> bool) -> Mask {
-    let mut bits = 0;
-    for l in 0..LANES {
-        bits |= Mask::from(f(x[l], y[l])) << l;
-    }
-    bits
+    // A byte of 0 or 1 per lane, packed into bits by one multiply (byte `l` to bit `l` of
+    // the top byte): the compares stay vector compares.
+    let bytes: [u8; LANES] = std::array::from_fn(|l| u8::from(f(x[l], y[l])));
+    (u64::from_le_bytes(bytes).wrapping_mul(0x0102_0408_1020_4080) >> 56) as Mask
 }
 
 /// `x` in every lane.

@@ -439,6 +439,21 @@ mod tests {
                 portable,
                 "{level}: {pairs:?}"
             );
+            // The AVX-512 level's intrinsics twin, which the batch runs there.
+            #[cfg(target_arch = "x86_64")]
+            if level == Level::Avx512 {
+                // SAFETY: the CPU has AVX-512 F (the level is supported); the block holds
+                // LANES paths of K rows a side.
+                let twin = unsafe { super::super::path_lanes_avx512::settled::<2, K>(pairs, 0) };
+                let twin = (twin.bounds, twin.chords, twin.windows, twin.taken);
+                let ours = (
+                    portable.bounds,
+                    portable.chords,
+                    portable.windows,
+                    portable.taken,
+                );
+                assert_eq!(twin, ours, "intrinsics: {pairs:?}");
+            }
         }
         portable
     }
