@@ -7,11 +7,20 @@
 //! answers are identical, and so are the answers for any number of threads.
 
 mod first_window_lanes;
-#[cfg(target_arch = "x86_64")]
+// The generic lanes are built and tested at every level, but the batch runs them nowhere yet
+// (slower than no lanes at AVX2 as the compiler builds them today; AVX-512 runs their
+// intrinsics twin): see `paths::path_chunk_avx2`.
+#[cfg_attr(not(test), allow(dead_code))]
+mod lane_ops;
+#[cfg_attr(not(test), allow(dead_code))]
 mod path_lanes;
-mod paths;
 #[cfg(target_arch = "x86_64")]
+mod path_lanes_avx512;
+mod paths;
+#[cfg_attr(not(test), allow(dead_code))]
 mod window_lanes;
+#[cfg(target_arch = "x86_64")]
+mod window_lanes_avx512;
 
 pub use paths::{PathPairs, PathRows, path_collision_times, path_positions_at};
 #[cfg(feature = "python")]
@@ -36,6 +45,7 @@ use crate::error::{
     InputError, InputErrorKind, check_friction, check_horizon, check_radius, finite,
 };
 use crate::motion::Ball;
+use crate::simd::{self, Level};
 
 /// A scalar parameter of a batch: one value for every pair, or one per pair.
 ///
@@ -154,8 +164,9 @@ pub fn collision_times(
 ) -> Result<(), InputError> {
     let n = out.len();
     check_lengths(pairs, n)?;
+    let level = simd::current();
     run_chunks(out, threads, |offset, chunk| {
-        solve_chunk(pairs, offset, chunk)
+        solve_chunk(level, pairs, offset, chunk)
     })
 }
 
@@ -164,7 +175,8 @@ pub fn collision_times(
 /// and the compiler turns the block loops into vector code.
 const LANES: usize = 8;
 
-/// The collision times of pairs `offset..offset + out.len()`.
+/// The collision times of pairs `offset..offset + out.len()`, at `level` (the batch's, from
+/// [`simd::current`](crate::simd::current)).
 ///
 /// On x86-64 CPUs with AVX-512 (or AVX2 and FMA) the lane-wise tests run in 8-wide (4-wide)
 /// vectors: copies of the same code compiled for those features; elsewhere in whatever the
@@ -172,61 +184,20 @@ const LANES: usize = 8;
 /// multiply-adds only where written (`mul_add`, a library call without the FMA feature, one
 /// instruction with it: the same exact result), so all copies give the same bits (a test
 /// checks it).
-fn solve_chunk(pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) -> Result<(), InputError> {
-    #[cfg(target_arch = "x86_64")]
-    match X86Level::detect() {
-        // SAFETY: the CPU supports the features each copy is compiled for, just detected.
-        X86Level::Avx512 => return unsafe { solve_chunk_avx512(pairs, offset, out) },
-        X86Level::Avx2 => return unsafe { solve_chunk_avx2(pairs, offset, out) },
-        X86Level::Baseline => {}
-    }
-    solve_chunk_portable(pairs, offset, out)
-}
-
-/// The widest x86-64 vector extensions that the batch has a copy of its loops for.
-#[cfg(target_arch = "x86_64")]
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum X86Level {
-    /// AVX-512 F, VL and DQ, with AVX2 and FMA.
-    Avx512,
-    /// AVX2 and FMA.
-    Avx2,
-    /// Neither.
-    Baseline,
-}
-
-#[cfg(target_arch = "x86_64")]
-impl X86Level {
-    /// What this CPU supports (cached by the standard library after the first call).
-    pub(crate) fn detect() -> Self {
-        use std::arch::is_x86_feature_detected as has;
-        let avx2 = has!("avx2") && has!("fma");
-        if avx2 && has!("avx512f") && has!("avx512vl") && has!("avx512dq") {
-            Self::Avx512
-        } else if avx2 {
-            Self::Avx2
-        } else {
-            Self::Baseline
-        }
-    }
-
-    /// For the tests of the AVX-512 copies: whether this CPU runs them. Without AVX-512 such a
-    /// test can only say so and pass, so where the copies must be tested (CI sets
-    /// `BALLCOLLIDE_REQUIRE_AVX512=1`) a CPU without them fails the test instead.
-    #[cfg(test)]
-    pub(crate) fn avx512_for_tests() -> bool {
-        if Self::detect() == Self::Avx512 {
-            return true;
-        }
-        assert!(
-            std::env::var_os("BALLCOLLIDE_REQUIRE_AVX512").is_none_or(|v| v != "1"),
-            "BALLCOLLIDE_REQUIRE_AVX512=1, but this CPU lacks AVX-512 F, VL or DQ: \
-             the AVX-512 copies cannot be tested here"
-        );
-        eprintln!(
-            "no AVX-512 here: its copies are not tested (BALLCOLLIDE_REQUIRE_AVX512=1 fails)"
-        );
-        false
+fn solve_chunk(
+    level: Level,
+    pairs: &Pairs<'_>,
+    offset: usize,
+    out: &mut [f64],
+) -> Result<(), InputError> {
+    match level {
+        // SAFETY: `level` is supported by this CPU (`simd` hands out no other), and each copy
+        // needs only its level's features.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { solve_chunk_avx512(pairs, offset, out) },
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2Fma => unsafe { solve_chunk_avx2(pairs, offset, out) },
+        _ => solve_chunk_portable(pairs, offset, out),
     }
 }
 
@@ -1020,24 +991,12 @@ mod tests {
         let mut portable = vec![0.0; r.pos_a.len()];
         assert_eq!(solve_chunk_portable(&p, 0, &mut portable), Ok(()));
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-        let mut dispatched = vec![0.0; r.pos_a.len()];
-        assert_eq!(solve_chunk(&p, 0, &mut dispatched), Ok(()));
-        assert_eq!(bits(&portable), bits(&dispatched));
-        // Every copy this CPU can run, whichever the dispatch picks.
-        #[cfg(target_arch = "x86_64")]
-        {
-            let level = X86Level::detect();
+        // Every copy this CPU can run, through the dispatch.
+        for level in crate::simd::test_levels() {
             let mut copy = vec![0.0; r.pos_a.len()];
-            if level != X86Level::Baseline {
-                // SAFETY: AVX2 and FMA are supported (both vector levels include them).
-                assert_eq!(unsafe { solve_chunk_avx2(&p, 0, &mut copy) }, Ok(()));
-                assert_eq!(bits(&portable), bits(&copy));
-            }
-            if X86Level::avx512_for_tests() {
-                // SAFETY: AVX-512 F, VL and DQ are supported, just detected.
-                assert_eq!(unsafe { solve_chunk_avx512(&p, 0, &mut copy) }, Ok(()));
-                assert_eq!(bits(&portable), bits(&copy));
-            }
+            assert_eq!(solve_chunk(level, &p, 0, &mut copy), Ok(()));
+            assert_eq!(bits(&portable), bits(&copy), "{level}");
+            eprintln!("friction lanes at {level}: same bits as the portable copy");
         }
         let (mut apart, mut closed) = (0, 0);
         let one = |i: usize| PairInput {

@@ -36,6 +36,7 @@ pub mod poly;
 mod python;
 pub mod scene;
 pub mod schedule;
+pub mod simd;
 
 pub use coefficients::Gap;
 pub use collision::{CollisionOptions, collision_time, collision_time_with, path_collision_time};

@@ -1,6 +1,7 @@
 //! The batch's invariants (`tests/support/invariants.rs`) on inputs drawn across the whole
 //! float range: every pair's time is the scalar search's, bit for bit, on one thread and on
-//! two, with shared or per-pair parameters; valid input never errors. The fuzz target `batch`
+//! two, with shared or per-pair parameters, at every SIMD level this CPU has; valid input
+//! never errors. The fuzz target `batch`
 //! checks the same (docs/fuzzing.md).
 
 #[path = "support/cases.rs"]
@@ -25,6 +26,10 @@ proptest! {
 
     #[test]
     fn batch_equals_the_scalar_search((cases, shared) in strategies::batch_case()) {
-        invariants::batch(&cases, shared).map_err(TestCaseError::fail)?;
+        // At every SIMD level this CPU has (`BALLCOLLIDE_REQUIRE_SIMD` makes a missing one fail).
+        for level in ballcollide::simd::test_levels() {
+            ballcollide::simd::with_level(level, || invariants::batch(&cases, shared))
+                .map_err(|e| TestCaseError::fail(format!("at {level}: {e}")))?;
+        }
     }
 }

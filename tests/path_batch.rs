@@ -9,6 +9,7 @@ use ballcollide::batch::{
 };
 use ballcollide::collision::path_collision_time_unscreened;
 use ballcollide::path::Path;
+use ballcollide::simd::{test_levels, with_level};
 use ballcollide::{CollisionOptions, path_collision_time};
 
 #[path = "support/rng.rs"]
@@ -149,17 +150,27 @@ fn check_batch<const D: usize>(seed: u64) {
     }
 }
 
+/// Runs `check` at every SIMD level this CPU has (`BALLCOLLIDE_REQUIRE_SIMD=avx512,avx2`
+/// makes a missing level fail), naming them.
+fn at_every_level(what: &str, check: impl Fn()) {
+    let levels = test_levels();
+    for &level in &levels {
+        with_level(level, &check);
+    }
+    eprintln!("{what}: the single query's bits at every level of {levels:?}");
+}
+
 #[test]
 fn the_batch_is_the_single_query_bit_for_bit_in_2d() {
-    check_batch::<2>(17);
+    at_every_level("2-D paths", || check_batch::<2>(17));
 }
 
 #[test]
 fn the_batch_is_the_single_query_bit_for_bit_in_3d() {
-    check_batch::<3>(18);
+    at_every_level("3-D paths", || check_batch::<3>(18));
 }
 
-/// Rows of `k` segments on both sides, every row used: what the AVX-512 lanes screen (whole
+/// Rows of `k` segments on both sides, every row used: what the lanes screen (whole
 /// paths, then every window at once) before the pairs left are searched without the screens
 /// the lanes ran. The answers must be the single query's (with every screen), bit for bit.
 fn check_lane_shaped<const D: usize>(seed: u64, k: usize) {
@@ -199,10 +210,12 @@ fn check_lane_shaped<const D: usize>(seed: u64, k: usize) {
 
 #[test]
 fn rows_the_lanes_take_get_the_single_query_bit_for_bit() {
-    for (k, seed) in [(2, 41), (3, 42)] {
-        check_lane_shaped::<2>(seed, k);
-        check_lane_shaped::<3>(seed + 10, k);
-    }
+    at_every_level("rows the lanes take", || {
+        for (k, seed) in [(2, 41), (3, 42)] {
+            check_lane_shaped::<2>(seed, k);
+            check_lane_shaped::<3>(seed + 10, k);
+        }
+    });
 }
 
 #[test]

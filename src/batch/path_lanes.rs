@@ -1,6 +1,7 @@
 //! The whole-path screens ([`PathBounds::apart`], then [`apart_across_chords`]), eight pairs
-//! at a time with AVX-512: a block of pairs of paths read from their rows, every value checked
-//! and every path's box and chord spans formed in the vector registers, one pair per lane,
+//! at a time, written once over `[f64; 8]` lanes ([`lane_ops`](super::lane_ops)) and compiled
+//! in each copy of the batch (AVX-512, AVX2 + FMA, portable: [`simd`](crate::simd)): a block
+//! of pairs of paths read from their rows, every value checked and every path's box and chord spans formed in the vector registers, one pair per lane,
 //! without a branch on the data ([`settled`]); then, for the pairs they leave, the window
 //! screens on every window of the pair ([`window_lanes`](super::window_lanes)). The pairs they
 //! settle (valid, proven apart) answer "none" at once; the others go on to the pair's own
@@ -24,11 +25,9 @@
 //! [`PathBounds::reach`]: crate::collision::path_bounds::PathBounds
 //! [`apart_across_chords`]: crate::collision::chord_normals
 
-use core::arch::x86_64::{
-    __m512d, __mmask8, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm512_abs_pd,
-    _mm512_add_pd, _mm512_cmp_pd_mask, _mm512_div_pd, _mm512_loadu_epi64, _mm512_loadu_pd,
-    _mm512_mask_blend_pd, _mm512_max_pd, _mm512_min_pd, _mm512_mul_pd, _mm512_permutex2var_pd,
-    _mm512_set1_pd, _mm512_setzero_pd, _mm512_sqrt_pd, _mm512_sub_pd,
+#[allow(unused_imports)]
+use super::lane_ops::{
+    V, abs, add, blend, div, eq, ge, gt, lt, max, min, mul, ne, splat, sqrt, sub, zero,
 };
 
 use super::PerPair;
@@ -36,37 +35,36 @@ use super::paths::{PathPairs, PathRows};
 use super::window_lanes::{LaneSide, windows_apart};
 use crate::collision::window_box::{MARGIN, NORMAL_FLOOR};
 
-/// Pairs per block: one vector of eight `f64`s.
-pub(crate) const LANES: usize = 8;
+pub(crate) use super::lane_ops::LANES;
 
 /// The pairs of a block that the lanes settle, by screen (bit `l` for the block's pair `l`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Settled {
     /// The path bounds are apart.
-    pub(crate) bounds: __mmask8,
+    pub(crate) bounds: u8,
     /// The path bounds are not, the spans across a chord are.
-    pub(crate) chords: __mmask8,
+    pub(crate) chords: u8,
     /// Neither is, every window is proven apart ([`window_lanes`](super::window_lanes)).
-    pub(crate) windows: __mmask8,
+    pub(crate) windows: u8,
     /// Taken whole by the lanes (valid, every row used, a plain reach): where none of the
     /// above holds, the pair's own whole-path screens fail too.
-    pub(crate) taken: __mmask8,
+    pub(crate) taken: u8,
 }
 
 /// One side's rows of a block, a lane each: row `k`'s start and its position, velocity and
 /// acceleration on each axis.
 pub(super) struct LaneRows<const D: usize, const K: usize> {
-    pub(super) s: [__m512d; K],
-    pub(super) p: [[__m512d; D]; K],
-    pub(super) v: [[__m512d; D]; K],
-    pub(super) a: [[__m512d; D]; K],
+    pub(super) s: [V; K],
+    pub(super) p: [[V; D]; K],
+    pub(super) v: [[V; D]; K],
+    pub(super) a: [[V; D]; K],
 }
 
 /// One side's segment boxes of a block, a lane each: segment `k`'s least and greatest value
 /// on each axis.
 pub(super) struct LaneBoxes<const D: usize, const K: usize> {
-    pub(super) lo: [[__m512d; D]; K],
-    pub(super) hi: [[__m512d; D]; K],
+    pub(super) lo: [[V; D]; K],
+    pub(super) hi: [[V; D]; K],
 }
 
 /// One side's paths of a block, a lane each: which are taken (valid, every row used, starts
@@ -75,11 +73,11 @@ pub(super) struct LaneBoxes<const D: usize, const K: usize> {
 ///
 /// [`PathBounds`]: crate::collision::path_bounds::PathBounds
 struct LaneBounds<const D: usize, const K: usize> {
-    taken: __mmask8,
-    lo: [__m512d; D],
-    hi: [__m512d; D],
-    size: __m512d,
-    spread: __m512d,
+    taken: u8,
+    lo: [V; D],
+    hi: [V; D],
+    size: V,
+    spread: V,
     /// The box of each segment (`PathBounds`' segment boxes: a path of `K ≤ 3` rows keeps
     /// one for every segment).
     segments: LaneBoxes<D, K>,
@@ -89,43 +87,40 @@ struct LaneBounds<const D: usize, const K: usize> {
 /// valid, and the two paths' boxes farther apart on some axis than the reach, or else both
 /// paths ending at rest and apart across a chord.
 ///
-/// # Safety
-/// Both sides must hold a path per pair in rows of `K ≥ 1` segments (`start` of `n·K` values,
-/// `pos`, `vel`, `acc` of `n·K` rows, as [`path_collision_times`](super::path_collision_times)
-/// checks them), per-pair `radius` and `t_max` of `n` values, and `first + LANES ≤ n`.
-#[target_feature(enable = "avx512f")]
-pub(crate) unsafe fn settled<const D: usize, const K: usize>(
+/// Written once ([`lane_ops`](super::lane_ops)), inlined into each copy of the batch.
+///
+/// # Panics
+/// Unless both sides hold a path per pair in rows of `K ≥ 1` segments (`start` of `n·K`
+/// values, `pos`, `vel`, `acc` of `n·K` rows, as
+/// [`path_collision_times`](super::path_collision_times) checks them), per-pair `radius` and
+/// `t_max` of `n` values, and `first + LANES ≤ n`.
+#[inline(always)]
+pub(crate) fn settled<const D: usize, const K: usize>(
     pairs: &PathPairs<'_, D>,
     first: usize,
 ) -> Settled {
-    // SAFETY: the caller's promise, passed on.
-    let (rows_a, rows_b) = unsafe {
-        (
-            lane_rows::<D, K>(&pairs.a, first),
-            lane_rows::<D, K>(&pairs.b, first),
-        )
-    };
+    let (rows_a, rows_b) = (
+        lane_rows::<D, K>(&pairs.a, first),
+        lane_rows::<D, K>(&pairs.b, first),
+    );
     let (a, b) = (lane_bounds(&rows_a), lane_bounds(&rows_b));
     let radius = lanes_of(pairs.radius, first);
     let t_max = lanes_of(pairs.t_max, first);
-    let zero = _mm512_setzero_pd();
+    let zero = zero();
     // `radius + MARGIN·(size_a + size_b + radius)`, as `PathBounds::reach` forms it.
-    let sizes = _mm512_add_pd(_mm512_add_pd(a.size, b.size), radius);
-    let reach = _mm512_add_pd(radius, _mm512_mul_pd(_mm512_set1_pd(MARGIN), sizes));
+    let sizes = add(add(a.size, b.size), radius);
+    let reach = add(radius, mul(splat(MARGIN), sizes));
     // Where underflow could count (`with_underflow` would grow the reach): not taken.
-    let spread = _mm512_add_pd(a.spread, b.spread);
-    let floor = _mm512_mul_pd(_mm512_set1_pd(NORMAL_FLOOR), spread);
-    let plain_reach = !_mm512_cmp_pd_mask(reach, floor, _CMP_LT_OQ);
-    let mut apart: __mmask8 = 0;
+    let spread = add(a.spread, b.spread);
+    let floor = mul(splat(NORMAL_FLOOR), spread);
+    let plain_reach = !lt(reach, floor);
+    let mut apart: u8 = 0;
     for i in 0..D {
-        apart |= _mm512_cmp_pd_mask(_mm512_sub_pd(a.lo[i], b.hi[i]), reach, _CMP_GT_OQ);
-        apart |= _mm512_cmp_pd_mask(_mm512_sub_pd(b.lo[i], a.hi[i]), reach, _CMP_GT_OQ);
+        apart |= gt(sub(a.lo[i], b.hi[i]), reach);
+        apart |= gt(sub(b.lo[i], a.hi[i]), reach);
     }
     // A radius that is positive and finite, a horizon ≥ 0 (NaN fails both); sizes finite.
-    let valid = _mm512_cmp_pd_mask(radius, zero, _CMP_GT_OQ)
-        & finite(radius)
-        & _mm512_cmp_pd_mask(t_max, zero, _CMP_GE_OQ)
-        & finite(sizes);
+    let valid = gt(radius, zero) & finite(radius) & ge(t_max, zero) & finite(sizes);
     let taken = a.taken & b.taken & valid & plain_reach;
     // The chords, only where some lane is left for them.
     let open = taken & !apart & rests_at_end(&rows_a) & rests_at_end(&rows_b);
@@ -161,89 +156,15 @@ pub(crate) unsafe fn settled<const D: usize, const K: usize>(
 }
 
 /// Lanes whose value is finite.
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn finite(x: __m512d) -> __mmask8 {
-    _mm512_cmp_pd_mask(_mm512_abs_pd(x), _mm512_set1_pd(f64::INFINITY), _CMP_LT_OQ)
+#[inline(always)]
+fn finite(x: V) -> u8 {
+    lt(abs(x), splat(f64::INFINITY))
 }
 
 /// The per-pair values of pairs `first..first + LANES`, a lane each.
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn lanes_of(values: PerPair<'_>, first: usize) -> __m512d {
-    let lanes: [f64; LANES] = std::array::from_fn(|l| values.get(first + l));
-    // SAFETY: `[f64; 8]` and `__m512d` have the same size, and every bit pattern is valid.
-    unsafe { std::mem::transmute(lanes) }
-}
-
-/// The most values a path has in one array of its rows: `K·D` for 3 rows in 3-D.
-const MOST: usize = 9;
-
-/// `LANES·W` values from `values` on, a path's `W` in a row, as `W` vectors (the first `W` of
-/// the array): vector `c`'s lane `l` holds `values[l·W + c]`. Read as whole vectors and put in
-/// place by permutes and blends, which cost a fraction of gathers: the block's values are
-/// contiguous. `W` is a constant so that the lane indices and masks are too.
-///
-/// # Safety
-/// `values` must be valid for reading `LANES·W` values, and `1 ≤ W ≤ MOST`.
-#[inline]
-#[target_feature(enable = "avx512f")]
-unsafe fn transposed<const W: usize>(values: *const f64) -> [__m512d; MOST] {
-    let zero = _mm512_setzero_pd();
-    let mut loaded = [zero; MOST];
-    for (j, vector) in loaded.iter_mut().enumerate().take(W) {
-        // SAFETY: vectors `0..W` are the caller's `LANES·W` values.
-        *vector = unsafe { _mm512_loadu_pd(values.add(LANES * j)) };
-    }
-    let mut out = [zero; MOST];
-    for (c, vector) in out.iter_mut().enumerate().take(W) {
-        // Lane `l`'s value is value `l·W + c` of the block: in the pair of loaded vectors
-        // `g = (l·W + c) / 16`, at `(l·W + c) % 16` of the two.
-        let mut index = [0i64; LANES];
-        for (l, at) in index.iter_mut().enumerate() {
-            *at = ((l * W + c) % (2 * LANES)) as i64;
-        }
-        // SAFETY: reads the eight `i64`s of `index`.
-        let index = unsafe { _mm512_loadu_epi64(index.as_ptr()) };
-        for g in 0..W.div_ceil(2) {
-            let mut mask: __mmask8 = 0;
-            for l in 0..LANES {
-                if (l * W + c) / (2 * LANES) == g {
-                    mask |= 1 << l;
-                }
-            }
-            if mask == 0 {
-                continue;
-            }
-            // (With an odd `W` the last pair's second vector is never indexed.)
-            let (low, high) = (loaded[2 * g], loaded[(2 * g + 1).min(W - 1)]);
-            let part = _mm512_permutex2var_pd(low, index, high);
-            *vector = _mm512_mask_blend_pd(mask, *vector, part);
-        }
-    }
-    out
-}
-
-/// [`transposed`] for a width known only as `K` or `K·D` of a caller's constants (which
-/// fold the match): the widths of rows of 1 to 3 segments in 2-D or 3-D.
-///
-/// # Safety
-/// As [`transposed`], with `width` for `W`.
-#[inline]
-#[target_feature(enable = "avx512f")]
-unsafe fn transposed_rows(values: *const f64, width: usize) -> [__m512d; MOST] {
-    // SAFETY: the caller's promise, passed on.
-    unsafe {
-        match width {
-            1 => transposed::<1>(values),
-            2 => transposed::<2>(values),
-            3 => transposed::<3>(values),
-            4 => transposed::<4>(values),
-            6 => transposed::<6>(values),
-            9 => transposed::<9>(values),
-            _ => unreachable!("no rows of {width} values (see `lane_rows`)"),
-        }
-    }
+#[inline(always)]
+fn lanes_of(values: PerPair<'_>, first: usize) -> V {
+    std::array::from_fn(|l| values.get(first + l))
 }
 
 /// How many pairs ahead of the block its rows are asked for in the cache: 128 pairs, 1 to
@@ -253,32 +174,39 @@ unsafe fn transposed_rows(values: *const f64, width: usize) -> [__m512d; MOST] {
 const AHEAD: usize = 16 * LANES;
 
 /// Asks for the `width·LANES` values from `at + width·AHEAD` in the cache (nothing past the
-/// end).
+/// end; a hint, on x86-64 only).
 #[inline(always)]
 fn ahead(values: &[f64], at: usize, width: usize) {
-    use core::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
-    let from = at + width * AHEAD;
-    if from + width * LANES <= values.len() {
-        for line in 0..width {
-            // SAFETY: in range (checked above); a hint, it reads nothing.
-            unsafe {
-                _mm_prefetch(
-                    values.as_ptr().add(from + 8 * line).cast::<i8>(),
-                    _MM_HINT_T0,
-                )
-            };
+    #[cfg(target_arch = "x86_64")]
+    {
+        use core::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
+        let from = at + width * AHEAD;
+        if from + width * LANES <= values.len() {
+            for line in 0..width {
+                // SAFETY: in range (checked above); a hint, it reads nothing (SSE, which
+                // every x86-64 CPU has).
+                unsafe {
+                    _mm_prefetch(
+                        values.as_ptr().add(from + 8 * line).cast::<i8>(),
+                        _MM_HINT_T0,
+                    )
+                };
+            }
         }
     }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (values, at, width);
 }
 
-/// The rows of paths `first..first + LANES` of `side`, a lane each, read in order, whole
-/// vectors at a time (and those [`AHEAD`] asked for in the cache).
+/// The rows of paths `first..first + LANES` of `side`, a lane each (and those [`AHEAD`] asked
+/// for in the cache): lane `l` of row `k`'s value is the block's row `l·K + k`, read from
+/// one slice of the block's rows whose length is a constant (so that no index is checked).
 ///
-/// # Safety
-/// As [`settled`]: the side's rows hold paths `first..first + LANES`, `K` rows each.
-#[inline]
-#[target_feature(enable = "avx512f")]
-unsafe fn lane_rows<const D: usize, const K: usize>(
+/// # Panics
+/// If the side's rows do not hold paths `first..first + LANES` of `K` rows each (as
+/// [`settled`] promises).
+#[inline(always)]
+fn lane_rows<const D: usize, const K: usize>(
     side: &PathRows<'_, D>,
     first: usize,
 ) -> LaneRows<D, K> {
@@ -287,20 +215,22 @@ unsafe fn lane_rows<const D: usize, const K: usize>(
     for values in [side.pos, side.vel, side.acc] {
         ahead(values.as_flattened(), first * K * D, K * D);
     }
-    // SAFETY: the caller's promise: the block's `LANES·K` starts and rows are in range.
-    let (start, pos, vel, acc) = unsafe {
-        (
-            transposed_rows(side.start[first * K..].as_ptr(), K),
-            transposed_rows(side.pos[first * K..].as_ptr().cast::<f64>(), K * D),
-            transposed_rows(side.vel[first * K..].as_ptr().cast::<f64>(), K * D),
-            transposed_rows(side.acc[first * K..].as_ptr().cast::<f64>(), K * D),
-        )
+    let block = first * K..(first + LANES) * K;
+    let (start, pos, vel, acc) = (
+        &side.start[block.clone()],
+        &side.pos[block.clone()],
+        &side.vel[block.clone()],
+        &side.acc[block],
+    );
+    let rows = |values: &[[f64; D]]| -> [[V; D]; K] {
+        let values = &values[..LANES * K];
+        std::array::from_fn(|k| {
+            std::array::from_fn(|i| std::array::from_fn(|l| values[l * K + k][i]))
+        })
     };
-    let rows = |flat: [__m512d; MOST]| -> [[__m512d; D]; K] {
-        std::array::from_fn(|k| std::array::from_fn(|i| flat[k * D + i]))
-    };
+    let start = &start[..LANES * K];
     LaneRows {
-        s: std::array::from_fn(|k| start[k]),
+        s: std::array::from_fn(|k| std::array::from_fn(|l| start[l * K + k])),
         p: rows(pos),
         v: rows(vel),
         a: rows(acc),
@@ -310,31 +240,29 @@ unsafe fn lane_rows<const D: usize, const K: usize>(
 /// The bounds of a block's paths, as `PathBounds::set_to` forms them for paths whose rows are
 /// all used and whose segments are all non-empty, and the checks of `Path::from_rows` in that
 /// case (every value finite, starts increasing).
-#[inline]
-#[target_feature(enable = "avx512f")]
+#[inline(always)]
 fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBounds<D, K> {
     let LaneRows { s, p, v, a } = rows;
-    let zero = _mm512_setzero_pd();
+    let zero = zero();
     // Starts increasing strictly (NaN fails), from a first above −∞ to a last below +∞: all
     // finite. The other values of every segment but the last are in the size, whose
     // finiteness is checked below; the last segment's velocity and acceleration here.
-    let infinity = _mm512_set1_pd(f64::INFINITY);
-    let mut taken = _mm512_cmp_pd_mask(s[0], _mm512_set1_pd(f64::NEG_INFINITY), _CMP_GT_OQ)
-        & _mm512_cmp_pd_mask(s[K - 1], infinity, _CMP_LT_OQ);
+    let infinity = splat(f64::INFINITY);
+    let mut taken = gt(s[0], splat(f64::NEG_INFINITY)) & lt(s[K - 1], infinity);
     for k in 1..K {
-        taken &= _mm512_cmp_pd_mask(s[k], s[k - 1], _CMP_GT_OQ);
+        taken &= gt(s[k], s[k - 1]);
     }
     for i in 0..D {
-        let last = _mm512_add_pd(_mm512_abs_pd(v[K - 1][i]), _mm512_abs_pd(a[K - 1][i]));
-        taken &= _mm512_cmp_pd_mask(last, infinity, _CMP_LT_OQ);
+        let last = add(abs(v[K - 1][i]), abs(a[K - 1][i]));
+        taken &= lt(last, infinity);
     }
 
-    let one = _mm512_set1_pd(1.0);
-    let axes = _mm512_set1_pd(D as f64);
+    let one = splat(1.0);
+    let axes = splat(D as f64);
     let mut bounds = LaneBounds {
         taken,
         lo: [infinity; D],
-        hi: [_mm512_set1_pd(f64::NEG_INFINITY); D],
+        hi: [splat(f64::NEG_INFINITY); D],
         size: zero,
         spread: zero,
         segments: LaneBoxes {
@@ -343,37 +271,37 @@ fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBou
         },
     };
     for k in 0..K - 1 {
-        let length = _mm512_sub_pd(s[k + 1], s[k]);
-        let reach = _mm512_add_pd(one, length);
-        let spread = _mm512_mul_pd(_mm512_mul_pd(axes, reach), reach);
-        bounds.spread = _mm512_add_pd(bounds.spread, spread);
+        let length = sub(s[k + 1], s[k]);
+        let reach = add(one, length);
+        let spread = mul(mul(axes, reach), reach);
+        bounds.spread = add(bounds.spread, spread);
         for i in 0..D {
             let (p, v, a) = (p[k][i], v[k][i], a[k][i]);
             // |p| + (|v| + |a|·L)·L
-            let far = _mm512_add_pd(_mm512_abs_pd(v), _mm512_mul_pd(_mm512_abs_pd(a), length));
-            let part = _mm512_add_pd(_mm512_abs_pd(p), _mm512_mul_pd(far, length));
-            bounds.size = _mm512_add_pd(bounds.size, part);
+            let far = add(abs(v), mul(abs(a), length));
+            let part = add(abs(p), mul(far, length));
+            bounds.size = add(bounds.size, part);
             let [lo, hi] = bernstein_hull(p, v, a, length);
             (bounds.segments.lo[k][i], bounds.segments.hi[k][i]) = (lo, hi);
-            bounds.lo[i] = _mm512_min_pd(bounds.lo[i], lo);
-            bounds.hi[i] = _mm512_max_pd(bounds.hi[i], hi);
+            bounds.lo[i] = min(bounds.lo[i], lo);
+            bounds.hi[i] = max(bounds.hi[i], hi);
         }
     }
     // The last segment lasts for ever: unbounded on each side it drifts to.
     for i in 0..D {
         let (p, v, a) = (p[K - 1][i], v[K - 1][i], a[K - 1][i]);
-        bounds.size = _mm512_add_pd(bounds.size, _mm512_abs_pd(p));
-        let lt = |x: __m512d| _mm512_cmp_pd_mask(x, zero, _CMP_LT_OQ);
-        let gt = |x: __m512d| _mm512_cmp_pd_mask(x, zero, _CMP_GT_OQ);
-        let accelerates = _mm512_cmp_pd_mask(a, zero, _CMP_NEQ_UQ);
-        let towards = _mm512_mask_blend_pd(accelerates, v, a);
+        bounds.size = add(bounds.size, abs(p));
+        let lt = |x: V| lt(x, zero);
+        let gt = |x: V| gt(x, zero);
+        let accelerates = ne(a, zero);
+        let towards = blend(accelerates, v, a);
         let down = lt(towards) | (gt(a) & lt(v));
         let up = gt(towards) | (lt(a) & gt(v));
-        let lo = _mm512_mask_blend_pd(down, p, _mm512_set1_pd(f64::NEG_INFINITY));
-        let hi = _mm512_mask_blend_pd(up, p, infinity);
+        let lo = blend(down, p, splat(f64::NEG_INFINITY));
+        let hi = blend(up, p, infinity);
         (bounds.segments.lo[K - 1][i], bounds.segments.hi[K - 1][i]) = (lo, hi);
-        bounds.lo[i] = _mm512_min_pd(bounds.lo[i], lo);
-        bounds.hi[i] = _mm512_max_pd(bounds.hi[i], hi);
+        bounds.lo[i] = min(bounds.lo[i], lo);
+        bounds.hi[i] = max(bounds.hi[i], hi);
     }
     bounds.taken &= finite(bounds.size);
     bounds
@@ -381,105 +309,86 @@ fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBou
 
 /// `bernstein_hull` (`collision::path_bounds`) lane-wise: the least and greatest of `p`,
 /// `p + ½·v·L` and `p + (v + ½·a·L)·L`, with its selects (`x < y ? x : y` is `min_pd(x, y)`).
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn bernstein_hull(p: __m512d, v: __m512d, a: __m512d, length: __m512d) -> [__m512d; 2] {
-    let half = _mm512_set1_pd(0.5);
-    let middle = _mm512_add_pd(p, _mm512_mul_pd(_mm512_mul_pd(half, v), length));
-    let slope = _mm512_add_pd(v, _mm512_mul_pd(_mm512_mul_pd(half, a), length));
-    let end = _mm512_add_pd(p, _mm512_mul_pd(slope, length));
-    [
-        _mm512_min_pd(end, _mm512_min_pd(middle, p)),
-        _mm512_max_pd(end, _mm512_max_pd(middle, p)),
-    ]
+#[inline(always)]
+fn bernstein_hull(p: V, v: V, a: V, length: V) -> [V; 2] {
+    let half = splat(0.5);
+    let middle = add(p, mul(mul(half, v), length));
+    let slope = add(v, mul(mul(half, a), length));
+    let end = add(p, mul(slope, length));
+    [min(end, min(middle, p)), max(end, max(middle, p))]
 }
 
 /// Lanes whose path ends at rest (`rests_at_end` in `collision::chord_normals`).
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn rests_at_end<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> __mmask8 {
-    let zero = _mm512_setzero_pd();
-    let mut rests: __mmask8 = !0;
+#[inline(always)]
+fn rests_at_end<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> u8 {
+    let zero = zero();
+    let mut rests: u8 = !0;
     for i in 0..D {
-        rests &= _mm512_cmp_pd_mask(rows.v[K - 1][i], zero, _CMP_EQ_OQ);
-        rests &= _mm512_cmp_pd_mask(rows.a[K - 1][i], zero, _CMP_EQ_OQ);
+        rests &= eq(rows.v[K - 1][i], zero);
+        rests &= eq(rows.a[K - 1][i], zero);
     }
     rests
 }
 
 /// `apart_across_chord_of` (`collision::chord_normals`) lane-wise, for taken paths that end
 /// at rest: the normal of `own`'s chord, and the spans on it.
-#[inline]
-#[target_feature(enable = "avx512f")]
+#[inline(always)]
 fn apart_across_chord<const D: usize, const K: usize>(
     own: &LaneRows<D, K>,
     other: &LaneRows<D, K>,
-    reach: __m512d,
-) -> __mmask8 {
+    reach: V,
+) -> u8 {
     let (dx, dy) = (
-        _mm512_sub_pd(own.p[K - 1][0], own.p[0][0]),
-        _mm512_sub_pd(own.p[K - 1][1], own.p[0][1]),
+        sub(own.p[K - 1][0], own.p[0][0]),
+        sub(own.p[K - 1][1], own.p[0][1]),
     );
-    let most = _mm512_max_pd(_mm512_abs_pd(dx), _mm512_abs_pd(dy));
-    let normal_chord = _mm512_cmp_pd_mask(most, _mm512_set1_pd(f64::MIN_POSITIVE), _CMP_GE_OQ)
-        & _mm512_cmp_pd_mask(most, _mm512_set1_pd(f64::INFINITY), _CMP_LT_OQ);
-    let scale = _mm512_div_pd(_mm512_set1_pd(0.5), most);
-    let zero = _mm512_setzero_pd();
-    let normal: [__m512d; D] = std::array::from_fn(|i| match i {
-        0 => _mm512_mul_pd(_mm512_mul_pd(dy, _mm512_set1_pd(-1.0)), scale),
-        1 => _mm512_mul_pd(dx, scale),
+    let most = max(abs(dx), abs(dy));
+    let normal_chord = ge(most, splat(f64::MIN_POSITIVE)) & lt(most, splat(f64::INFINITY));
+    let scale = div(splat(0.5), most);
+    let zero = zero();
+    let normal: [V; D] = std::array::from_fn(|i| match i {
+        0 => mul(mul(dy, splat(-1.0)), scale),
+        1 => mul(dx, scale),
         _ => zero,
     });
     // (The scalar screen first compares the other path's ends with where this one starts,
     // against 0.49 of the reach, to give up early; the spans hold those ends and that start,
     // and are compared against at least 0.4999 of the reach, so that the spans' test implies
     // it: the lanes need only the spans.)
-    let length2 = _mm512_add_pd(
-        _mm512_mul_pd(normal[0], normal[0]),
-        _mm512_mul_pd(normal[1], normal[1]),
-    );
-    let reach = _mm512_mul_pd(reach, _mm512_sqrt_pd(length2));
+    let length2 = add(mul(normal[0], normal[0]), mul(normal[1], normal[1]));
+    let reach = mul(reach, sqrt(length2));
     let (own, other) = (span(own, &normal), span(other, &normal));
-    let spans_apart = _mm512_cmp_pd_mask(_mm512_sub_pd(own[0], other[1]), reach, _CMP_GT_OQ)
-        | _mm512_cmp_pd_mask(_mm512_sub_pd(other[0], own[1]), reach, _CMP_GT_OQ);
+    let spans_apart = gt(sub(own[0], other[1]), reach) | gt(sub(other[0], own[1]), reach);
     normal_chord & spans_apart
 }
 
 /// `normal·x` lane-wise, summed in the order of the axes (as `along` does).
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn along<const D: usize>(normal: &[__m512d; D], x: &[__m512d; D]) -> __m512d {
-    let mut sum = _mm512_mul_pd(normal[0], x[0]);
+#[inline(always)]
+fn along<const D: usize>(normal: &[V; D], x: &[V; D]) -> V {
+    let mut sum = mul(normal[0], x[0]);
     for i in 1..D {
-        sum = _mm512_add_pd(sum, _mm512_mul_pd(normal[i], x[i]));
+        sum = add(sum, mul(normal[i], x[i]));
     }
     sum
 }
 
 /// `span` (`collision::chord_normals`) lane-wise: the least and greatest of `normal·x` along
 /// the path (every segment non-empty, the last at rest).
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn span<const D: usize, const K: usize>(
-    rows: &LaneRows<D, K>,
-    normal: &[__m512d; D],
-) -> [__m512d; 2] {
-    let mut hull = [
-        _mm512_set1_pd(f64::INFINITY),
-        _mm512_set1_pd(f64::NEG_INFINITY),
-    ];
+#[inline(always)]
+fn span<const D: usize, const K: usize>(rows: &LaneRows<D, K>, normal: &[V; D]) -> [V; 2] {
+    let mut hull = [splat(f64::INFINITY), splat(f64::NEG_INFINITY)];
     for k in 0..K - 1 {
-        let length = _mm512_sub_pd(rows.s[k + 1], rows.s[k]);
+        let length = sub(rows.s[k + 1], rows.s[k]);
         let [lo, hi] = bernstein_hull(
             along(normal, &rows.p[k]),
             along(normal, &rows.v[k]),
             along(normal, &rows.a[k]),
             length,
         );
-        hull = [_mm512_min_pd(lo, hull[0]), _mm512_max_pd(hi, hull[1])];
+        hull = [min(lo, hull[0]), max(hi, hull[1])];
     }
     let p = along(normal, &rows.p[K - 1]);
-    [_mm512_min_pd(p, hull[0]), _mm512_max_pd(p, hull[1])]
+    [min(p, hull[0]), max(p, hull[1])]
 }
 
 #[cfg(test)]
@@ -491,7 +400,63 @@ mod tests {
     use crate::collision::path_collision_time_unscreened;
     use crate::collision::path_contact::every_window_screened;
     use crate::path::Path2;
+    use crate::simd::{Level, test_levels};
     use crate::test_rng::Rng;
+
+    /// [`settled`] in the copy of `level` (which this CPU must have).
+    fn settled_at<const K: usize>(level: Level, pairs: &PathPairs<'_, 2>) -> Settled {
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512dq")]
+        fn avx512<const K: usize>(pairs: &PathPairs<'_, 2>) -> Settled {
+            settled::<2, K>(pairs, 0)
+        }
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx2,fma")]
+        fn avx2<const K: usize>(pairs: &PathPairs<'_, 2>) -> Settled {
+            settled::<2, K>(pairs, 0)
+        }
+        assert!(level.supported(), "{level}");
+        match level {
+            // SAFETY: the CPU has the level (just checked).
+            #[cfg(target_arch = "x86_64")]
+            Level::Avx512 => unsafe { avx512::<K>(pairs) },
+            // SAFETY: the CPU has the level (just checked).
+            #[cfg(target_arch = "x86_64")]
+            Level::Avx2Fma => unsafe { avx2::<K>(pairs) },
+            _ => settled::<2, K>(pairs, 0),
+        }
+    }
+
+    /// [`settled`] at every level of `levels`: the same at each (the portable copy's).
+    fn settled_at_every_level<const K: usize>(
+        pairs: &PathPairs<'_, 2>,
+        levels: &[Level],
+    ) -> Settled {
+        let portable = settled_at::<K>(Level::Portable, pairs);
+        for &level in levels {
+            assert_eq!(
+                settled_at::<K>(level, pairs),
+                portable,
+                "{level}: {pairs:?}"
+            );
+            // The AVX-512 level's intrinsics twin, which the batch runs there.
+            #[cfg(target_arch = "x86_64")]
+            if level == Level::Avx512 {
+                // SAFETY: the CPU has AVX-512 F (the level is supported); the block holds
+                // LANES paths of K rows a side.
+                let twin = unsafe { super::super::path_lanes_avx512::settled::<2, K>(pairs, 0) };
+                let twin = (twin.bounds, twin.chords, twin.windows, twin.taken);
+                let ours = (
+                    portable.bounds,
+                    portable.chords,
+                    portable.windows,
+                    portable.taken,
+                );
+                assert_eq!(twin, ours, "intrinsics: {pairs:?}");
+            }
+        }
+        portable
+    }
 
     /// `LANES` pairs of 2-D paths of `K` rows: mostly plain (every row used, starts
     /// increasing), at scales from `2⁻¹⁰⁶⁰` to `2⁹⁶⁰` so that underflow, overflowing sizes and
@@ -689,9 +654,8 @@ mod tests {
     }
 
     fn lanes_settle_what_the_path_bounds_settle<const K: usize>() {
-        if !crate::batch::X86Level::avx512_for_tests() {
-            return;
-        }
+        let levels = test_levels();
+        eprintln!("path lanes in rows of {K} at {levels:?}");
         let mut rng = Rng(K as u64);
         let (mut settled_lanes, mut chord_lanes, mut apart_left) = (0, 0, 0);
         let (mut plain_kept, mut edge) = (0, 0);
@@ -704,8 +668,7 @@ mod tests {
                     _ => false,
                 });
             }
-            // SAFETY: AVX-512 F is supported; the block's rows hold LANES paths of K rows.
-            let settled = unsafe { settled::<2, K>(&block.pairs(), 0) };
+            let settled = settled_at_every_level::<K>(&block.pairs(), &levels);
             for l in 0..LANES {
                 let bit = |mask: u8| mask & (1 << l) != 0;
                 let (by_bounds, by_chords) = (bit(settled.bounds), bit(settled.chords));
@@ -742,16 +705,14 @@ mod tests {
     /// magnitudes are ordinary (no underflow or overflow in sight), they settle exactly the
     /// pairs whose every window the pair's own window screens prove apart.
     fn lanes_settle_what_the_window_screens_settle<const K: usize>() {
-        if !crate::batch::X86Level::avx512_for_tests() {
-            return;
-        }
+        let levels = test_levels();
+        eprintln!("window lanes in rows of {K} at {levels:?}");
         let mut rng = Rng(100 + K as u64);
         let (mut settled_lanes, mut ordinary_left, mut checked) = (0, 0, 0);
         let options = CollisionOptions::default();
         for _ in 0..4_000 {
             let block = Block::<K>::draw(&mut rng);
-            // SAFETY: AVX-512 F is supported; the block's rows hold LANES paths of K rows.
-            let settled = unsafe { settled::<2, K>(&block.pairs(), 0) };
+            let settled = settled_at_every_level::<K>(&block.pairs(), &levels);
             for l in 0..LANES {
                 let by_windows = settled.windows & (1 << l) != 0;
                 let what = || format!("lane {l} of {:?}", block.pairs());

@@ -9,8 +9,8 @@
 //! [`path_collision_time`](crate::path_collision_time), so batch and single answers are
 //! identical, and so are the answers for any number of threads.
 //!
-//! On CPUs with AVX-512, rows of 2 and 3 segments (a friction ball's, a pool ball's) first go
-//! through the path bounds and the chord normals eight pairs at a time
+//! At every SIMD level ([`simd`](crate::simd)), rows of 2 and 3 segments (a friction ball's,
+//! a pool ball's) first go through the path bounds and the chord normals eight pairs at a time
 //! ([`path_lanes`](super::path_lanes)), then the window screens on every window of the pairs
 //! left ([`window_lanes`](super::window_lanes)): the same proofs, to the bit, on the pairs they
 //! can take whole, at a fraction of the cost. The pairs they take and do not settle are held
@@ -18,7 +18,6 @@
 //! ([`first_window_lanes`](super::first_window_lanes)); what is left goes on one by one.
 
 #[cfg(target_arch = "x86_64")]
-use super::X86Level;
 use super::first_window_lanes::{HeldPairs, eighth_contacts};
 #[cfg(target_arch = "x86_64")]
 use super::path_lanes::{LANES as LANE_WIDTH, settled};
@@ -28,6 +27,7 @@ use crate::collision::path_contact::{Prior, first_bounded_contact};
 use crate::collision::stage_counts::{Stage, count};
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::path::{Names, Segment, locate, segments_from_rows};
+use crate::simd::Level;
 
 /// One side of a batch of path pairs: `N` paths of `segments` rows each, row `k` of path `i`
 /// at `i·segments + k` of every slice.
@@ -144,27 +144,30 @@ pub fn path_collision_times<const D: usize>(
     threads: Threads,
 ) -> Result<(), InputError> {
     let shared = check_path_pairs(pairs, out.len())?;
+    let level = crate::simd::current();
     run_chunks(out, threads, |offset, chunk| {
-        path_chunk(pairs, offset, chunk, &shared)
+        path_chunk(level, pairs, offset, chunk, &shared)
     })
 }
 
 /// The answers of pairs `offset..` into `chunk`, in the widest copy of [`path_chunk_portable`]
 /// this CPU runs (the copies compute the same bits: only the instructions differ).
 fn path_chunk<const D: usize>(
+    level: Level,
     pairs: &PathPairs<'_, D>,
     offset: usize,
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
-    #[cfg(target_arch = "x86_64")]
-    match X86Level::detect() {
-        // SAFETY: the CPU supports the features each copy is compiled for, just detected.
-        X86Level::Avx512 => return unsafe { path_chunk_avx512(pairs, offset, chunk, shared) },
-        X86Level::Avx2 => return unsafe { path_chunk_avx2(pairs, offset, chunk, shared) },
-        X86Level::Baseline => {}
+    match level {
+        // SAFETY: `level` is supported by this CPU (`simd` hands out no other), and each copy
+        // needs only its level's features.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { path_chunk_avx512(pairs, offset, chunk, shared) },
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2Fma => unsafe { path_chunk_avx2(pairs, offset, chunk, shared) },
+        _ => path_chunk_portable(pairs, offset, chunk, shared),
     }
-    path_chunk_portable(pairs, offset, chunk, shared)
 }
 
 /// [`path_chunk_portable`] compiled with AVX2 and FMA enabled.
@@ -179,7 +182,10 @@ unsafe fn path_chunk_avx2<const D: usize>(
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
-    path_chunk_portable(pairs, offset, chunk, shared)
+    // The generic lanes ([`Avx2Lanes`]) give the same bits here, but the compiler's code for
+    // them still costs more than the pairs they settle save (issue 35: 37 ms against 27 ms
+    // on the pool table at this level): not run until it does.
+    path_chunk_with(NoLanes, pairs, offset, chunk, shared)
 }
 
 /// [`path_chunk_portable`] compiled with AVX-512 (F, VL, DQ), AVX2 and FMA enabled.
@@ -194,7 +200,9 @@ unsafe fn path_chunk_avx512<const D: usize>(
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
-    path_chunk_in::<D, true>(pairs, offset, chunk, shared)
+    // SAFETY: the caller's promise: the CPU has AVX-512 F.
+    let lanes = unsafe { Avx512Lanes::new() };
+    path_chunk_with(lanes, pairs, offset, chunk, shared)
 }
 
 /// Every pair of the chunk in turn, with one buffer per side reused for every pair.
@@ -205,13 +213,14 @@ fn path_chunk_portable<const D: usize>(
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
-    path_chunk_in::<D, false>(pairs, offset, chunk, shared)
+    // (As at AVX2: the generic lanes are not run yet, see `path_chunk_avx2`.)
+    path_chunk_with(NoLanes, pairs, offset, chunk, shared)
 }
 
-/// [`path_chunk_portable`], with the lane-wise screens in front where `LANES` (only in the
-/// AVX-512 copy, whose CPU runs them).
+/// [`path_chunk_portable`] with the lane screens of `lanes`.
 #[inline(always)]
-fn path_chunk_in<const D: usize, const LANES: bool>(
+fn path_chunk_with<const D: usize>(
+    lanes: impl LaneScreens,
     pairs: &PathPairs<'_, D>,
     offset: usize,
     chunk: &mut [f64],
@@ -220,24 +229,25 @@ fn path_chunk_in<const D: usize, const LANES: bool>(
     // The common row counts, a friction ball's (move, rest) and a pool ball's (slide, roll,
     // rest), with the loops over the rows unrolled: 6 % less time per pool-table pair.
     match (pairs.a.segments, pairs.b.segments) {
-        (2, 2) => path_pairs_in_turn::<D, 2, LANES>(pairs, offset, chunk, shared),
-        (3, 3) => path_pairs_in_turn::<D, 3, LANES>(pairs, offset, chunk, shared),
-        _ => path_pairs_in_turn::<D, 0, false>(pairs, offset, chunk, shared),
+        (2, 2) => path_pairs_in_turn::<D, 2>(lanes, pairs, offset, chunk, shared),
+        (3, 3) => path_pairs_in_turn::<D, 3>(lanes, pairs, offset, chunk, shared),
+        _ => path_pairs_in_turn::<D, 0>(lanes, pairs, offset, chunk, shared),
     }
 }
 
-/// [`path_chunk_portable`] for rows of `K` segments on both sides (`K = 0`: any number); with
-/// `LANES`, blocks of pairs first go through the lane-wise screens
+/// [`path_chunk_portable`] for rows of `K` segments on both sides (`K = 0`: any number); for
+/// `K > 0`, blocks of pairs first go through the lane-wise screens
 /// ([`path_lanes`](super::path_lanes)), where neither side is broadcast.
 #[inline(always)]
-fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
+fn path_pairs_in_turn<const D: usize, const K: usize>(
+    screens: impl LaneScreens,
     pairs: &PathPairs<'_, D>,
     offset: usize,
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
     let mut buffers = [PathBuffer::new(), PathBuffer::new()];
-    let lanes = LANES && K > 0 && shared[0].is_none() && shared[1].is_none();
+    let lanes = K > 0 && shared[0].is_none() && shared[1].is_none();
     let mut held = HeldPairs::default();
     // Block by block: the pairs the lanes settle all at once (most pairs: they then cost no
     // work of their own here); those they take and leave held for the first-window lanes,
@@ -257,11 +267,10 @@ fn path_pairs_in_turn<const D: usize, const K: usize, const LANES: bool>(
             let here = block * LANE_WIDTH;
             let len = LANE_WIDTH.min(chunk.len() - here);
             let (settled, taken) = if lanes && len == LANE_WIDTH {
-                // SAFETY: `LANES` is set only in the AVX-512 copy, run where the CPU has it;
-                // the sides were checked to hold a path per pair in rows of `K`, the per-pair
+                // The sides were checked to hold a path per pair in rows of `K`, the per-pair
                 // values to have one per pair, and the block is in range.
                 let (bounds, chords, windows, taken) =
-                    unsafe { settled_block::<D, K>(pairs, offset + here) };
+                    screens.settled::<D, K>(pairs, offset + here);
                 count_settled(bounds, chords, windows);
                 (u32::from(bounds | chords | windows), u32::from(taken))
             } else {
@@ -374,44 +383,144 @@ fn count_settled(bounds: u8, chords: u8, windows: u8) {
     }
 }
 
-/// The pairs of the block at `first` that the lane-wise screens settle, by the path bounds, by
-/// the chords and by their windows (bit `l` for pair `first + l`).
-///
-/// # Safety
-/// As [`settled`]: the CPU has AVX-512 F, and the block is in range of checked sides that hold
-/// a path per pair in rows of `K`.
+/// A copy of the lane-wise screens ([`path_lanes`](super::path_lanes)) for a copy of the
+/// batch: the generic lanes, or (at [`Level::Avx512`]) their AVX-512 intrinsics twin
+/// ([`path_lanes_avx512`](super::path_lanes_avx512)), the same bits.
+trait LaneScreens: Copy {
+    /// The pairs of the block at `first` that the lane-wise screens settle, by the path
+    /// bounds, by the chords and by their windows (bit `l` for pair `first + l`), and those
+    /// they take.
+    ///
+    /// # Panics
+    /// As [`settled`]: unless the block is in range of checked sides that hold a path per
+    /// pair in rows of `K`.
+    fn settled<const D: usize, const K: usize>(
+        self,
+        pairs: &PathPairs<'_, D>,
+        first: usize,
+    ) -> (u8, u8, u8, u8);
+}
+
+/// No lane screens: every pair goes to its own search (the same bits, see `path_chunk_avx2`).
+#[derive(Clone, Copy)]
+struct NoLanes;
+
+impl LaneScreens for NoLanes {
+    #[inline(always)]
+    fn settled<const D: usize, const K: usize>(
+        self,
+        _pairs: &PathPairs<'_, D>,
+        _first: usize,
+    ) -> (u8, u8, u8, u8) {
+        (0, 0, 0, 0)
+    }
+}
+
+/// The generic lanes, written once ([`path_lanes`](super::path_lanes)).
+#[cfg_attr(not(test), allow(dead_code))]
+#[derive(Clone, Copy)]
+struct GenericLanes;
+
+impl LaneScreens for GenericLanes {
+    #[inline(always)]
+    fn settled<const D: usize, const K: usize>(
+        self,
+        pairs: &PathPairs<'_, D>,
+        first: usize,
+    ) -> (u8, u8, u8, u8) {
+        let settled = settled::<D, K>(pairs, first);
+        (
+            settled.bounds,
+            settled.chords,
+            settled.windows,
+            settled.taken,
+        )
+    }
+}
+
+/// The generic lanes compiled on their own with AVX2 and FMA (not inlined into the batch's
+/// loop, whose size makes the compiler vectorise them worse): a value of it is the proof
+/// that the CPU has AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn settled_block<const D: usize, const K: usize>(
+#[cfg_attr(not(test), allow(dead_code))]
+#[derive(Clone, Copy)]
+struct Avx2Lanes(());
+
+#[cfg(target_arch = "x86_64")]
+#[cfg_attr(not(test), allow(dead_code))]
+impl Avx2Lanes {
+    /// # Safety
+    /// The CPU must have AVX2 and FMA.
+    unsafe fn new() -> Self {
+        Self(())
+    }
+}
+
+/// [`settled`] compiled with AVX2 and FMA, on its own.
+#[cfg(target_arch = "x86_64")]
+#[cfg_attr(not(test), allow(dead_code))]
+#[target_feature(enable = "avx2,fma")]
+#[inline(never)]
+fn settled_avx2<const D: usize, const K: usize>(
     pairs: &PathPairs<'_, D>,
     first: usize,
 ) -> (u8, u8, u8, u8) {
-    // SAFETY: the caller's promise, passed on.
-    let settled = unsafe { settled::<D, K>(pairs, first) };
-    (
-        settled.bounds,
-        settled.chords,
-        settled.windows,
-        settled.taken,
-    )
+    GenericLanes.settled::<D, K>(pairs, first)
 }
 
-/// Without the lanes (other CPUs): nothing settled.
-#[cfg(not(target_arch = "x86_64"))]
-const LANE_WIDTH: usize = 8;
+#[cfg(target_arch = "x86_64")]
+impl LaneScreens for Avx2Lanes {
+    #[inline(always)]
+    fn settled<const D: usize, const K: usize>(
+        self,
+        pairs: &PathPairs<'_, D>,
+        first: usize,
+    ) -> (u8, u8, u8, u8) {
+        // SAFETY: `self` exists only where the CPU has AVX2 and FMA.
+        unsafe { settled_avx2::<D, K>(pairs, first) }
+    }
+}
 
-/// Without the lanes (other CPUs): nothing settled. Never called (the lanes run only in the
-/// AVX-512 copy).
-///
-/// # Safety
-/// None needed.
-#[cfg(not(target_arch = "x86_64"))]
-#[inline(always)]
-unsafe fn settled_block<const D: usize, const K: usize>(
-    _pairs: &PathPairs<'_, D>,
-    _first: usize,
-) -> (u8, u8, u8, u8) {
-    (0, 0, 0, 0)
+/// The AVX-512 intrinsics lanes ([`path_lanes_avx512`](super::path_lanes_avx512)): a value
+/// of it is the proof that the CPU has AVX-512 F.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy)]
+struct Avx512Lanes(());
+
+#[cfg(target_arch = "x86_64")]
+impl Avx512Lanes {
+    /// # Safety
+    /// The CPU must have AVX-512 F.
+    unsafe fn new() -> Self {
+        Self(())
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+impl LaneScreens for Avx512Lanes {
+    #[inline(always)]
+    fn settled<const D: usize, const K: usize>(
+        self,
+        pairs: &PathPairs<'_, D>,
+        first: usize,
+    ) -> (u8, u8, u8, u8) {
+        // (A few compares a block: what makes the intrinsics' reads sound.)
+        let rows = (first + LANE_WIDTH) * K;
+        let lengths = |s: &PathRows<'_, D>| [s.start.len(), s.pos.len(), s.vel.len(), s.acc.len()];
+        assert!(
+            K > 0 && (lengths(&pairs.a).into_iter().chain(lengths(&pairs.b))).all(|n| n >= rows),
+            "a block of rows in range"
+        );
+        // SAFETY: `self` exists only where the CPU has AVX-512 F; the sides hold a path
+        // per pair in rows of `K` (checked by the batch), and the block is in range.
+        let settled = unsafe { super::path_lanes_avx512::settled::<D, K>(pairs, first) };
+        (
+            settled.bounds,
+            settled.chords,
+            settled.windows,
+            settled.taken,
+        )
+    }
 }
 
 /// The broadcast paths of a batch of path pairs (A's, B's), read and checked once, with their
@@ -711,24 +820,24 @@ mod tests {
             let single = first_path_contact_of(&path(&pairs.a), &path(&pairs.b), 0.3);
             assert_eq!(single.to_bits(), portable[i].to_bits(), "pair {i}");
         }
+        for level in crate::simd::test_levels() {
+            let mut copy = vec![0.0; n];
+            assert_eq!(path_chunk(level, &pairs, 0, &mut copy, &shared), Ok(()));
+            assert_eq!(bits(&portable), bits(&copy), "{level}");
+            eprintln!("path chunk at {level}: same bits as the portable copy");
+        }
+        // The generic lanes in the whole chunk (not run by the batch yet at these levels).
         let mut copy = vec![0.0; n];
-        assert_eq!(path_chunk(&pairs, 0, &mut copy, &shared), Ok(()));
-        assert_eq!(bits(&portable), bits(&copy));
+        let done = path_chunk_with(GenericLanes, &pairs, 0, &mut copy, &shared);
+        assert_eq!(done, Ok(()));
+        assert_eq!(bits(&portable), bits(&copy), "generic lanes");
         #[cfg(target_arch = "x86_64")]
-        {
-            let level = X86Level::detect();
-            if level != X86Level::Baseline {
-                // SAFETY: AVX2 and FMA are supported (both vector levels include them).
-                let done = unsafe { path_chunk_avx2(&pairs, 0, &mut copy, &shared) };
-                assert_eq!(done, Ok(()));
-                assert_eq!(bits(&portable), bits(&copy));
-            }
-            if X86Level::avx512_for_tests() {
-                // SAFETY: AVX-512 F, VL and DQ are supported, just detected.
-                let done = unsafe { path_chunk_avx512(&pairs, 0, &mut copy, &shared) };
-                assert_eq!(done, Ok(()));
-                assert_eq!(bits(&portable), bits(&copy));
-            }
+        if Level::Avx2Fma.supported() {
+            // SAFETY: the CPU has AVX2 and FMA (just checked).
+            let lanes = unsafe { Avx2Lanes::new() };
+            let done = path_chunk_with(lanes, &pairs, 0, &mut copy, &shared);
+            assert_eq!(done, Ok(()));
+            assert_eq!(bits(&portable), bits(&copy), "generic lanes at AVX2");
         }
     }
 

@@ -1,5 +1,6 @@
 //! The window screens ([`PathBounds::segments_apart`], [`apart_on_window`],
-//! [`apart_across_window_chord`]), eight pairs at a time with AVX-512, for the pairs of a block
+//! [`apart_across_window_chord`]), eight pairs at a time (written once over `[f64; 8]` lanes,
+//! [`lane_ops`](super::lane_ops), compiled in each copy of the batch), for the pairs of a block
 //! that the whole-path screens ([`path_lanes`](super::path_lanes)) leave: a pair whose every
 //! window they prove apart answers "none" at once, without being read again, checked, bounded
 //! and walked one window at a time.
@@ -27,10 +28,9 @@
 //! [`apart_across_window_chord`]: crate::collision::window_chord
 //! [`first_bounded_contact`]: crate::collision::path_contact
 
-use core::arch::x86_64::{
-    __m512d, __mmask8, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _mm512_abs_pd, _mm512_add_pd,
-    _mm512_cmp_pd_mask, _mm512_div_pd, _mm512_max_pd, _mm512_min_pd, _mm512_mul_pd, _mm512_set1_pd,
-    _mm512_setzero_pd, _mm512_sub_pd,
+#[allow(unused_imports)]
+use super::lane_ops::{
+    V, abs, add, blend, div, eq, ge, gt, lt, max, min, mul, ne, splat, sqrt, sub, zero,
 };
 
 use super::path_lanes::{LaneBoxes, LaneRows};
@@ -45,23 +45,22 @@ pub(super) struct LaneSide<'a, const D: usize, const K: usize> {
 
 /// The relative motion of a block's windows, a lane each: as `window_gap` forms it.
 struct LaneGap<const D: usize> {
-    offset: [__m512d; D],
-    velocity: [__m512d; D],
-    acceleration: [__m512d; D],
+    offset: [V; D],
+    velocity: [V; D],
+    acceleration: [V; D],
 }
 
 /// Which of the lanes `open` have every window proven apart, at contact distance `radius`,
 /// with the pair's whole-path `reach` for the segment boxes (both as `settled` forms them).
-#[inline]
-#[target_feature(enable = "avx512f")]
+#[inline(always)]
 pub(super) fn windows_apart<const D: usize, const K: usize>(
     a: &LaneSide<'_, D, K>,
     b: &LaneSide<'_, D, K>,
-    radius: __m512d,
-    reach: __m512d,
-    open: __mmask8,
-) -> __mmask8 {
-    let infinity = _mm512_set1_pd(f64::INFINITY);
+    radius: V,
+    reach: V,
+    open: u8,
+) -> u8 {
+    let infinity = splat(f64::INFINITY);
     let end = |side: &LaneSide<'_, D, K>, k: usize| {
         if k + 1 < K {
             side.rows.s[k + 1]
@@ -72,9 +71,9 @@ pub(super) fn windows_apart<const D: usize, const K: usize>(
     let mut proven = open;
     for i in 0..K {
         for j in 0..K {
-            let from = _mm512_max_pd(a.rows.s[i], b.rows.s[j]);
-            let to = _mm512_min_pd(end(a, i), end(b, j));
-            let left = proven & _mm512_cmp_pd_mask(from, to, _CMP_LT_OQ);
+            let from = max(a.rows.s[i], b.rows.s[j]);
+            let to = min(end(a, i), end(b, j));
+            let left = proven & lt(from, to);
             if left == 0 {
                 continue;
             }
@@ -89,7 +88,7 @@ pub(super) fn windows_apart<const D: usize, const K: usize>(
             }
             let gap = window_gap(a.rows, i, b.rows, j, from);
             // `bounded_length`: the window's length up to the longest searched.
-            let length = _mm512_min_pd(_mm512_sub_pd(to, from), _mm512_set1_pd(LONGEST_WINDOW));
+            let length = min(sub(to, from), splat(LONGEST_WINDOW));
             let mut left = left & !apart_on_window(&gap, radius, length);
             if left != 0 {
                 left &= !apart_across_window_chord(&gap, radius, length);
@@ -105,45 +104,40 @@ pub(super) fn windows_apart<const D: usize, const K: usize>(
 
 /// `PathBounds::segments_apart` lane-wise: segment `i`'s box of `a` and segment `j`'s of `b`
 /// farther apart than `reach` on some axis.
-#[inline]
-#[target_feature(enable = "avx512f")]
+#[inline(always)]
 fn segments_apart<const D: usize, const K: usize>(
     a: &LaneBoxes<D, K>,
     i: usize,
     b: &LaneBoxes<D, K>,
     j: usize,
-    reach: __m512d,
-) -> __mmask8 {
-    let mut apart: __mmask8 = 0;
+    reach: V,
+) -> u8 {
+    let mut apart: u8 = 0;
     for x in 0..D {
-        apart |= _mm512_cmp_pd_mask(_mm512_sub_pd(a.lo[i][x], b.hi[j][x]), reach, _CMP_GT_OQ);
-        apart |= _mm512_cmp_pd_mask(_mm512_sub_pd(b.lo[j][x], a.hi[i][x]), reach, _CMP_GT_OQ);
+        apart |= gt(sub(a.lo[i][x], b.hi[j][x]), reach);
+        apart |= gt(sub(b.lo[j][x], a.hi[i][x]), reach);
     }
     apart
 }
 
 /// `window_gap` (`collision::path_contact`) lane-wise: A's segment `i` less B's segment `j`
 /// at `start`, each by `Segment::position_at` and `velocity_at`.
-#[inline]
-#[target_feature(enable = "avx512f")]
+#[inline(always)]
 fn window_gap<const D: usize, const K: usize>(
     a: &LaneRows<D, K>,
     i: usize,
     b: &LaneRows<D, K>,
     j: usize,
-    start: __m512d,
+    start: V,
 ) -> LaneGap<D> {
-    let half = _mm512_set1_pd(0.5);
-    let (since_a, since_b) = (_mm512_sub_pd(start, a.s[i]), _mm512_sub_pd(start, b.s[j]));
+    let half = splat(0.5);
+    let (since_a, since_b) = (sub(start, a.s[i]), sub(start, b.s[j]));
     // `p + (v + a·(½·s))·s` and `v + a·s`.
-    let at = |p: __m512d, v: __m512d, acc: __m512d, s: __m512d| {
-        let mid = _mm512_add_pd(v, _mm512_mul_pd(acc, _mm512_mul_pd(half, s)));
-        (
-            _mm512_add_pd(p, _mm512_mul_pd(mid, s)),
-            _mm512_add_pd(v, _mm512_mul_pd(acc, s)),
-        )
+    let at = |p: V, v: V, acc: V, s: V| {
+        let mid = add(v, mul(acc, mul(half, s)));
+        (add(p, mul(mid, s)), add(v, mul(acc, s)))
     };
-    let zero = _mm512_setzero_pd();
+    let zero = zero();
     let mut gap = LaneGap {
         offset: [zero; D],
         velocity: [zero; D],
@@ -152,147 +146,95 @@ fn window_gap<const D: usize, const K: usize>(
     for x in 0..D {
         let (pa, va) = at(a.p[i][x], a.v[i][x], a.a[i][x], since_a);
         let (pb, vb) = at(b.p[j][x], b.v[j][x], b.a[j][x], since_b);
-        gap.offset[x] = _mm512_sub_pd(pa, pb);
-        gap.velocity[x] = _mm512_sub_pd(va, vb);
-        gap.acceleration[x] = _mm512_sub_pd(a.a[i][x], b.a[j][x]);
+        gap.offset[x] = sub(pa, pb);
+        gap.velocity[x] = sub(va, vb);
+        gap.acceleration[x] = sub(a.a[i][x], b.a[j][x]);
     }
     gap
 }
 
 /// `apart_on_window` (`collision::window_box`) lane-wise, where no underflow can count (else
 /// not proven).
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn apart_on_window<const D: usize>(gap: &LaneGap<D>, radius: __m512d, length: __m512d) -> __mmask8 {
-    let (zero, half, one) = (
-        _mm512_setzero_pd(),
-        _mm512_set1_pd(0.5),
-        _mm512_set1_pd(1.0),
-    );
+#[inline(always)]
+fn apart_on_window<const D: usize>(gap: &LaneGap<D>, radius: V, length: V) -> u8 {
+    let (zero, half, one) = (zero(), splat(0.5), splat(1.0));
     let (mut nearest2, mut size, mut spread) = (zero, radius, zero);
     for x in 0..D {
         let (p, v, a) = (gap.offset[x], gap.velocity[x], gap.acceleration[x]);
         // `axis_range`: `p + (v + ½·a·s)·s` at the end and at the turn held to the span.
-        let at = |s: __m512d| {
-            _mm512_add_pd(
-                p,
-                _mm512_mul_pd(
-                    _mm512_add_pd(v, _mm512_mul_pd(_mm512_mul_pd(half, a), s)),
-                    s,
-                ),
-            )
-        };
+        let at = |s: V| add(p, mul(add(v, mul(mul(half, a), s)), s));
         let end = at(length);
         // (`f64::min` and `max` drop a NaN operand; `min_pd` and `max_pd` return the second
         // operand where either is NaN: the possibly NaN operand comes first.)
-        let (lo, hi) = (_mm512_min_pd(end, p), _mm512_max_pd(end, p));
-        let turn = _mm512_sub_pd(zero, _mm512_div_pd(v, a));
-        let turn = _mm512_min_pd(_mm512_max_pd(turn, zero), length);
+        let (lo, hi) = (min(end, p), max(end, p));
+        let turn = sub(zero, div(v, a));
+        let turn = min(max(turn, zero), length);
         let vertex = at(turn);
-        let (lo, hi) = (_mm512_min_pd(vertex, lo), _mm512_max_pd(vertex, hi));
-        let far = _mm512_add_pd(_mm512_abs_pd(v), _mm512_mul_pd(_mm512_abs_pd(a), length));
-        let magnitude = _mm512_add_pd(_mm512_abs_pd(p), _mm512_mul_pd(far, length));
-        let reach = _mm512_add_pd(_mm512_add_pd(one, _mm512_abs_pd(v)), length);
-        spread = _mm512_add_pd(spread, _mm512_mul_pd(reach, reach));
-        let nearest = _mm512_add_pd(
-            _mm512_max_pd(lo, zero),
-            _mm512_max_pd(_mm512_sub_pd(zero, hi), zero),
-        );
-        nearest2 = _mm512_add_pd(nearest2, _mm512_mul_pd(nearest, nearest));
-        size = _mm512_add_pd(size, magnitude);
+        let (lo, hi) = (min(vertex, lo), max(vertex, hi));
+        let far = add(abs(v), mul(abs(a), length));
+        let magnitude = add(abs(p), mul(far, length));
+        let reach = add(add(one, abs(v)), length);
+        spread = add(spread, mul(reach, reach));
+        let nearest = add(max(lo, zero), max(sub(zero, hi), zero));
+        nearest2 = add(nearest2, mul(nearest, nearest));
+        size = add(size, magnitude);
     }
-    let reach = _mm512_add_pd(radius, _mm512_mul_pd(_mm512_set1_pd(MARGIN), size));
-    let far = _mm512_mul_pd(reach, reach);
-    plain(reach, spread) & square_normal(far) & _mm512_cmp_pd_mask(nearest2, far, _CMP_GT_OQ)
+    let reach = add(radius, mul(splat(MARGIN), size));
+    let far = mul(reach, reach);
+    plain(reach, spread) & square_normal(far) & gt(nearest2, far)
 }
 
 /// `apart_across_window_chord` (`collision::window_chord`) lane-wise, where no underflow can
 /// count (else not proven).
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn apart_across_window_chord<const D: usize>(
-    gap: &LaneGap<D>,
-    radius: __m512d,
-    length: __m512d,
-) -> __mmask8 {
+#[inline(always)]
+fn apart_across_window_chord<const D: usize>(gap: &LaneGap<D>, radius: V, length: V) -> u8 {
     let (d, v, a) = (&gap.offset, &gap.velocity, &gap.acceleration);
-    let (zero, one) = (_mm512_setzero_pd(), _mm512_set1_pd(1.0));
-    let half_length = _mm512_mul_pd(_mm512_set1_pd(0.5), length);
-    let chord: [__m512d; D] = std::array::from_fn(|x| {
-        _mm512_mul_pd(
-            _mm512_add_pd(v[x], _mm512_mul_pd(a[x], half_length)),
-            length,
-        )
-    });
+    let (zero, one) = (zero(), splat(1.0));
+    let half_length = mul(splat(0.5), length);
+    let chord: [V; D] = std::array::from_fn(|x| mul(add(v[x], mul(a[x], half_length)), length));
     let (mut cc, mut dc) = (zero, zero);
     for x in 0..D {
-        cc = _mm512_add_pd(cc, _mm512_mul_pd(chord[x], chord[x]));
-        dc = _mm512_add_pd(dc, _mm512_mul_pd(d[x], chord[x]));
+        cc = add(cc, mul(chord[x], chord[x]));
+        dc = add(dc, mul(d[x], chord[x]));
     }
-    let normal: [__m512d; D] = std::array::from_fn(|x| {
-        _mm512_sub_pd(_mm512_mul_pd(d[x], cc), _mm512_mul_pd(chord[x], dc))
-    });
+    let normal: [V; D] = std::array::from_fn(|x| sub(mul(d[x], cc), mul(chord[x], dc)));
     let mut largest = zero;
     for n in &normal {
-        largest = _mm512_max_pd(_mm512_abs_pd(*n), largest);
+        largest = max(abs(*n), largest);
     }
-    let scale = _mm512_div_pd(one, largest);
+    let scale = div(one, largest);
     let (mut at_start, mut slope, mut bend, mut nn) = (zero, zero, zero, zero);
     let (mut size, mut spread) = (radius, zero);
     for x in 0..D {
-        let n = _mm512_mul_pd(normal[x], scale);
-        nn = _mm512_add_pd(nn, _mm512_mul_pd(n, n));
-        at_start = _mm512_add_pd(at_start, _mm512_mul_pd(n, d[x]));
-        slope = _mm512_add_pd(slope, _mm512_mul_pd(n, v[x]));
-        bend = _mm512_add_pd(bend, _mm512_mul_pd(n, a[x]));
-        let far = _mm512_add_pd(
-            _mm512_abs_pd(v[x]),
-            _mm512_mul_pd(_mm512_abs_pd(a[x]), length),
-        );
-        size = _mm512_add_pd(
-            size,
-            _mm512_add_pd(_mm512_abs_pd(d[x]), _mm512_mul_pd(far, length)),
-        );
-        let reach = _mm512_add_pd(_mm512_add_pd(one, _mm512_abs_pd(v[x])), length);
-        spread = _mm512_add_pd(spread, _mm512_mul_pd(reach, reach));
+        let n = mul(normal[x], scale);
+        nn = add(nn, mul(n, n));
+        at_start = add(at_start, mul(n, d[x]));
+        slope = add(slope, mul(n, v[x]));
+        bend = add(bend, mul(n, a[x]));
+        let far = add(abs(v[x]), mul(abs(a[x]), length));
+        size = add(size, add(abs(d[x]), mul(far, length)));
+        let reach = add(add(one, abs(v[x])), length);
+        spread = add(spread, mul(reach, reach));
     }
-    let middle = _mm512_add_pd(at_start, _mm512_mul_pd(slope, half_length));
-    let end = _mm512_add_pd(
-        at_start,
-        _mm512_mul_pd(
-            _mm512_add_pd(slope, _mm512_mul_pd(bend, half_length)),
-            length,
-        ),
-    );
-    let lo = _mm512_min_pd(end, _mm512_min_pd(middle, at_start));
-    let hi = _mm512_max_pd(end, _mm512_max_pd(middle, at_start));
-    let nearest = _mm512_add_pd(
-        _mm512_max_pd(lo, zero),
-        _mm512_max_pd(_mm512_sub_pd(zero, hi), zero),
-    );
-    let reach = _mm512_add_pd(radius, _mm512_mul_pd(_mm512_set1_pd(MARGIN), size));
-    let far = _mm512_mul_pd(_mm512_mul_pd(reach, reach), nn);
-    plain(reach, spread)
-        & _mm512_cmp_pd_mask(nn, one, _CMP_GE_OQ)
-        & _mm512_cmp_pd_mask(nearest, zero, _CMP_GT_OQ)
-        & _mm512_cmp_pd_mask(_mm512_mul_pd(nearest, nearest), far, _CMP_GT_OQ)
+    let middle = add(at_start, mul(slope, half_length));
+    let end = add(at_start, mul(add(slope, mul(bend, half_length)), length));
+    let lo = min(end, min(middle, at_start));
+    let hi = max(end, max(middle, at_start));
+    let nearest = add(max(lo, zero), max(sub(zero, hi), zero));
+    let reach = add(radius, mul(splat(MARGIN), size));
+    let far = mul(mul(reach, reach), nn);
+    plain(reach, spread) & ge(nn, one) & gt(nearest, zero) & gt(mul(nearest, nearest), far)
 }
 
 /// Lanes whose `reach` is beyond what underflow can cost boxes of `spread` (`with_underflow`
 /// leaves it as it is).
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn plain(reach: __m512d, spread: __m512d) -> __mmask8 {
-    _mm512_cmp_pd_mask(
-        reach,
-        _mm512_mul_pd(_mm512_set1_pd(NORMAL_FLOOR), spread),
-        _CMP_GE_OQ,
-    )
+#[inline(always)]
+fn plain(reach: V, spread: V) -> u8 {
+    ge(reach, mul(splat(NORMAL_FLOOR), spread))
 }
 
 /// Lanes whose squared reach is above [`NORMAL_FLOOR`] (no slack for underflowing squares).
-#[inline]
-#[target_feature(enable = "avx512f")]
-fn square_normal(far: __m512d) -> __mmask8 {
-    _mm512_cmp_pd_mask(far, _mm512_set1_pd(NORMAL_FLOOR), _CMP_GT_OQ)
+#[inline(always)]
+fn square_normal(far: V) -> u8 {
+    gt(far, splat(NORMAL_FLOOR))
 }

@@ -400,9 +400,11 @@ fn search_window<const D: usize>(
     length: f64,
     previous_positive: bool,
 ) -> WindowSearch {
+    // The level of the batch (or the process): `simd`'s one dispatch point.
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports FMA, just detected.
+    if crate::simd::current() != crate::simd::Level::Portable {
+        // SAFETY: every x86-64 level above the portable one has FMA, and `simd` hands out
+        // only levels this CPU supports.
         return unsafe { search_window_fma(gap, length, previous_positive) };
     }
     search_window_in(gap, length, previous_positive)

@@ -49,9 +49,11 @@ pub(crate) fn while_moving(pair: &PairInput) -> WhileMoving {
 /// holds no plain eighth (most pairs that reach the search), and with fused multiply-adds
 /// in hardware where the CPU has them.
 pub(crate) fn while_moving_one(pair: &PairInput) -> WhileMoving {
+    // The level of the batch (or the process): `simd`'s one dispatch point.
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports FMA, just detected.
+    if crate::simd::current() != crate::simd::Level::Portable {
+        // SAFETY: every x86-64 level above the portable one has FMA, and `simd` hands out
+        // only levels this CPU supports.
         return unsafe { while_moving_one_fma(pair) };
     }
     while_moving_one_portable(pair)

@@ -112,9 +112,11 @@ pub(crate) fn first_bounded_contact_one<const D: usize, const S: usize>(
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
+    // The level of the batch (or the process): `simd`'s one dispatch point.
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU supports FMA, just detected.
+    if crate::simd::current() != crate::simd::Level::Portable {
+        // SAFETY: every x86-64 level above the portable one has FMA, and `simd` hands out
+        // only levels this CPU supports.
         return unsafe { first_bounded_contact_fma(a, b, radii, t_max) };
     }
     first_bounded_contact(a, b, radii, t_max, Prior::Nothing)
