@@ -16,6 +16,8 @@ use std::time::Duration;
 use ballcollide::batch::{Threads, collision_times};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
+#[path = "../tests/support/machine.rs"]
+mod machine;
 #[path = "../tests/support/rng.rs"]
 mod rng;
 #[path = "../tests/support/table_pairs.rs"]
@@ -26,7 +28,7 @@ use table_pairs::{Kind, Set, set};
 use thread_cpu_time::ThreadCpuTime;
 
 fn kernel(c: &mut Criterion<ThreadCpuTime>) {
-    print_machine();
+    machine::print_machine();
     let one = Threads::AtMost(NonZeroUsize::MIN);
     let mut group = c.benchmark_group("kernel_1_thread");
     let n = 4096;
@@ -69,25 +71,6 @@ fn throughput(c: &mut Criterion) {
         }
     }
     group.finish();
-}
-
-/// Prints the CPU model and the SIMD level the batches run at (`BALLCOLLIDE_SIMD` forces it):
-/// every figure belongs to both.
-fn print_machine() {
-    let cpu = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|info| {
-            info.lines()
-                .find(|l| l.starts_with("model name"))
-                .and_then(|l| l.split(':').nth(1))
-                .map(|m| m.trim().to_string())
-        })
-        .unwrap_or_else(|| std::env::consts::ARCH.to_string());
-    eprintln!(
-        "CPU: {cpu}; SIMD level: {} (available: {:?})",
-        ballcollide::simd::current(),
-        ballcollide::simd::Level::available()
-    );
 }
 
 /// Every input of pair `i` summed: what a kernel that reads each input once and does no

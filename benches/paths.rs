@@ -35,6 +35,8 @@ use criterion::{
 };
 use nalgebra::Vector2;
 
+#[path = "../tests/support/machine.rs"]
+mod machine;
 #[path = "../tests/support/path_table.rs"]
 mod path_table;
 #[path = "../tests/support/pool_balls.rs"]
@@ -436,27 +438,8 @@ fn groups<M: Measurement>(c: &mut Criterion<M>, threads: Threads, label: &str) {
     group.finish();
 }
 
-/// Prints the CPU model and the SIMD level the batches run at (`BALLCOLLIDE_SIMD` forces it):
-/// every figure belongs to both.
-fn print_machine() {
-    let cpu = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|info| {
-            info.lines()
-                .find(|l| l.starts_with("model name"))
-                .and_then(|l| l.split(':').nth(1))
-                .map(|m| m.trim().to_string())
-        })
-        .unwrap_or_else(|| std::env::consts::ARCH.to_string());
-    eprintln!(
-        "CPU: {cpu}; SIMD level: {} (available: {:?})",
-        ballcollide::simd::current(),
-        ballcollide::simd::Level::available()
-    );
-}
-
 fn one_thread(c: &mut Criterion<ThreadCpuTime>) {
-    print_machine();
+    machine::print_machine();
     let (pool, seed, _) = sets();
     describe("pool_table", pool);
     describe("seed_as_paths", &seed.paths);

@@ -18,24 +18,13 @@ one thread, in one run.
 from __future__ import annotations
 
 import argparse
-import platform
 import time
 from functools import partial
 
 import numpy as np
+from machine import cpu_model
 
 import ballcollide as bc
-
-
-def cpu_model() -> str:
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or platform.machine()
 
 
 def median_time(f, repeats: int):

@@ -29,7 +29,6 @@ Ratios are to the C-ordered call in the same run.
 from __future__ import annotations
 
 import argparse
-import platform
 import shlex
 import sys
 import time
@@ -38,23 +37,13 @@ from typing import Any
 
 import numpy as np
 from compare import RADIUS, Pairs, random_table
+from machine import cpu_model
 
 import ballcollide as bc
 from ballcollide import _core
 
 Inputs = dict[str, Any]
 NAMES = ("pos_a", "vel_a", "friction_a", "pos_b", "vel_b", "friction_b")
-
-
-def cpu_model() -> str:
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or platform.machine()
 
 
 def c_order(p: Pairs) -> Inputs:

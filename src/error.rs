@@ -382,27 +382,25 @@ pub(crate) fn check_friction(argument: &'static str, friction: f64) -> Result<f6
 
 /// Checks a collision radius: finite and > 0.
 pub(crate) fn check_radius(argument: &'static str, radius: f64) -> Result<f64, InputError> {
-    finite(argument, radius)?;
-    if radius > 0.0 {
-        Ok(radius)
-    } else {
-        Err(InputError::new(
-            argument,
-            InputErrorKind::NonPositiveRadius(radius),
-        ))
-    }
+    positive(argument, radius, InputErrorKind::NonPositiveRadius)
 }
 
 /// Checks one ball's radius (a scene's, a calendar's): finite and > 0.
 pub(crate) fn check_ball_radius(argument: &'static str, radius: f64) -> Result<f64, InputError> {
-    finite(argument, radius)?;
-    if radius > 0.0 {
-        Ok(radius)
+    positive(argument, radius, InputErrorKind::NonPositiveBallRadius)
+}
+
+/// `Ok(x)` if `x` is finite and > 0, else an error naming `argument` (`kind` for `x ≤ 0`).
+fn positive(
+    argument: &'static str,
+    x: f64,
+    kind: fn(f64) -> InputErrorKind,
+) -> Result<f64, InputError> {
+    finite(argument, x)?;
+    if x > 0.0 {
+        Ok(x)
     } else {
-        Err(InputError::new(
-            argument,
-            InputErrorKind::NonPositiveBallRadius(radius),
-        ))
+        Err(InputError::new(argument, kind(x)))
     }
 }
 

@@ -13,53 +13,17 @@
 //!
 //! Run with `--nocapture` to see the error/floor distribution per category.
 
+#[path = "support/fields.rs"]
+mod fields;
 #[path = "support/reference_table.rs"]
 mod reference_table;
 
-use ballcollide::path::{Path, Segment};
+use ballcollide::path::Path;
 use ballcollide::schedule::{CollisionSchedule, ScheduleOptions};
 use ballcollide::{Ball, CollisionOptions, collision_time_with, path_collision_time};
-use nalgebra::{SVector, Vector2};
+use fields::Fields;
+use nalgebra::Vector2;
 use reference_table::Table;
-
-/// The numbers of a line after its query and category.
-struct Fields<'a> {
-    line: usize,
-    rest: std::slice::Iter<'a, &'a str>,
-}
-
-impl Fields<'_> {
-    fn number(&mut self) -> f64 {
-        let line = self.line;
-        let f = self
-            .rest
-            .next()
-            .unwrap_or_else(|| panic!("line {line}: too few fields"));
-        f.parse()
-            .unwrap_or_else(|_| panic!("line {line}: bad number {f}"))
-    }
-
-    fn vector<const D: usize>(&mut self) -> SVector<f64, D> {
-        SVector::from_fn(|_, _| self.number())
-    }
-
-    fn path<const D: usize>(&mut self, k: usize) -> Path<D> {
-        let segments = (0..k)
-            .map(|_| {
-                let start = self.number();
-                let (p, v, a) = (self.vector(), self.vector(), self.vector());
-                Segment::new(start, p, v, a)
-            })
-            .collect();
-        Path::new(segments).unwrap_or_else(|e| panic!("line {}: {e}", self.line))
-    }
-
-    fn ball(&mut self) -> Ball {
-        let (p, v) = (self.vector::<2>(), self.vector::<2>());
-        let friction = self.number();
-        Ball::new(p, v, friction).unwrap_or_else(|e| panic!("line {}: {e}", self.line))
-    }
-}
 
 fn check_path<const D: usize>(table: &mut Table, category: &str, mut fields: Fields<'_>) {
     let (ka, kb) = (fields.number() as usize, fields.number() as usize);

@@ -7,50 +7,14 @@
 //!
 //! Run with `--nocapture` to see the error/floor distribution per category.
 
+#[path = "support/fields.rs"]
+mod fields;
 #[path = "support/reference_table.rs"]
 mod reference_table;
 
-use ballcollide::path::{Path, Segment};
 use ballcollide::{CollisionOptions, path_collision_time};
-use nalgebra::SVector;
+use fields::Fields;
 use reference_table::Table;
-
-/// The numbers of one line after its category and dimension.
-struct Fields<'a> {
-    line: usize,
-    rest: std::slice::Iter<'a, &'a str>,
-}
-
-impl Fields<'_> {
-    fn number(&mut self) -> f64 {
-        let line = self.line;
-        let f = self
-            .rest
-            .next()
-            .unwrap_or_else(|| panic!("line {line}: too few fields"));
-        f.parse()
-            .unwrap_or_else(|_| panic!("line {line}: bad number {f}"))
-    }
-
-    fn count(&mut self) -> usize {
-        self.number() as usize
-    }
-
-    fn vector<const D: usize>(&mut self) -> SVector<f64, D> {
-        SVector::from_fn(|_, _| self.number())
-    }
-
-    fn path<const D: usize>(&mut self, k: usize) -> Path<D> {
-        let segments = (0..k)
-            .map(|_| {
-                let start = self.number();
-                let (p, v, a) = (self.vector(), self.vector(), self.vector());
-                Segment::new(start, p, v, a)
-            })
-            .collect();
-        Path::new(segments).unwrap_or_else(|e| panic!("line {}: {e}", self.line))
-    }
-}
 
 fn check<const D: usize>(table: &mut Table, category: &str, mut fields: Fields<'_>) {
     let (ka, kb) = (fields.count(), fields.count());

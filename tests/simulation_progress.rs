@@ -340,30 +340,18 @@ fn simulation_cases() -> impl Strategy<Value = SimulationCase> {
     )
         .prop_map(|(balls, k, restitution, mass, t_end)| {
             let s = 2f64.powi(k);
-            let side = 2.0 * s;
-            let radii: Vec<f64> = balls.iter().map(|b| f64::from(b.0.4) / 256.0 * s).collect();
             let mass = if mass.len() == 1 {
                 mass
             } else {
                 mass[..balls.len()].to_vec()
             };
-            let balls = balls
+            let balls: Vec<_> = balls
                 .iter()
-                .zip(&radii)
-                .map(|(((x, y, vx, vy, _), f), &r)| {
-                    let at = |u: f64| r + (side - 2.0 * r) * u;
-                    [at(*x), at(*y), vx * s, vy * s, f * s]
+                .map(|&((x, y, vx, vy, r), f)| {
+                    ([x, y], f64::from(r) / 256.0 * s, [vx * s, vy * s], f * s)
                 })
                 .collect();
-            SimulationCase {
-                balls,
-                radii,
-                lo: [0.0; 2],
-                hi: [side; 2],
-                mass,
-                restitution,
-                t_end,
-            }
+            SimulationCase::in_square(2.0 * s, &balls, mass, restitution, t_end)
         })
 }
 

@@ -415,15 +415,12 @@ pub fn simulation_case(u: &mut Unstructured) -> Result<simulation_invariants::Si
     let n = u.int_in_range(1..=8)?;
     let side = scale(2.0, s);
     let mut balls = Vec::with_capacity(n);
-    let mut radii = Vec::with_capacity(n);
     for _ in 0..n {
         let r = scale(f64::from(u.int_in_range(4..=64u8)?) / 256.0, s);
-        let at = |u: &mut Unstructured| -> Result<f64> {
-            Ok(r + (side - 2.0 * r) * f64::from(u.arbitrary::<u16>()?) / 65535.0)
-        };
-        let (x, y) = (at(u)?, at(u)?);
-        balls.push([x, y, length(u, s)?, length(u, s)?, friction(u, s)?]);
-        radii.push(r);
+        let mut fraction = || -> Result<f64> { Ok(f64::from(u.arbitrary::<u16>()?) / 65535.0) };
+        let at = [fraction()?, fraction()?];
+        let v = [length(u, s)?, length(u, s)?];
+        balls.push((at, r, v, friction(u, s)?));
     }
     let mass = if u.arbitrary::<bool>()? {
         vec![1.0]
@@ -438,15 +435,13 @@ pub fn simulation_case(u: &mut Unstructured) -> Result<simulation_invariants::Si
         _ => f64::from(u.arbitrary::<u8>()?) / 255.0,
     };
     let t_end = f64::from(u.int_in_range(1..=16384u16)?) / 256.0;
-    Ok(simulation_invariants::SimulationCase {
-        balls,
-        radii,
-        lo: [0.0; 2],
-        hi: [side; 2],
+    Ok(simulation_invariants::SimulationCase::in_square(
+        side,
+        &balls,
         mass,
         restitution,
         t_end,
-    })
+    ))
 }
 
 /// A pair of the narrow family (`tests/support/narrow_pairs.rs`): head on or off axis, the

@@ -41,7 +41,18 @@ const CROSSING: f64 = (1u64 << 20) as f64 * f64::EPSILON;
 /// Branch-free, for the lanes.
 #[inline(always)]
 pub(crate) fn narrow<const D: usize>(gap: &Gap<D>) -> bool {
-    let size = gap.offset.abs().sum() + gap.velocity.abs().sum() + gap.acceleration.abs().sum();
+    narrow_beside(gap, size(gap))
+}
+
+/// The sum of the magnitudes of the window's offset, velocity and acceleration.
+#[inline(always)]
+fn size<const D: usize>(gap: &Gap<D>) -> f64 {
+    gap.offset.abs().sum() + gap.velocity.abs().sum() + gap.acceleration.abs().sum()
+}
+
+/// [`narrow`] for a window of that [`size`].
+#[inline(always)]
+fn narrow_beside<const D: usize>(gap: &Gap<D>, size: f64) -> bool {
     gap.radius <= NARROW * size
 }
 
@@ -55,7 +66,8 @@ pub(crate) fn narrow<const D: usize>(gap: &Gap<D>) -> bool {
 pub(crate) fn narrow_entry<const D: usize>(gap: &Gap<D>, left: f64, lowest: f64) -> Option<f64> {
     // (A NaN `lowest` fails the comparison: nothing to decide.)
     let inside = lowest > left;
-    if !narrow(gap) || !inside {
+    let size = size(gap);
+    if !narrow_beside(gap, size) || !inside {
         return None;
     }
     let (p, v, a) = (&gap.offset, &gap.velocity, &gap.acceleration);
@@ -68,7 +80,6 @@ pub(crate) fn narrow_entry<const D: usize>(gap: &Gap<D>, left: f64, lowest: f64)
     // outside the grazing band, where `|d′| ≥ ~3e-5·S′`); a dip whose floor is a real
     // distance (the balls turn back short of each other, `d′ ≈ 0` there, and the cross
     // product vanishes with it on a line) is a miss, whatever `|C|/|d′|` says.
-    let size = p.abs().sum() + v.abs().sum() + a.abs().sum();
     let floor = gap.separation(u).abs().sum();
     let crossing = floor <= CROSSING * size; // (false for a NaN)
     if !crossing {

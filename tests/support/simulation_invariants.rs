@@ -29,6 +29,33 @@ pub struct SimulationCase {
     pub t_end: f64,
 }
 
+impl SimulationCase {
+    /// Balls in the square `[0, side]²`, each `(at, radius, velocity, friction)` with `at` in
+    /// `[0, 1]²` placing its centre where a ball of that radius fits (touching the walls at 0
+    /// and 1).
+    pub fn in_square(
+        side: f64,
+        balls: &[([f64; 2], f64, [f64; 2], f64)],
+        mass: Vec<f64>,
+        restitution: f64,
+        t_end: f64,
+    ) -> Self {
+        let place = |u: f64, r: f64| r + (side - 2.0 * r) * u;
+        Self {
+            balls: balls
+                .iter()
+                .map(|&(at, r, v, f)| [place(at[0], r), place(at[1], r), v[0], v[1], f])
+                .collect(),
+            radii: balls.iter().map(|b| b.1).collect(),
+            lo: [0.0; 2],
+            hi: [side; 2],
+            mass,
+            restitution,
+            t_end,
+        }
+    }
+}
+
 /// The most events a checked run may take.
 pub const MAX_EVENTS: usize = 20_000;
 
