@@ -369,3 +369,97 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn a_ball_faster_than_float_time_resolves_is_stopped_inside_its_box() {
+    // Found by the fuzz target `simulate`: a ball at 1.4e303 in a box 6e-151 wide reaches
+    // the wall 1.8e-455 time units on, which rounds to 0. The wall's entry root underflowed
+    // and was dropped, so the ball left the box (at 5e300 in the end). Now every bounce is
+    // found at t = 0, and the run stops there with "no progress" (beyond the contract's
+    // range, where the invariants ask only for an end or an error).
+    let case = SimulationCase {
+        balls: vec![[
+            5.750244294703702e-151,
+            4.525499232072452e-152,
+            1.3715310171984222e303,
+            0.0,
+            0.0,
+        ]],
+        radii: vec![1.0740010652928298e-152],
+        lo: [0.0, 0.0],
+        hi: [6.10987272699921e-151, 6.10987272699921e-151],
+        mass: vec![5e-324],
+        restitution: 0.0,
+        t_end: 0.00390625,
+    };
+    assert!(!simulation_invariants::within_promise(&case));
+    if let Err(e) = simulation(&case) {
+        panic!("{e}");
+    }
+    let b = &case.balls[0];
+    let balls = [ball([b[0], b[1]], [b[2], b[3]], b[4])];
+    let walls = Walls::new(case.lo, case.hi).expect("a valid box");
+    let options = SimulationOptions {
+        mass: case.mass.clone(),
+        restitution: case.restitution,
+        t_end: case.t_end,
+        max_events: None,
+    };
+    let e = simulate(&balls, &case.radii, walls, &options).expect_err("no progress");
+    assert!(
+        matches!(e.kind(), InputErrorKind::NoProgress { other: None, time, .. } if time == 0.0)
+    );
+}
+
+/// The fuzzed cases below: `ball` `(x, y, vx, vy, friction)` and a ball at rest in the
+/// corner of a box 2 wide, both of radius 1/64 and mass 5e-324, restitution 0, to 1/256.
+fn against_a_ball_in_a_corner(ball: [f64; 5]) -> SimulationCase {
+    SimulationCase {
+        balls: vec![ball, [0.015625, 0.015625, 0.0, 0.0, 0.0]],
+        radii: vec![0.015625, 0.015625],
+        lo: [0.0, 0.0],
+        hi: [2.0, 2.0],
+        mass: vec![5e-324, 5e-324],
+        restitution: 0.0,
+        t_end: 0.00390625,
+    }
+}
+
+#[test]
+fn a_ball_faster_than_time_resolves_later_on_is_stopped_with_no_progress() {
+    // Found by the fuzz target `simulate`: a ball at 3e82 in a box 2 wide meets a wall every
+    // 6.6e-83 time units; near t = 2.5e-32, whose ulp is 3.7e-48, every event of it comes at
+    // one instant. Outside the contract's range (time must resolve the motion), where a run
+    // must end or be refused: it is refused, naming the balls.
+    let case = against_a_ball_in_a_corner([
+        0.8651901178759442,
+        0.042361667429617764,
+        3.035420144102863e82,
+        0.0,
+        0.0,
+    ]);
+    assert!(!simulation_invariants::within_promise(&case));
+    if let Err(e) = simulation(&case) {
+        panic!("{e}");
+    }
+}
+
+#[test]
+fn a_pair_left_parting_slowly_at_an_instant_collides_again_rather_than_sink_in() {
+    // Found by the fuzz target `simulate`: ball 0 hits the top wall, comes down onto ball 1
+    // in the corner; at that instant ball 1 bounces off the bottom wall between two
+    // collisions with ball 0, and the last left the pair parting at 3.7e-9 while ball 0's
+    // friction pressed it into ball 1: they sank 4.2e-7 of their contact distance into each
+    // other with no event, as rounding had put their centres a hair within it.
+    let case = against_a_ball_in_a_corner([
+        0.015625,
+        0.677552786678874,
+        -0.0,
+        4111.0,
+        0.06280549760056367,
+    ]);
+    assert!(simulation_invariants::within_promise(&case));
+    if let Err(e) = simulation(&case) {
+        panic!("{e}");
+    }
+}

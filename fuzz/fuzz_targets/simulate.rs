@@ -8,9 +8,14 @@ use ballcollide_fuzz::{simulation_case, simulation_invariants};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
-    if let Ok(case) = simulation_case(&mut Unstructured::new(data))
-        && let Err(e) = simulation_invariants::simulation(&case)
-    {
+    let Ok(case) = simulation_case(&mut Unstructured::new(data)) else {
+        return;
+    };
+    // A slow input (libFuzzer's timeout) breaks no invariant to print: show its case.
+    if std::env::var_os("BALLCOLLIDE_FUZZ_SHOW").is_some() {
+        eprintln!("{case:?}");
+    }
+    if let Err(e) = simulation_invariants::simulation(&case) {
         panic!("{e}");
     }
 });

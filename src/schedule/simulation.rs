@@ -7,7 +7,8 @@
 //!   restitution `e` and the masses, so that they part at the normal speed
 //!   `w = max(e·u, w_min)`, `u` the speed at which they approached (the tangential
 //!   components are kept: smooth balls; see [`parting_speed`] for `w_min`); a ball's second
-//!   and later events at one instant are elastic (see [`restitution_at`]);
+//!   and later events at one instant are elastic (see [`restitution_at`]), and a pair that
+//!   a later event of the instant leaves parting too slowly collides again (`Run::collide`);
 //! - a ball touches a wall: its velocity's component normal to the wall is reflected;
 //!
 //! and the balls involved get new friction paths from the event's time. It runs until
@@ -200,50 +201,31 @@ pub fn simulate_observed(
     let mut at_this_instant = 0usize;
     // Per ball: the time of its last event (see `restitution_at`).
     let mut last_event = vec![f64::NEG_INFINITY; n];
+    // The pairs that collided at the current instant (see `Run::collide`).
+    let mut instant_pairs: Vec<[usize; 2]> = Vec::new();
     let mut end = 0.0;
     let mut stopped = false;
-    while events.len() < max_events {
+    let run = Run {
+        balls,
+        radii,
+        masses: &masses,
+        restitution: e,
+    };
+    'events: while events.len() < max_events {
         let Some(event) = calendar.next_event() else {
             break;
         };
         let t = event.time();
-        at_this_instant = if t == end && !events.is_empty() {
-            at_this_instant + 1
-        } else {
-            1
-        };
-        if at_this_instant > most_at_one_instant {
-            let (i, other) = match event {
-                Event::Collision(c) => (c.i, Some(c.j)),
-                Event::Wall(w) => (w.ball, None),
-            };
-            let kind = InputErrorKind::NoProgress {
-                other,
-                time: t,
-                events: at_this_instant,
-            };
-            return Err(InputError::new("pos", kind).at(i));
+        if t != end || events.is_empty() {
+            at_this_instant = 0;
+            instant_pairs.clear();
         }
         end = t;
-        match event {
+        let mut moved = match event {
             Event::Collision(c) => {
-                let (a, b) = (at(&calendar, c.i, t), at(&calendar, c.j, t));
-                let frictions = [balls[c.i].friction(), balls[c.j].friction()];
-                let contact = radii[c.i] + radii[c.j];
-                let masses = [masses.get(c.i), masses.get(c.j)];
-                let e = restitution_at(e, t, [last_event[c.i], last_event[c.j]]);
-                (last_event[c.i], last_event[c.j]) = (t, t);
-                let (va, vb) = collide(a, b, masses, frictions, contact, e);
-                let new = [
-                    Ball::from_checked(a.0.into(), va.into(), balls[c.i].friction()),
-                    Ball::from_checked(b.0.into(), vb.into(), balls[c.j].friction()),
-                ];
-                calendar.update_balls(&[c.i, c.j], t, &new)?;
-                events.push(LoggedEvent {
-                    time: t,
-                    i: c.i,
-                    j: Some(c.j),
-                });
+                run.collide(&mut calendar, &mut last_event, [c.i, c.j], t, false)?;
+                instant_pairs.push([c.i, c.j]);
+                vec![c.i, c.j]
             }
             Event::Wall(w) => {
                 last_event[w.ball] = t;
@@ -258,11 +240,43 @@ pub fn simulate_observed(
                     balls[w.ball].friction(),
                 )];
                 calendar.update_balls(&[w.ball], t, &new)?;
-                events.push(LoggedEvent {
-                    time: t,
-                    i: w.ball,
-                    j: None,
-                });
+                vec![w.ball]
+            }
+        };
+        let (i, j) = match event {
+            Event::Collision(c) => (c.i, Some(c.j)),
+            Event::Wall(w) => (w.ball, None),
+        };
+        events.push(LoggedEvent { time: t, i, j });
+        at_this_instant += 1;
+        check_progress(at_this_instant, most_at_one_instant, t, i, j)?;
+        // The follow-ups at this instant of every ball whose velocity changed.
+        while let Some(x) = moved.pop() {
+            let partners: Vec<usize> = instant_pairs
+                .iter()
+                .filter_map(|&[p, q]| (p == x).then_some(q).or((q == x).then_some(p)))
+                .collect();
+            for y in partners {
+                if events.len() >= max_events {
+                    break 'events;
+                }
+                let pair = [x.min(y), x.max(y)];
+                if run.collide(&mut calendar, &mut last_event, pair, t, true)? {
+                    events.push(LoggedEvent {
+                        time: t,
+                        i: pair[0],
+                        j: Some(pair[1]),
+                    });
+                    at_this_instant += 1;
+                    check_progress(
+                        at_this_instant,
+                        most_at_one_instant,
+                        t,
+                        pair[0],
+                        Some(pair[1]),
+                    )?;
+                    moved.extend(pair);
+                }
             }
         }
         let progress = Progress {
@@ -299,6 +313,72 @@ pub fn simulate_observed(
     })
 }
 
+/// What every collision of a run needs besides the calendar.
+struct Run<'a> {
+    balls: &'a [Ball],
+    radii: &'a [f64],
+    masses: &'a PerBall<'a>,
+    restitution: f64,
+}
+
+impl Run<'_> {
+    /// The collision of balls `pair` at `t`: their new velocities (see [`collide`]) go into
+    /// the calendar. A `follow_up` collision is one of a pair that collided earlier at this
+    /// instant, after one of them has changed its velocity again (at a wall, or against a
+    /// third ball): it still touches, and it collides again only if it no longer parts as a
+    /// collision would make it (elastically, as every later event at one instant). Without
+    /// this, a pair left parting slower than its [`parting_speed`] while friction presses it
+    /// together (a ball against a cushion with a slower one behind it) sinks in unseen:
+    /// rounding may put its centres a hair within the contact distance, where the gap never
+    /// enters from outside. Whether the velocities changed.
+    fn collide(
+        &self,
+        calendar: &mut CollisionSchedule<2>,
+        last_event: &mut [f64],
+        [i, j]: [usize; 2],
+        t: f64,
+        follow_up: bool,
+    ) -> Result<bool, InputError> {
+        let (a, b) = (at(calendar, i, t), at(calendar, j, t));
+        let frictions = [self.balls[i].friction(), self.balls[j].friction()];
+        let contact = self.radii[i] + self.radii[j];
+        let masses = [self.masses.get(i), self.masses.get(j)];
+        let e = restitution_at(self.restitution, t, [last_event[i], last_event[j]]);
+        let (va, vb) = collide(a, b, masses, frictions, contact, e);
+        let changed = (va, vb) != (a.1, b.1);
+        if follow_up && !changed {
+            return Ok(false);
+        }
+        (last_event[i], last_event[j]) = (t, t);
+        let new = [
+            Ball::from_checked(a.0.into(), va.into(), frictions[0]),
+            Ball::from_checked(b.0.into(), vb.into(), frictions[1]),
+        ];
+        calendar.update_balls(&[i, j], t, &new)?;
+        Ok(changed)
+    }
+}
+
+/// The error for a run stuck at one instant: more than `most` events at `t`, the last
+/// between ball `i` and ball `j` (`None`: a wall).
+fn check_progress(
+    events: usize,
+    most: usize,
+    t: f64,
+    i: usize,
+    j: Option<usize>,
+) -> Result<(), InputError> {
+    if events <= most {
+        return Ok(());
+    }
+    let kind = InputErrorKind::NoProgress {
+        other: j,
+        time: t,
+        events,
+    };
+    Err(InputError::new("pos", kind).at(i))
+}
+
 /// The restitution of a collision at `t` of two balls whose last events came at `last`:
 /// `e`, or `1` if either ball has had an event at this very instant. Touching balls in a
 /// chain or a cluster (a rack, a row against a wall) then settle at one instant in a few
@@ -320,7 +400,7 @@ fn at(calendar: &CollisionSchedule<2>, i: usize, t: f64) -> (Vector2<f64>, Vecto
 /// `frictions` and contact distance `contact`, with restitution `e`: they part along their
 /// line of centres `n` at the normal speed `max(e·u, w)` (`u` the speed at which they
 /// approached, `w` the [`parting_speed`]), or keep their velocities if they already part
-/// faster. Each ball takes its share of the change by the other's mass fraction,
+/// faster than both. Each ball takes its share of the change by the other's mass fraction,
 /// `m_j/(m_i + m_j) = 1/(1 + m_i/m_j)`, which neither overflows nor vanishes for masses
 /// anywhere in the float range (`1/m` would overflow for `m` below `1/f64::MAX`).
 fn collide(
@@ -353,13 +433,19 @@ fn collide(
     // The frictions that press them together are those of their velocities after the
     // collision: from the restitution's first, then the least parting speed of those.
     let rounding = ROUNDING * (a.1.norm() + b.1.norm());
+    // Balls that already part faster keep their velocities, unless friction presses them
+    // together and they part slower than its least speed.
     let target = (e * -parting).max(rounding);
-    if parting >= target {
-        return (a.1, b.1);
-    }
-    let (va, vb) = part_at(target);
+    let (va, vb) = if parting >= target {
+        (a.1, b.1)
+    } else {
+        part_at(target)
+    };
+    // Within `SLACK` of it is enough: rounding puts the parting speed formed from the new
+    // velocities up to `2⁻¹²` below `least` where `least` is just above `rounding`, and a
+    // pair followed up again for that would never be done.
     let least = parting_speed(va, vb, n, frictions, contact);
-    if least > target {
+    if least * (1.0 - SLACK) > target.max(parting) {
         part_at(least)
     } else {
         (va, vb)
@@ -405,6 +491,8 @@ fn parting_speed(
     }
 }
 
+/// See [`collide`].
+const SLACK: f64 = 1.0 / 256.0;
 /// See [`parting_speed`].
 const ROUNDING: f64 = 1.0 / (1u64 << 40) as f64;
 /// See [`parting_speed`]: twice the rise of a resting contact's bounces, relative to the
