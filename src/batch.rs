@@ -44,6 +44,7 @@ use crate::collision::straight;
 use crate::error::{
     InputError, InputErrorKind, check_friction, check_horizon, check_radius, finite,
 };
+use crate::interrupt::Interrupt;
 use crate::motion::Ball;
 use crate::simd::{self, Level};
 
@@ -777,27 +778,40 @@ fn length_mismatch(argument: &'static str, expected: usize, found: usize) -> Inp
 }
 
 /// Runs `work(offset, chunk)` over `out` in chunks, on the requested threads, and returns the
-/// error of the lowest index if any chunk failed (each chunk stops at its first error).
+/// error of the lowest index if any chunk failed (each chunk stops at its first error). Each
+/// chunk first looks at the caller's [`Interrupt`] flag: once it is set, the chunks left fail
+/// with [`InputErrorKind::Interrupted`].
 fn run_chunks<T: Send>(
     out: &mut [T],
     threads: Threads,
     work: impl Fn(usize, &mut [T]) -> Result<(), InputError> + Sync,
 ) -> Result<(), InputError> {
+    let interrupt = Interrupt::current();
+    let work = |offset: usize, out: &mut [T]| {
+        interrupt.check()?;
+        work(offset, out)
+    };
     let parallel = |out: &mut [T]| {
         out.par_chunks_mut(CHUNK)
             .enumerate()
             .map(|(c, chunk)| work(c * CHUNK, chunk))
             .reduce(|| Ok(()), first_error)
     };
+    // On the calling thread: chunk after chunk, each looking at the flag.
+    let serial = |out: &mut [T]| {
+        out.chunks_mut(CHUNK)
+            .enumerate()
+            .try_for_each(|(c, chunk)| work(c * CHUNK, chunk))
+    };
     match threads {
         // One chunk's worth (or one thread): handing it to a pool would only add a wake-up.
         _ if out.len() <= CHUNK => work(0, out),
-        Threads::AtMost(n) if n.get() == 1 => work(0, out),
+        Threads::AtMost(n) if n.get() == 1 => serial(out),
         Threads::All => parallel(out),
         Threads::AtMost(n) => match pool(n.get()) {
             Some(pool) => pool.install(|| parallel(out)),
             // No thread could be started: the calling thread does the work.
-            None => work(0, out),
+            None => serial(out),
         },
     }
 }

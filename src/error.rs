@@ -61,6 +61,8 @@ pub enum InputErrorKind {
     NonPositiveMass(f64),
     /// A simulation with no end: no end time, no event limit, and a ball that never stops.
     Endless,
+    /// The call was stopped from outside before it ended ([`crate::interrupt`]).
+    Interrupted,
     /// A box whose low bound is not below its high bound on an axis.
     EmptyBox {
         /// The low bound.
@@ -281,6 +283,7 @@ impl fmt::Display for InputErrorKind {
             Self::RepeatedIndex(i) => write!(f, "ball {i} is given more than once"),
             Self::NotInUnitInterval(x) => write!(f, "must be in [0, 1], got {}", Brief(x)),
             Self::NonPositiveMass(x) => write!(f, "mass must be > 0, got {}", Brief(x)),
+            Self::Interrupted => f.write_str("interrupted before it ended"),
             Self::Endless => {
                 f.write_str("a ball without friction never stops: give t_end or max_events")
             }

@@ -29,6 +29,7 @@ pub mod batch;
 pub mod coefficients;
 pub mod collision;
 pub mod error;
+pub mod interrupt;
 pub mod motion;
 pub mod path;
 pub mod poly;

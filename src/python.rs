@@ -17,6 +17,7 @@
 //! Nothing here panics on any input.
 
 mod input_error;
+mod long_call;
 mod paths;
 mod read;
 mod schedule;
@@ -36,29 +37,15 @@ use crate::error::InputErrorKind;
 use crate::poly;
 use crate::scene::{self, SceneOptions};
 use input_error::{InputError, from_core, input_error};
+use long_call::{INLINE_UP_TO, Kernel, run};
 use read::{Floats, Given, number, param, point, rows, threads};
 
 // The `text_signature`s spell the default horizon `1e999`, a literal that reads as `inf`
 // (`inspect.signature` shows `t_max=inf`), where pyo3 would show `...`.
 
-/// Batches up to this many items run on the calling thread holding the GIL: releasing and
-/// retaking it, or waking a thread pool, would cost more than the work (a few µs at most).
-/// The answers do not depend on it.
-const INLINE_UP_TO: usize = 1024;
-
 /// Scenes of up to this many balls run on the calling thread holding the GIL: their work
 /// grows with the pairs that can meet, and from a few dozen balls on it is worth releasing.
 const SCENE_INLINE_UP_TO: usize = 16;
-
-/// Runs `kernel` on the core's data, without the GIL if `release`, and maps its error.
-fn run<T: Send>(
-    py: Python<'_>,
-    release: bool,
-    kernel: impl Send + FnOnce() -> Result<T, crate::InputError>,
-) -> PyResult<T> {
-    let result = if release { py.detach(kernel) } else { kernel() };
-    result.map_err(|e| from_core(py, e))
-}
 
 /// The collision time of each of N pairs of balls (``inf`` where they never touch).
 ///
@@ -242,16 +229,27 @@ fn timed(
     n: usize,
     kernel: impl Send + FnOnce() -> Result<(), crate::InputError>,
 ) -> PyResult<()> {
-    if n <= INLINE_UP_TO {
-        return run(py, false, kernel);
+    let how = Kernel::for_items(n, INLINE_UP_TO);
+    if how == Kernel::Inline {
+        return run(py, how, kernel);
     }
-    let (result, seconds) = py.detach(|| {
+    let seconds = run(py, how, || {
         let start = Instant::now();
-        let result = kernel();
-        (result, start.elapsed().as_secs_f64())
-    });
+        kernel()?;
+        Ok(start.elapsed().as_secs_f64())
+    })?;
     LAST_KERNEL_SECONDS.with(|last| last.set(seconds));
-    result.map_err(|e| from_core(py, e))
+    Ok(())
+}
+
+/// How a scene query of `n` balls runs: its work grows with the pairs that can meet, some
+/// dozens a ball.
+fn scene_kernel(n: usize) -> Kernel {
+    const PAIRS_A_BALL: usize = 64;
+    Kernel::for_items(
+        n.saturating_mul(PAIRS_A_BALL),
+        SCENE_INLINE_UP_TO * PAIRS_A_BALL,
+    )
 }
 
 /// Seconds the Rust kernel took inside this thread's last :func:`collision_times` (or
@@ -403,7 +401,7 @@ fn positions_at<'py>(
     let expected = "a 2-D float64 array of shape (N, 2)";
     output::<Ix2>(py, n, out, [n, 2], expected, &inputs, |flat| {
         let centres = flat.as_chunks_mut::<2>().0;
-        run(py, n > INLINE_UP_TO, || {
+        run(py, Kernel::for_items(n, INLINE_UP_TO), || {
             batch::positions_at(pos_rows, vel_rows, per_ball, times, centres, threads)
         })
     })
@@ -472,17 +470,26 @@ fn real_roots<'py>(py: Python<'py>, coeffs: &Bound<'py, PyAny>) -> PyResult<Boun
         let roots = poly::real_roots(c);
         roots_out[..roots.len()].copy_from_slice(&roots);
     };
-    if n <= INLINE_UP_TO {
+    let how = Kernel::for_items(n, INLINE_UP_TO);
+    if how == Kernel::Inline {
         out.chunks_mut(k)
             .zip(flat.chunks(cols))
             .for_each(|(r, c)| solve(r, c));
     } else {
-        py.detach(|| {
-            out.par_chunks_mut(k)
-                .zip(flat.par_chunks(cols))
-                .with_min_len(INLINE_UP_TO)
-                .for_each(|(r, c)| solve(r, c));
-        });
+        run(py, how, || {
+            // Chunks of INLINE_UP_TO polynomials, each looking at the caller's flag first.
+            let interrupt = crate::interrupt::Interrupt::current();
+            out.par_chunks_mut(k * INLINE_UP_TO)
+                .zip(flat.par_chunks(cols * INLINE_UP_TO))
+                .try_for_each(|(roots, coefficients)| {
+                    interrupt.check()?;
+                    roots
+                        .chunks_mut(k)
+                        .zip(coefficients.chunks(cols))
+                        .for_each(|(r, c)| solve(r, c));
+                    Ok(())
+                })
+        })?;
     }
     let roots = PyArray1::from_vec(py, out);
     Ok(match shape.len() {
@@ -606,7 +613,7 @@ fn pairwise_collision_times<'py>(
              earliest_collision and first_contacts need only O(N)"
         )));
     }
-    let times = run(py, n > SCENE_INLINE_UP_TO, || {
+    let times = run(py, scene_kernel(n), || {
         scene::pairwise_collision_times(&s.balls, &s.radii, &s.options)
     })?;
     PyArray1::from_vec(py, times).reshape(Dim([n, n]))
@@ -654,7 +661,7 @@ fn earliest_collision(
     num_threads: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<(f64, i64, i64)> {
     let s = scene_input(py, pos, vel, friction, radius, t_max, num_threads)?;
-    let found = run(py, s.balls.len() > SCENE_INLINE_UP_TO, || {
+    let found = run(py, scene_kernel(s.balls.len()), || {
         scene::earliest_collision(&s.balls, &s.radii, &s.options)
     })?;
     Ok(found.map_or((f64::INFINITY, -1, -1), |(t, i, j)| {
@@ -707,7 +714,7 @@ fn first_contacts<'py>(
     num_threads: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<i64>>)> {
     let s = scene_input(py, pos, vel, friction, radius, t_max, num_threads)?;
-    let (times, partners) = run(py, s.balls.len() > SCENE_INLINE_UP_TO, || {
+    let (times, partners) = run(py, scene_kernel(s.balls.len()), || {
         scene::first_contacts(&s.balls, &s.radii, &s.options)
     })?;
     let partners: Vec<i64> = partners

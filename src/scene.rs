@@ -58,6 +58,8 @@ use std::num::NonZeroUsize;
 use nalgebra::Vector2;
 use rayon::prelude::*;
 
+use crate::interrupt::Interrupt;
+
 use crate::batch::{PerPair, Threads};
 use crate::collision::first_contact_screened;
 use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon};
@@ -353,6 +355,10 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
         PairSearch::AllPairs
     };
     let serial = n < PARALLEL_FROM || options.threads == Threads::AtMost(NonZeroUsize::MIN);
+    // Each pair first looks at the caller's flag (a relaxed load): once it is set, the pairs
+    // left find nothing and the call fails below.
+    let interrupt = Interrupt::current();
+    let kernel = |i: usize, j: usize| interrupt.check().ok().and_then(|()| kernel(i, j));
     let run = || -> Vec<Hit> {
         match search {
             PairSearch::AllPairs => {
@@ -381,7 +387,7 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
             }
         }
     };
-    Ok(match options.threads {
+    let hits = match options.threads {
         Threads::AtMost(k) if !serial => {
             match rayon::ThreadPoolBuilder::new().num_threads(k.get()).build() {
                 Ok(pool) => pool.install(run),
@@ -390,7 +396,9 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
             }
         }
         _ => run(),
-    })
+    };
+    interrupt.check()?;
+    Ok(hits)
 }
 
 /// Validates the radii (one per ball, finite, `> 0`) and the horizon.

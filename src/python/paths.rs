@@ -17,8 +17,9 @@ use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 
 use super::input_error::{from_core, input_error, located_error};
+use super::long_call::{INLINE_UP_TO, Kernel, run};
 use super::read::{self, Floats, Given, Param, param, shape_text, threads};
-use super::{INLINE_UP_TO, output, run, timed};
+use super::{output, timed};
 use crate::batch::{self, PathPairs, PathRows, PerPair, Threads};
 
 /// The argument names of one side's four arrays.
@@ -525,7 +526,7 @@ fn positions<'py, const D: usize>(
     let expected = format!("a 2-D float64 array of shape (N, {D})");
     output::<Ix2>(py, n, out, [n, D], &expected, inputs, |flat| {
         let centres = flat.as_chunks_mut::<D>().0;
-        run(py, n > INLINE_UP_TO, || {
+        run(py, Kernel::for_items(n, INLINE_UP_TO), || {
             batch::path_positions_at(&rows, t, centres, threads)
         })
     })

@@ -12,10 +12,11 @@ use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
 use pyo3::types::{IntoPyDict, PyFloat, PyList, PyTuple};
 use std::ops::ControlFlow;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use super::index_i64;
 use super::input_error::{from_core, input_error};
+use super::long_call::{INLINE_UP_TO, Kernel, SIGNAL_CHECKS, run};
 use super::paths::{Layout, Side, side};
 use super::read::{self, Given, param, rows};
 use crate::Path;
@@ -337,7 +338,9 @@ impl CollisionSchedule {
             walls: walls_of::<2>(py, r#box)?,
             t_max,
         };
-        let core = Core::from_balls(&balls, &radii, t, options).map_err(|e| from_core(py, e))?;
+        let core = run(py, calendar_kernel(balls.len()), || {
+            Core::from_balls(&balls, &radii, t, options)
+        })?;
         Ok(Self {
             inner: Inner::Two(core),
         })
@@ -514,7 +517,16 @@ fn build<const D: usize>(
 ) -> PyResult<Core<D>> {
     let paths = paths_of::<D>(paths).map_err(|e| from_core(py, e))?;
     let options = ScheduleOptions { walls, t_max };
-    Core::new(paths, radii, options).map_err(|e| from_core(py, e))
+    run(py, calendar_kernel(paths.len()), || {
+        Core::new(paths, radii, options)
+    })
+}
+
+/// How a calendar of `n` balls is built: each ball's first searches cost about as much as a
+/// dozen pair queries.
+fn calendar_kernel(n: usize) -> Kernel {
+    const PAIRS_A_BALL: usize = 16;
+    Kernel::for_items(n.saturating_mul(PAIRS_A_BALL), INLINE_UP_TO)
 }
 
 /// A progress bar for a long call: a ``tqdm`` bar (``progress=True``) or the caller's own
@@ -584,9 +596,6 @@ fn progress_bar(
     }
     Ok(Some(ProgressBar(progress.clone().unbind())))
 }
-
-/// How often a long run looks for Ctrl-C (Python's signal handlers).
-const SIGNAL_CHECKS: Duration = Duration::from_millis(50);
 
 /// An event-driven simulation of smooth hard friction balls in a box, run in Rust on the
 /// calendar: ``(times, i, j, pos, vel)``.

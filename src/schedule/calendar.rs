@@ -9,6 +9,7 @@ use super::walls::{Side, Walls, first_wall_contact};
 use crate::collision::path_bounds::PathBounds;
 use crate::collision::path_contact::{first_bounded_contact_one, first_path_contact};
 use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon, finite};
+use crate::interrupt::Interrupt;
 use crate::motion::Ball;
 use crate::path::{Path, Segment};
 
@@ -258,7 +259,8 @@ impl<const D: usize> CollisionSchedule<D> {
     /// # Errors
     /// An [`InputError`]: `radius` of another length than `paths`, or a radius at an index
     /// that is not finite and positive; `t_max` negative or NaN; more than `2³² − 2` balls
-    /// (`paths`, as a length).
+    /// (`paths`, as a length); [`InputErrorKind::Interrupted`] inside an
+    /// [`interruptible`](crate::interrupt::interruptible) call whose flag is set.
     pub fn new(
         paths: Vec<Path<D>>,
         radii: &[f64],
@@ -353,7 +355,12 @@ impl<const D: usize> CollisionSchedule<D> {
             schedule.refreshed = vec![0; n];
             schedule.searched = vec![0; n];
         }
+        // The searches are most of the work: the caller's flag is looked at every 1,024 balls.
+        let interrupt = Interrupt::current();
         for i in 0..n {
+            if i % 1024 == 0 {
+                interrupt.check()?;
+            }
             schedule.refresh(i, None);
             schedule.refresh_wall(i);
         }

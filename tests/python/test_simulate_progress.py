@@ -1,11 +1,6 @@
-"""``simulate`` always moves on, ends, and never lets balls sink into each other; a long run
-stops on Ctrl-C. The Rust suite (tests/simulation_progress.rs) has the families of cases;
-these are the reported reproducers through the Python call, and the interrupt."""
-
-import os
-import subprocess
-import sys
-import textwrap
+"""``simulate`` always moves on, ends, and never lets balls sink into each other. The Rust
+suite (tests/simulation_progress.rs) has the families of cases; these are the reported
+reproducers through the Python call (Ctrl-C: tests/python/test_interrupt.py)."""
 
 import numpy as np
 import pytest
@@ -55,36 +50,6 @@ def test_masses_over_the_float_range_move_on(mass):
         )
         assert 1 <= len(times) < 100
         assert np.isfinite(pos).all() and np.isfinite(vel).all()
-
-
-def test_ctrl_c_stops_a_long_simulation_within_a_fraction_of_a_second():
-    # In a child process of its own: the signal goes to it alone.
-    code = textwrap.dedent(
-        """
-        import os, signal, threading, time, ballcollide as bc
-        # Python's own Ctrl-C handler, whatever the parent left: a shell runs background
-        # jobs with SIGINT ignored, and Python then installs none.
-        signal.signal(signal.SIGINT, signal.default_int_handler)
-        sent = []
-        def interrupt():
-            sent.append(time.perf_counter())
-            os.kill(os.getpid(), signal.SIGINT)
-        threading.Timer(0.5, interrupt).start()
-        try:
-            bc.simulate([[0.5, 0.5]], [[1, 0.3]], 0.0, 0.1, box=([0, 0], [1, 2]), t_end=1e12)
-        except KeyboardInterrupt:
-            print(f"interrupted {time.perf_counter() - sent[0]:.3f}")
-        """
-    )
-    out = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, timeout=120, env=os.environ
-    )
-    assert out.returncode == 0, out.stderr
-    kind, seconds = out.stdout.split()
-    assert kind == "interrupted"
-    # From the signal to the exception: the run looks for it every 0.05 s (a loaded machine
-    # may take longer to schedule the process; the run itself would last for ever).
-    assert float(seconds) < 2.0, seconds
 
 
 class Bar:

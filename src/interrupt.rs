@@ -1,0 +1,120 @@
+//! Stopping a long call from outside, between chunks of its work.
+//!
+//! [`interruptible`] runs a call with a flag that its long loops look at between chunks: a
+//! batch's chunks of 1,024 pairs, a scene's rows, a calendar's balls as it is built. Once the
+//! flag is set, the call stops at the next look and returns an [`InputError`] of kind
+//! [`InputErrorKind::Interrupted`]; what it would have returned is lost. The Python binding
+//! runs its long calls so, setting the flag when Ctrl-C arrives (its calling thread waits for
+//! the call and looks for Python's signals every 50 ms), so that `KeyboardInterrupt` comes
+//! within a fraction of a second.
+//!
+//! The flag travels with the calling thread: the batch, scene and calendar entry points read
+//! it where they start, on that thread, and hand it to their worker threads.
+//!
+//! ```
+//! use ballcollide::batch::{self, Pairs, PerPair, Threads};
+//! use ballcollide::interrupt::interruptible;
+//! use ballcollide::InputErrorKind;
+//! use std::sync::Arc;
+//! use std::sync::atomic::AtomicBool;
+//!
+//! let n = 5000;
+//! let (pos_a, vel_a) = (vec![[0.0, 0.0]; n], vec![[1.0, 0.0]; n]);
+//! let (pos_b, vel_b) = (vec![[3.0, 0.0]; n], vec![[-1.0, 0.0]; n]);
+//! let pairs = Pairs {
+//!     pos_a: &pos_a, vel_a: &vel_a, friction_a: PerPair::All(0.0),
+//!     pos_b: &pos_b, vel_b: &vel_b, friction_b: PerPair::All(0.0),
+//!     radius: PerPair::All(1.0), t_max: PerPair::All(f64::INFINITY),
+//! };
+//! let mut out = vec![0.0; n];
+//! // A flag set before the call stops it at its first look.
+//! let stop = Arc::new(AtomicBool::new(true));
+//! let result = interruptible(stop, || batch::collision_times(&pairs, &mut out, Threads::All));
+//! assert_eq!(result.map_err(|e| e.kind()), Err(InputErrorKind::Interrupted));
+//! // Without it, the same call runs to the end.
+//! batch::collision_times(&pairs, &mut out, Threads::All)?;
+//! assert_eq!(out[0], 1.0); // 3 apart, closing at 2, touching at 1 apart
+//! # Ok::<(), ballcollide::InputError>(())
+//! ```
+
+use std::cell::RefCell;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use crate::error::{InputError, InputErrorKind};
+
+thread_local! {
+    /// The flag of the [`interruptible`] call running on this thread, if any.
+    static FLAG: RefCell<Option<Arc<AtomicBool>>> = const { RefCell::new(None) };
+}
+
+/// Runs `call` on this thread with `stop` as its flag: the long loops of the batch, scene and
+/// calendar calls made inside it stop between chunks once `stop` is set (by another thread),
+/// and return [`InputErrorKind::Interrupted`]. Calls nest: the innermost flag counts.
+pub fn interruptible<T>(stop: Arc<AtomicBool>, call: impl FnOnce() -> T) -> T {
+    /// Puts the outer flag back, also when `call` panics.
+    struct Restore(Option<Arc<AtomicBool>>);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            let outer = self.0.take();
+            FLAG.with(|flag| *flag.borrow_mut() = outer);
+        }
+    }
+    let _restore = Restore(FLAG.with(|flag| flag.replace(Some(stop))));
+    call()
+}
+
+/// The flag of the calling thread's [`interruptible`] call, to look at from any thread.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Interrupt(Option<Arc<AtomicBool>>);
+
+impl Interrupt {
+    /// The calling thread's flag (none outside [`interruptible`]).
+    pub(crate) fn current() -> Self {
+        Self(FLAG.with(|flag| flag.borrow().clone()))
+    }
+
+    /// `Err(Interrupted)` once the flag is set.
+    pub(crate) fn check(&self) -> Result<(), InputError> {
+        match &self.0 {
+            Some(stop) if stop.load(Ordering::Relaxed) => Err(interrupted()),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// The error of an interrupted call.
+pub(crate) fn interrupted() -> InputError {
+    InputError::new("call", InputErrorKind::Interrupted)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_flag_holds_inside_the_call_only_and_nests() {
+        let outer = Arc::new(AtomicBool::new(false));
+        let inner = Arc::new(AtomicBool::new(true));
+        assert!(Interrupt::current().check().is_ok());
+        interruptible(outer, || {
+            assert!(Interrupt::current().check().is_ok());
+            interruptible(inner, || assert!(Interrupt::current().check().is_err()));
+            assert!(Interrupt::current().check().is_ok());
+        });
+        assert!(Interrupt::current().check().is_ok());
+    }
+
+    #[test]
+    fn a_flag_set_from_another_thread_is_seen() {
+        let stop = Arc::new(AtomicBool::new(false));
+        let seen = interruptible(Arc::clone(&stop), || {
+            let interrupt = Interrupt::current();
+            std::thread::scope(|s| {
+                s.spawn(|| stop.store(true, Ordering::Relaxed));
+            });
+            interrupt.check()
+        });
+        assert_eq!(seen.map_err(|e| e.kind()), Err(InputErrorKind::Interrupted));
+    }
+}
