@@ -739,7 +739,11 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("InputError", py.get_type::<InputError>())?;
-    m.add_function(wrap_pyfunction!(_last_kernel_seconds, m)?)?;
+    // An attribute, not an export: a hook for the benchmarks, out of `__all__`.
+    m.setattr(
+        "_last_kernel_seconds",
+        wrap_pyfunction!(_last_kernel_seconds, m)?,
+    )?;
     let public = [
         wrap_pyfunction!(collision_time, m)?,
         wrap_pyfunction!(collision_times, m)?,
@@ -755,6 +759,7 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     ];
     m.add_class::<schedule::CollisionSchedule>()?;
     m.add("Event", schedule::event_type(py)?)?;
+    m.add("Simulation", schedule::simulation_type(py)?)?;
     for f in public {
         // Their public home, as numpy's functions are `numpy`'s: reprs, pickles and doctest
         // find them there.

@@ -42,38 +42,10 @@ every argument itself. Their docstrings are the Rust doc comments of ``src/pytho
 
 from __future__ import annotations
 
-from ._core import (
-    CollisionSchedule,
-    Event,
-    InputError,
-    __version__,
-    collision_time,
-    collision_times,
-    earliest_collision,
-    first_contacts,
-    pairwise_collision_times,
-    path_collision_time,
-    path_collision_times,
-    path_positions_at,
-    positions_at,
-    real_roots,
-    simulate,
-)
+# The exports are listed once, where the compiled module is built (src/python.rs: what it
+# adds goes into `_core.__all__`); its stub, `_core.pyi`, lists them for type checkers, and
+# stubtest checks that both agree.
+from . import _core
+from ._core import *  # noqa: F403
 
-__all__ = [
-    "CollisionSchedule",
-    "Event",
-    "InputError",
-    "__version__",
-    "collision_time",
-    "collision_times",
-    "earliest_collision",
-    "first_contacts",
-    "pairwise_collision_times",
-    "path_collision_time",
-    "path_collision_times",
-    "path_positions_at",
-    "positions_at",
-    "real_roots",
-    "simulate",
-]
+__all__ = list(_core.__all__)

@@ -20,8 +20,8 @@ __all__ = [
     "CollisionSchedule",
     "Event",
     "InputError",
+    "Simulation",
     "__version__",
-    "_last_kernel_seconds",
     "collision_time",
     "collision_times",
     "earliest_collision",
@@ -154,6 +154,13 @@ class Event(NamedTuple):
     axis: int
     side: int
 
+class Simulation(NamedTuple):
+    times: _F64Array
+    i: _I64Array
+    j: _I64Array
+    pos: _F64Array
+    vel: _F64Array
+
 @final
 class CollisionSchedule:
     def __new__(
@@ -212,4 +219,4 @@ def simulate(
     t_end: _Number = ...,
     max_events: SupportsIndex | None = None,
     progress: bool | _ProgressBar | None = False,
-) -> tuple[_F64Array, _I64Array, _I64Array, _F64Array, _F64Array]: ...
+) -> Simulation: ...

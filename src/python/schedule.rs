@@ -141,6 +141,26 @@ pub(super) fn event_type(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
         .map(|event| event.bind(py))
 }
 
+/// The :class:`Simulation` named tuple type (what :func:`simulate` returns).
+static SIMULATION: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
+
+/// The :class:`Simulation` named tuple type.
+pub(super) fn simulation_type(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
+    SIMULATION
+        .get_or_try_init(py, || {
+            let namedtuple = py.import("collections")?.getattr("namedtuple")?;
+            let fields = ["times", "i", "j", "pos", "vel"];
+            let kwargs = [("module", "ballcollide")].into_py_dict(py)?;
+            let simulation = namedtuple.call(("Simulation", fields), Some(&kwargs))?;
+            simulation.setattr(
+                "__doc__",
+                "What simulate returns: (times, i, j, pos, vel).\n\n                 times (float64, shape (E,)): the events' times; i, j (int64): the balls of                  each, j = -1 for a wall; pos, vel (shape (N, 2)): the final state.",
+            )?;
+            Ok::<_, PyErr>(simulation.unbind())
+        })
+        .map(|simulation| simulation.bind(py))
+}
+
 /// The event as the named tuple.
 fn event_tuple<'py>(py: Python<'py>, event: Option<CoreEvent>) -> PyResult<Bound<'py, PyAny>> {
     let fields: (f64, i64, i64, i64, i64) = match event {
@@ -598,7 +618,7 @@ fn progress_bar(
 }
 
 /// An event-driven simulation of smooth hard friction balls in a box, run in Rust on the
-/// calendar: ``(times, i, j, pos, vel)``.
+/// calendar: a :class:`Simulation` ``(times, i, j, pos, vel)``.
 ///
 /// Each ball moves as in :func:`collision_time` (slowed by its friction along its velocity
 /// until it stops; ``0`` for none). At each event, in :class:`CollisionSchedule`'s order,
@@ -634,11 +654,11 @@ fn progress_bar(
 ///
 /// Returns
 /// -------
-/// tuple
-///     ``times`` (float64, shape ``(E,)``), ``i`` and ``j`` (int64: the balls, ``j = -1``
-///     for a wall), and ``pos``, ``vel`` (shape ``(N, 2)``): the state at ``t_end`` if
-///     finite and reached, else at the last event (``max_events``) or when every ball is at
-///     rest.
+/// Simulation
+///     A named tuple: ``times`` (float64, shape ``(E,)``), ``i`` and ``j`` (int64: the
+///     balls, ``j = -1`` for a wall), and ``pos``, ``vel`` (shape ``(N, 2)``): the state at
+///     ``t_end`` if finite and reached, else at the last event (``max_events``) or when
+///     every ball is at rest.
 ///
 /// Raises
 /// ------
@@ -670,6 +690,9 @@ fn progress_bar(
 /// >>> pos
 /// array([[1.5, 0.5],
 ///        [3.5, 0.5]])
+/// >>> run = bc.simulate([[0.5, 0.5]], [[1, 0]], 0.0, 0.25, box=([0, 0], [2, 1]), t_end=2.0)
+/// >>> run.times, run.j  # one wall contact
+/// (array([1.25]), array([-1]))
 #[pyfunction]
 #[pyo3(
     signature = (pos, vel, friction, radius, *, r#box, mass=Given(None),
@@ -690,13 +713,7 @@ pub(super) fn simulate<'py>(
     t_end: Given<'py>,
     max_events: Option<&Bound<'py, PyAny>>,
     progress: Option<&Bound<'py, PyAny>>,
-) -> PyResult<(
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<i64>>,
-    Bound<'py, PyArray1<i64>>,
-    Bound<'py, PyArray2<f64>>,
-    Bound<'py, PyArray2<f64>>,
-)> {
+) -> PyResult<Bound<'py, PyAny>> {
     let balls = balls(py, pos, vel, friction)?;
     let n = balls.len();
     let radii = radii(py, radius, n)?;
@@ -767,7 +784,7 @@ pub(super) fn simulate<'py>(
         }
         PyArray2::from_vec2(py, &rows).map_err(|e| PyTypeError::new_err(e.to_string()))
     };
-    Ok((
+    simulation_type(py)?.call1((
         PyArray1::from_vec(py, times),
         PyArray1::from_vec(py, i),
         PyArray1::from_vec(py, j),
