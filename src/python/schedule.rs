@@ -123,22 +123,16 @@ static EVENT: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
 
 /// The :class:`Event` named tuple type.
 pub(super) fn event_type(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
-    EVENT
-        .get_or_try_init(py, || {
-            let namedtuple = py.import("collections")?.getattr("namedtuple")?;
-            let fields = ["time", "i", "j", "axis", "side"];
-            let kwargs = [("module", "ballcollide")].into_py_dict(py)?;
-            let event = namedtuple.call(("Event", fields), Some(&kwargs))?;
-            event.setattr(
-                "__doc__",
-                "An event of a CollisionSchedule: (time, i, j, axis, side).\n\n\
-                 A collision of balls i < j: axis = -1, side = 0. Ball i reaching a wall: \
-                 j = -1, axis the wall's axis (0 for x), side -1 for the low wall and +1 for \
-                 the high one. No event: (inf, -1, -1, -1, 0).",
-            )?;
-            Ok::<_, PyErr>(event.unbind())
-        })
-        .map(|event| event.bind(py))
+    named_tuple(
+        py,
+        &EVENT,
+        "Event",
+        &["time", "i", "j", "axis", "side"],
+        "An event of a CollisionSchedule: (time, i, j, axis, side).\n\n\
+         A collision of balls i < j: axis = -1, side = 0. Ball i reaching a wall: j = -1, \
+         axis the wall's axis (0 for x), side -1 for the low wall and +1 for the high one. \
+         No event: (inf, -1, -1, -1, 0).",
+    )
 }
 
 /// The :class:`Simulation` named tuple type (what :func:`simulate` returns).
@@ -146,19 +140,33 @@ static SIMULATION: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
 
 /// The :class:`Simulation` named tuple type.
 pub(super) fn simulation_type(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
-    SIMULATION
-        .get_or_try_init(py, || {
-            let namedtuple = py.import("collections")?.getattr("namedtuple")?;
-            let fields = ["times", "i", "j", "pos", "vel"];
-            let kwargs = [("module", "ballcollide")].into_py_dict(py)?;
-            let simulation = namedtuple.call(("Simulation", fields), Some(&kwargs))?;
-            simulation.setattr(
-                "__doc__",
-                "What simulate returns: (times, i, j, pos, vel).\n\n                 times (float64, shape (E,)): the events' times; i, j (int64): the balls of                  each, j = -1 for a wall; pos, vel (shape (N, 2)): the final state.",
-            )?;
-            Ok::<_, PyErr>(simulation.unbind())
-        })
-        .map(|simulation| simulation.bind(py))
+    named_tuple(
+        py,
+        &SIMULATION,
+        "Simulation",
+        &["times", "i", "j", "pos", "vel"],
+        "What simulate returns: (times, i, j, pos, vel).\n\n\
+         times (float64, shape (E,)): the events' times; i, j (int64): the balls of each, \
+         j = -1 for a wall; pos, vel (shape (N, 2)): the final state.",
+    )
+}
+
+/// A `collections.namedtuple` type of `ballcollide`, made once and kept in `cell`.
+fn named_tuple<'py>(
+    py: Python<'py>,
+    cell: &'static PyOnceLock<Py<PyAny>>,
+    name: &str,
+    fields: &[&str],
+    doc: &str,
+) -> PyResult<&'py Bound<'py, PyAny>> {
+    cell.get_or_try_init(py, || {
+        let namedtuple = py.import("collections")?.getattr("namedtuple")?;
+        let kwargs = [("module", "ballcollide")].into_py_dict(py)?;
+        let class = namedtuple.call((name, fields.to_vec()), Some(&kwargs))?;
+        class.setattr("__doc__", doc)?;
+        Ok::<_, PyErr>(class.unbind())
+    })
+    .map(|class| class.bind(py))
 }
 
 /// The event as the named tuple.
