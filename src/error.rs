@@ -104,6 +104,73 @@ pub enum InputErrorKind {
     },
 }
 
+impl InputErrorKind {
+    /// A stable name for the kind, for programs to branch on (Python's `InputError.kind`):
+    /// its variant's name in snake case, e.g. `"negative_friction"`. The Python binding adds
+    /// the kinds of what it checks itself (`"shape"`, `"not_numbers"`, `"out_of_range"`,
+    /// `"out_layout"`, `"shared_memory"`); `docs/contract.md` §6 lists them all.
+    ///
+    /// ```
+    /// use ballcollide::InputErrorKind;
+    /// assert_eq!(InputErrorKind::NegativeFriction(-0.5).code(), "negative_friction");
+    /// ```
+    pub const fn code(&self) -> &'static str {
+        match self {
+            Self::NotFinite(_) => "not_finite",
+            Self::NegativeFriction(_) => "negative_friction",
+            Self::NonPositiveRadius(_) => "non_positive_radius",
+            Self::NonPositiveBallRadius(_) => "non_positive_ball_radius",
+            Self::InvalidHorizon(_) => "invalid_horizon",
+            Self::LengthMismatch { .. } => "length_mismatch",
+            Self::DecreasingStart { .. } => "decreasing_start",
+            Self::NoSegments => "no_segments",
+            Self::BeforeCurrentTime { .. } => "before_current_time",
+            Self::StartsDiffer { .. } => "starts_differ",
+            Self::IndexOutOfRange { .. } => "index_out_of_range",
+            Self::RepeatedIndex(_) => "repeated_index",
+            Self::NotInUnitInterval(_) => "not_in_unit_interval",
+            Self::NonPositiveMass(_) => "non_positive_mass",
+            Self::Endless => "endless",
+            Self::Interrupted => "interrupted",
+            Self::EmptyBox { .. } => "empty_box",
+            Self::Overlap { .. } => "overlap",
+            Self::OutsideBox { .. } => "outside_box",
+            Self::WiderThanBox { .. } => "wider_than_box",
+            Self::NoProgress { .. } => "no_progress",
+        }
+    }
+
+    /// The offending number, where the kind has one (the value given; for a start earlier
+    /// than the one before, that start; for a time before the calendar's, that time).
+    ///
+    /// ```
+    /// use ballcollide::InputErrorKind;
+    /// assert_eq!(InputErrorKind::NegativeFriction(-0.5).value(), Some(-0.5));
+    /// assert_eq!(InputErrorKind::NoSegments.value(), None);
+    /// ```
+    pub const fn value(&self) -> Option<f64> {
+        match *self {
+            Self::NotFinite(x)
+            | Self::NegativeFriction(x)
+            | Self::NonPositiveRadius(x)
+            | Self::NonPositiveBallRadius(x)
+            | Self::InvalidHorizon(x)
+            | Self::NotInUnitInterval(x)
+            | Self::NonPositiveMass(x) => Some(x),
+            Self::DecreasingStart { start, .. } | Self::StartsDiffer { start, .. } => Some(start),
+            Self::BeforeCurrentTime { time, .. } => Some(time),
+            Self::IndexOutOfRange { index, .. } => Some(index as f64),
+            Self::RepeatedIndex(i) => Some(i as f64),
+            Self::EmptyBox { lo, .. } => Some(lo),
+            Self::WiderThanBox { width, .. } => Some(width),
+            Self::Overlap { distance, .. } => Some(distance),
+            Self::LengthMismatch { found, .. } => Some(found as f64),
+            Self::NoProgress { time, .. } => Some(time),
+            Self::NoSegments | Self::Endless | Self::Interrupted | Self::OutsideBox { .. } => None,
+        }
+    }
+}
+
 /// An invalid input: which argument, at which index (for batch calls), and why.
 ///
 /// Its `Display` is a sentence meant for the user, e.g.

@@ -36,7 +36,7 @@ use crate::batch::{self, Pairs, PerPair, Threads};
 use crate::error::InputErrorKind;
 use crate::poly;
 use crate::scene::{self, SceneOptions};
-use input_error::{InputError, from_core, input_error};
+use input_error::{InputError, from_core, input_error, kind};
 use long_call::{INLINE_UP_TO, Kernel, run};
 use read::{Floats, Given, number, param, point, rows, threads};
 
@@ -211,6 +211,7 @@ fn layout(py: Python<'_>) -> PyErr {
         py,
         "out",
         None,
+        kind::OUT_LAYOUT,
         "expected a C-contiguous, aligned float64 array",
     )
 }
@@ -454,7 +455,7 @@ fn real_roots<'py>(py: Python<'py>, coeffs: &Bound<'py, PyAny>) -> PyResult<Boun
             "expected shape (N, k+1) with degree k = 1..4, got {}",
             read::shape_text(&shape)
         );
-        return Err(input_error(py, "coeffs", None, &reason));
+        return Err(input_error(py, "coeffs", None, kind::SHAPE, &reason));
     }
     if let Some(i) = flat.iter().position(|x| !x.is_finite()) {
         let err = crate::InputError::new("coeffs", InputErrorKind::NotFinite(flat[i])).at(i / cols);

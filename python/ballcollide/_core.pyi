@@ -42,6 +42,8 @@ class InputError(ValueError):
     index: int | None
     segment: int | None
     reason: str
+    kind: str
+    value: float | None
 
 def collision_time(
     pos_a: npt.ArrayLike,

@@ -55,11 +55,19 @@ _ROWS = ("pos_a", "vel_a", "pos_b", "vel_b")
 _NAMES = ("pos_a", "vel_a", "friction_a", "pos_b", "vel_b", "friction_b", "radius", "t_max")
 
 
-def _input_error(argument: str, index: int | None, reason: str) -> InputError:
-    """An :class:`ballcollide.InputError` worded as the core words its own."""
+def _input_error(
+    argument: str,
+    index: int | None,
+    reason: str,
+    kind: str = "shape",
+    value: float | None = None,
+) -> InputError:
+    """An :class:`ballcollide.InputError` worded as the core words its own (``kind``: the
+    core's names, docs/contract.md section 6)."""
     where = argument if index is None else f"{argument}[{index}]"
     error = InputError(f"{where}: {reason}")
     error.argument, error.index, error.reason = argument, index, reason
+    error.segment, error.kind, error.value = None, kind, value
     return error
 
 
@@ -78,7 +86,7 @@ def _shaped(name: str, x: Any) -> Any:
             a = np.asarray(x)
         except (ValueError, TypeError) as e:  # ragged nested lists, unconvertible objects
             reason = f"cannot be read as an array of numbers ({e})"
-            raise _input_error(name, None, reason) from None
+            raise _input_error(name, None, reason, "not_numbers") from None
     if name in _ROWS:
         if a.ndim != 2 or a.shape[1] != 2:
             raise _input_error(name, None, f"expected shape (N, 2), got {a.shape}")
@@ -142,7 +150,7 @@ def _block(
             raise
         # Where this chunk starts in the whole result (map_blocks tells it).
         start = 0 if block_info is None else int(block_info[None]["array-location"][0][0])
-        raise _input_error(e.argument, start + e.index, e.reason) from None
+        raise _input_error(e.argument, start + e.index, e.reason, e.kind, e.value) from None
 
 
 def _flat(x: Any) -> Any:
@@ -239,7 +247,9 @@ def collision_times(
     n = np.shape(args[0])[0]
     for name, a in zip(_NAMES, args):
         if np.ndim(a) > 0 and np.shape(a)[0] != n:
-            raise _input_error(name, None, f"has {np.shape(a)[0]} rows, expected {n}")
+            rows = np.shape(a)[0]
+            reason = f"has {rows} rows, expected {n}"
+            raise _input_error(name, None, reason, "length_mismatch", rows)
     # The core checks the rest at once, on an empty batch of the same dtypes and scalars:
     # dtypes, lists it cannot read, bad scalars (as it words them, without an index), and
     # num_threads.

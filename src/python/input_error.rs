@@ -18,7 +18,10 @@ create_exception!(
        :func:`path_collision_time`;\n\
      - ``segment``: for a path's values (the ``start``, ``pos``, ``vel`` and ``acc``\n\
        arguments of the path functions), the offending segment as an int, else ``None``;\n\
-     - ``reason``: what is wrong, e.g. ``\"friction must be ≥ 0, got -0.5\"``.\n\
+     - ``reason``: what is wrong, e.g. ``\"friction must be ≥ 0, got -0.5\"``;\n\
+     - ``kind``: what is wrong as a stable name to branch on, e.g.\n\
+       ``\"negative_friction\"`` (the list: docs/contract.md, section 6);\n\
+     - ``value``: the offending number as a float, where there is one, else ``None``.\n\
      \n\
      ``str(e)`` is ``f\"{argument}[{index}]: {reason}\"``, ``f\"{argument}[{index},\n\
      {segment}]: {reason}\"`` for pair (or path) ``index``'s segment ``segment``,\n\
@@ -30,8 +33,8 @@ create_exception!(
      ...     bc.collision_times([[0, 0]] * 3, [[1, 0]] * 3, 0.0, [[1, 0]] * 3, [[0, 0]] * 3,\n\
      ...                        [0.1, 0.1, -0.5], 0.5)\n\
      ... except bc.InputError as e:\n\
-     ...     print(e.argument, e.index, e.reason, sep=\" | \")\n\
-     friction_b | 2 | friction must be ≥ 0, got -0.5\n\
+     ...     print(e.argument, e.index, e.reason, e.kind, e.value, sep=\" | \")\n\
+     friction_b | 2 | friction must be ≥ 0, got -0.5 | negative_friction | -0.5\n\
      >>> try:\n\
      ...     bc.path_positions_at([[0, 2, 1]], [[[0, 0]] * 3], [[[1, 0]] * 3], [[[0, 0]] * 3], 0)\n\
      ... except bc.InputError as e:\n\
@@ -39,22 +42,41 @@ create_exception!(
      start[0, 2]: starts must not decrease, got 1 after 2 | 0 | 2\n"
 );
 
-/// An [`InputError`] about `argument` (at `index`, if any), with its attributes set.
+/// The kinds of what the binding checks itself, beside the core's
+/// ([`crate::InputErrorKind::code`]).
+pub(super) mod kind {
+    /// An array (or scalar) of the wrong shape, or an argument of the wrong structure.
+    pub(in crate::python) const SHAPE: &str = "shape";
+    /// An array-like numpy cannot read as numbers (ragged lists, objects).
+    pub(in crate::python) const NOT_NUMBERS: &str = "not_numbers";
+    /// An int outside its range (`num_threads < 1`, `max_events < 0`).
+    pub(in crate::python) const OUT_OF_RANGE: &str = "out_of_range";
+    /// An `out=` array of the wrong dtype, layout or shape, or read-only.
+    pub(in crate::python) const OUT_LAYOUT: &str = "out_layout";
+    /// An `out=` array sharing memory with an input.
+    pub(in crate::python) const SHARED_MEMORY: &str = "shared_memory";
+}
+
+/// An [`InputError`] of `kind` about `argument` (at `index`, if any), with its attributes
+/// set.
 pub(super) fn input_error(
     py: Python<'_>,
     argument: &str,
     index: Option<usize>,
+    kind: &str,
     reason: &str,
 ) -> PyErr {
-    located_error(py, argument, [index, None], reason)
+    located_error(py, argument, [index, None], (kind, None), reason)
 }
 
 /// An [`InputError`] about `argument` at `[index, segment]` (either or both may be absent: a
-/// segment of a single path has no index), with its attributes set.
+/// segment of a single path has no index), of `kind` with the offending `value` if any, with
+/// its attributes set.
 pub(super) fn located_error(
     py: Python<'_>,
     argument: &str,
     [index, segment]: [Option<usize>; 2],
+    (kind, offending): (&str, Option<f64>),
     reason: &str,
 ) -> PyErr {
     let message = match (index, segment) {
@@ -68,7 +90,9 @@ pub(super) fn located_error(
         .setattr(pyo3::intern!(py, "argument"), argument)
         .and_then(|()| value.setattr(pyo3::intern!(py, "index"), index))
         .and_then(|()| value.setattr(pyo3::intern!(py, "segment"), segment))
-        .and_then(|()| value.setattr(pyo3::intern!(py, "reason"), reason));
+        .and_then(|()| value.setattr(pyo3::intern!(py, "reason"), reason))
+        .and_then(|()| value.setattr(pyo3::intern!(py, "kind"), kind))
+        .and_then(|()| value.setattr(pyo3::intern!(py, "value"), offending));
     match set {
         Ok(()) => err,
         Err(e) => e,
@@ -81,6 +105,7 @@ pub(super) fn from_core(py: Python<'_>, e: crate::InputError) -> PyErr {
         py,
         e.argument(),
         [e.index(), e.segment()],
+        (e.kind().code(), e.kind().value()),
         &e.kind().to_string(),
     )
 }

@@ -8,6 +8,7 @@
 //! [`crate::batch`], whose functions these call once per dimension: each is generic over
 //! `D` and instantiated for 2 and 3.
 
+use super::input_error::kind;
 use std::num::NonZeroUsize;
 
 use numpy::ndarray::{Ix1, Ix2};
@@ -96,7 +97,7 @@ pub(super) fn side<'py>(
     if start_shape.len() != layout.start_dims() {
         let shape = shape_text(&start_shape);
         let reason = format!("expected shape ({lead}{}), got {shape}", comma(layout));
-        return Err(input_error(py, names[0], None, &reason));
+        return Err(input_error(py, names[0], None, kind::SHAPE, &reason));
     }
     let (pos, pos_shape) = read::shaped(names[1], objects[1])?;
     let d = match (pos_shape.split_last(), dim) {
@@ -105,14 +106,14 @@ pub(super) fn side<'py>(
         (_, None) => {
             let shape = shape_text(&pos_shape);
             let reason = format!("expected shape ({lead}, 2) or ({lead}, 3), got {shape}");
-            return Err(input_error(py, names[1], None, &reason));
+            return Err(input_error(py, names[1], None, kind::SHAPE, &reason));
         }
         (_, Some(want)) => {
             let shape = shape_text(&pos_shape);
             let reason = format!(
                 "expected shape ({lead}, {want}) like pos_a (the same dimension), got {shape}"
             );
-            return Err(input_error(py, names[1], None, &reason));
+            return Err(input_error(py, names[1], None, kind::SHAPE, &reason));
         }
     };
     let mut expected = start_shape.clone();
@@ -125,7 +126,7 @@ pub(super) fn side<'py>(
             shape_text(&start_shape),
             shape_text(&pos_shape)
         );
-        return Err(input_error(py, names[1], None, &reason));
+        return Err(input_error(py, names[1], None, kind::SHAPE, &reason));
     }
     let same_as_pos = |name: &str, obj: &Bound<'py, PyAny>| -> PyResult<Floats<'py>> {
         let (values, shape) = read::shaped(name, obj)?;
@@ -136,7 +137,7 @@ pub(super) fn side<'py>(
                 names[1],
                 shape_text(&shape)
             );
-            return Err(input_error(py, name, None, &reason));
+            return Err(input_error(py, name, None, kind::SHAPE, &reason));
         }
         Ok(values)
     };
@@ -346,7 +347,7 @@ fn path_tuple<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<[Bound<'py, 
                 "expected a path (start, pos, vel, acc), got a sequence of {}",
                 items.len()
             );
-            Err(input_error(obj.py(), name, None, &reason))
+            Err(input_error(obj.py(), name, None, kind::SHAPE, &reason))
         }
         None => Err(PyTypeError::new_err(format!(
             "{name}: expected a path: a tuple (start, pos, vel, acc), got {}",
@@ -427,7 +428,8 @@ pub(super) fn path_collision_time(
     // A single query: the message names the argument and the segment, not a pair.
     result.map_err(|e| {
         let reason = e.kind().to_string();
-        located_error(py, e.argument(), [None, e.segment()], &reason)
+        let kind = (e.kind().code(), e.kind().value());
+        located_error(py, e.argument(), [None, e.segment()], kind, &reason)
     })?;
     Ok(out[0])
 }

@@ -11,6 +11,7 @@
 //! [`InputError`](super::input_error::InputError) (a `ValueError`) for a wrong shape,
 //! layout or value.
 
+use super::input_error::kind;
 use std::ffi::c_int;
 use std::mem::MaybeUninit;
 use std::num::NonZeroUsize;
@@ -232,7 +233,7 @@ fn asarray<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyUn
     // Ragged nested lists, objects numpy cannot read.
     let made = made.map_err(|e| {
         let reason = format!("cannot be read as an array of numbers ({})", e.value(py));
-        input_error(py, name, None, &reason)
+        input_error(py, name, None, kind::NOT_NUMBERS, &reason)
     })?;
     Ok(made.cast_into::<PyUntypedArray>()?)
 }
@@ -541,7 +542,7 @@ pub(super) fn number(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<f64> {
         if real.array.ndim() != 0 {
             let shape = shape_text(real.array.shape());
             let reason = format!("expected a scalar, got shape {shape}");
-            return Err(input_error(obj.py(), name, None, &reason));
+            return Err(input_error(obj.py(), name, None, kind::SHAPE, &reason));
         }
         return Ok(floats(&real)?.values().first().copied().unwrap_or(f64::NAN));
     }
@@ -552,7 +553,7 @@ pub(super) fn number(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<f64> {
                 "must be finite, got {} (beyond float64's range)",
                 e.value(py)
             );
-            input_error(py, name, None, &reason)
+            input_error(py, name, None, NOT_FINITE, &reason)
         } else if e.is_instance_of::<PyTypeError>(py) {
             PyTypeError::new_err(format!(
                 "{name}: expected real numbers, got {}",
@@ -599,7 +600,7 @@ pub(super) fn point(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 2]> {
     if real.array.shape() != [2] {
         let shape = shape_text(real.array.shape());
         let reason = format!("expected a 2-vector (x, y), got shape {shape}");
-        return Err(input_error(obj.py(), name, None, &reason));
+        return Err(input_error(obj.py(), name, None, kind::SHAPE, &reason));
     }
     match floats(&real)?.values() {
         &[x, y] => Ok([x, y]),
@@ -607,6 +608,7 @@ pub(super) fn point(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 2]> {
             obj.py(),
             name,
             None,
+            kind::SHAPE,
             "expected a 2-vector (x, y)",
         )),
     }
@@ -618,7 +620,7 @@ pub(super) fn rows<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Floats<
     let shape = real.array.shape();
     if shape.len() != 2 || shape[1] != 2 {
         let reason = format!("expected shape (N, 2), got {}", shape_text(shape));
-        return Err(input_error(obj.py(), name, None, &reason));
+        return Err(input_error(obj.py(), name, None, kind::SHAPE, &reason));
     }
     floats(&real)
 }
@@ -641,7 +643,7 @@ pub(super) fn param<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Param<
         _ => {
             let shape = shape_text(real.array.shape());
             let reason = format!("expected a scalar or shape (N,), got shape {shape}");
-            Err(input_error(obj.py(), name, None, &reason))
+            Err(input_error(obj.py(), name, None, kind::SHAPE, &reason))
         }
     }
 }
@@ -661,7 +663,13 @@ pub(super) fn threads(obj: Option<&Bound<'_, PyAny>>) -> PyResult<Threads> {
     };
     if n < 1 {
         let reason = format!("must be None (all cores) or ≥ 1, got {index}");
-        return Err(input_error(obj.py(), "num_threads", None, &reason));
+        return Err(input_error(
+            obj.py(),
+            "num_threads",
+            None,
+            kind::OUT_OF_RANGE,
+            &reason,
+        ));
     }
     let n = usize::try_from(n).unwrap_or(usize::MAX).min(cores());
     Ok(NonZeroUsize::new(n).map_or(Threads::All, Threads::AtMost))
@@ -676,7 +684,13 @@ pub(super) fn count(name: &str, obj: Option<&Bound<'_, PyAny>>) -> PyResult<Opti
     let index = int(name, obj, "None or an int")?;
     if index.lt(0)? {
         let reason = format!("must be None or ≥ 0, got {index}");
-        return Err(input_error(obj.py(), name, None, &reason));
+        return Err(input_error(
+            obj.py(),
+            name,
+            None,
+            kind::OUT_OF_RANGE,
+            &reason,
+        ));
     }
     Ok(Some(index.extract::<usize>().unwrap_or(usize::MAX)))
 }
@@ -696,7 +710,7 @@ pub(super) fn indices(name: &str, obj: &Bound<'_, PyAny>, n: usize) -> PyResult<
             Ok(i) if i < n => Ok(i),
             _ => {
                 let reason = format!("ball index must be in 0..{n}, got {index}");
-                Err(input_error(py, name, m, &reason))
+                Err(input_error(py, name, m, INDEX_OUT_OF_RANGE, &reason))
             }
         }
     };
@@ -716,7 +730,7 @@ pub(super) fn indices(name: &str, obj: &Bound<'_, PyAny>, n: usize) -> PyResult<
         if array.ndim() != 1 {
             let shape = shape_text(array.shape());
             let reason = format!("expected an int or shape (M,), got shape {shape}");
-            return Err(input_error(py, name, None, &reason));
+            return Err(input_error(py, name, None, kind::SHAPE, &reason));
         }
     }
     obj.try_iter()?
@@ -764,7 +778,7 @@ pub(super) fn out<'py, D: Dimension>(
     inputs: &[Option<&Floats<'_>>],
 ) -> PyResult<Out<'py, D>> {
     let py = obj.py();
-    let fail = |reason: &str| input_error(py, "out", None, reason);
+    let fail = |reason: &str| input_error(py, "out", None, kind::OUT_LAYOUT, reason);
     let array = match obj.cast::<PyUntypedArray>() {
         Ok(a) if a.ndim() == shape.len() && native_float64(&a.dtype()) => {
             // SAFETY: an ndarray of native float64 (`native_float64`) with `D`'s dimensions.
@@ -835,9 +849,15 @@ impl<'py, D: Dimension> Out<'py, D> {
     /// the GIL (see [`track`]): refused if some rust-numpy code borrows it meanwhile.
     pub(super) fn tracked(&self) -> PyResult<PyReadwriteArray<'py, f64, D>> {
         let py = self.0.py();
-        self.0
-            .try_readwrite()
-            .map_err(|_| input_error(py, "out", None, "the array shares memory with an input"))
+        self.0.try_readwrite().map_err(|_| {
+            input_error(
+                py,
+                "out",
+                None,
+                kind::SHARED_MEMORY,
+                "the array shares memory with an input",
+            )
+        })
     }
 
     pub(super) fn into_array(self) -> Bound<'py, PyArray<f64, D>> {
@@ -873,7 +893,12 @@ pub(super) fn coefficients<'py>(
             "expected shape (N, k+1) with degree k = 1..4, got {}",
             shape_text(&shape)
         );
-        return Err(input_error(obj.py(), name, None, &reason));
+        return Err(input_error(obj.py(), name, None, kind::SHAPE, &reason));
     }
     Ok((floats(&real)?, shape))
 }
+
+/// The core's kinds of a number beyond float64's range and of a ball index out of range,
+/// which the binding meets before the core does.
+const NOT_FINITE: &str = crate::InputErrorKind::NotFinite(f64::INFINITY).code();
+const INDEX_OUT_OF_RANGE: &str = crate::InputErrorKind::IndexOutOfRange { index: 0, len: 0 }.code();

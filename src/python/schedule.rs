@@ -6,6 +6,7 @@
 //! [`Path::from_rows`](crate::Path::from_rows), its errors located at the ball (or, in an
 //! update, at its position in the update) and the segment, as the batch functions do.
 
+use super::input_error::kind;
 use numpy::{PyArray1, PyArray2};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -231,7 +232,7 @@ fn walls_of<const D: usize>(
                     "expected (lo, hi), each of {D} numbers like pos's last dimension, got shape {}",
                     read::shape_text(&shape)
                 );
-                Err(input_error(py, "box", None, &reason))
+                Err(input_error(py, "box", None, kind::SHAPE, &reason))
             }
         }
     };
@@ -242,7 +243,7 @@ fn walls_of<const D: usize>(
         }
         Some(other) => {
             let reason = format!("expected (lo, hi), got a sequence of {}", other.len());
-            Err(input_error(py, "box", None, &reason))
+            Err(input_error(py, "box", None, kind::SHAPE, &reason))
         }
         None => Err(PyTypeError::new_err(
             "box: expected None or a tuple (lo, hi)",
@@ -458,7 +459,7 @@ impl CollisionSchedule {
                 "expected paths in the calendar's dimension {dim}, got {}",
                 paths.dim
             );
-            return Err(input_error(py, "pos", None, &reason));
+            return Err(input_error(py, "pos", None, kind::SHAPE, &reason));
         }
         same_count(py, "start", indices.len(), paths.paths)?;
         let result = match &mut self.inner {
@@ -516,6 +517,7 @@ impl CollisionSchedule {
                 py,
                 "pos",
                 None,
+                kind::SHAPE,
                 "friction balls are 2-D; this calendar is 3-D",
             )),
         }

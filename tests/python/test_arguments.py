@@ -14,6 +14,7 @@ import inspect
 import math
 import re
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -280,9 +281,23 @@ def test_every_public_call_and_argument_is_walked() -> None:
         call(**valid)  # the baseline is valid
 
 
+def documented_kinds() -> set[str]:
+    """The kinds of `InputError` that docs/contract.md (section 6) lists."""
+    contract = (Path(__file__).parents[2] / "docs" / "contract.md").read_text()
+    listed = re.search(r"^- The kinds, from the core: (.*?)\.(?: New|$)", contract, re.M | re.S)
+    assert listed is not None
+    return set(re.findall(r"`(\w+)`", listed.group(1)))
+
+
+KINDS = documented_kinds()
+
+
 def names_argument(error: BaseException, argument: str) -> bool:
-    """Whether `error` names `argument` (as `.argument`, or at the start of its message)."""
+    """Whether `error` names `argument` (as `.argument`, or at the start of its message),
+    and, for an `InputError`, gives a documented kind and a float or `None` as its value."""
     if isinstance(error, bc.InputError):
+        assert error.kind in KINDS, error.kind
+        assert error.value is None or isinstance(error.value, float), error.value
         return error.argument == argument and str(error).startswith(argument)
     text = str(error)
     return text.startswith((f"{argument}:", f"{argument}["))
