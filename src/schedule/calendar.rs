@@ -333,7 +333,12 @@ impl<const D: usize> CollisionSchedule<D> {
         if !one_cell {
             schedule.ranges.reserve_exact(n);
         }
+        // The caller's flag (see `interrupt`) is looked at every 1,024 balls, here and below.
+        let interrupt = Interrupt::current();
         for i in 0..n {
+            if i % 1024 == 0 {
+                interrupt.check()?;
+            }
             let (reach, horizon) = schedule.span_box(i, None);
             // One cell: no cell lists (every box is compared with every other).
             if !one_cell {
@@ -355,8 +360,6 @@ impl<const D: usize> CollisionSchedule<D> {
             schedule.refreshed = vec![0; n];
             schedule.searched = vec![0; n];
         }
-        // The searches are most of the work: the caller's flag is looked at every 1,024 balls.
-        let interrupt = Interrupt::current();
         for i in 0..n {
             if i % 1024 == 0 {
                 interrupt.check()?;
