@@ -200,7 +200,10 @@ fn first_plane_contact<const D: usize>(
             return Some(segment.start);
         }
         let length = end - segment.start;
-        if let Some(s) = entry_root(c, b, q).filter(|&s| s > 0.0 && s < length) {
+        // A root of 0 from inside (`c > 0`) is an entry that underflowed (a ball that
+        // crosses its room faster than 2⁻¹⁰⁷⁴ time units): a contact at the start, rounded.
+        let after_start = |s: f64| s > 0.0 || (s == 0.0 && c > 0.0);
+        if let Some(s) = entry_root(c, b, q).filter(|&s| after_start(s) && s < length) {
             let t = segment.start + s;
             return (t < t_max).then_some(t);
         }
@@ -264,6 +267,18 @@ mod tests {
         assert_eq!((axis, side), (0, Side::Low));
         // x(t) = 0.1 + t − t² = 0.25 on the way back: t = (1 + √0.4)/2.
         assert!((t - (1.0 + 0.4f64.sqrt()) / 2.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn an_entry_too_soon_for_float_time_is_a_contact_at_the_start() {
+        // 2.5e-152 of room at 1.4e303: the entry is at 1.8e-455, which rounds to the start
+        // (a fuzzed simulation whose ball left its box through the wall).
+        let walls = Walls::new([0.0; 2], [6.1e-151; 2]).expect("valid box");
+        for start in [0.0, 0.25] {
+            let p = path(&[(start, [5.75e-151, 3e-151], [1.4e303, 0.0], [0.0; 2])]);
+            let hit = first_wall_contact(&p, 1.0e-152, &walls, f64::INFINITY);
+            assert_eq!(hit, Some((start, 0, Side::High)));
+        }
     }
 
     #[test]
