@@ -100,6 +100,16 @@ pub enum InputErrorKind {
         /// How many events came at that instant.
         events: usize,
     },
+    /// A segment (of static geometry) whose two ends are the same point.
+    DegenerateSegment,
+    /// A circle's radius (of static geometry) below zero.
+    NegativeCircleRadius(f64),
+    /// A target's radius (of static geometry) that is zero or negative.
+    NonPositiveTargetRadius(f64),
+    /// A plane's normal that is the zero vector.
+    ZeroNormal,
+    /// A segment's side that is not −1, 0 or 1.
+    InvalidSide(i64),
 }
 
 /// An invalid input: which argument, at which index (for batch calls), and why.
@@ -325,6 +335,17 @@ impl fmt::Display for InputErrorKind {
                     " keep colliding at t = {}: {events} events at that instant",
                     Brief(time)
                 )
+            }
+            Self::DegenerateSegment => f.write_str("a segment's two ends must differ"),
+            Self::NegativeCircleRadius(x) => {
+                write!(f, "a circle's radius must be ≥ 0, got {}", Brief(x))
+            }
+            Self::NonPositiveTargetRadius(x) => {
+                write!(f, "a target's radius must be > 0, got {}", Brief(x))
+            }
+            Self::ZeroNormal => f.write_str("a plane's normal must not be zero"),
+            Self::InvalidSide(side) => {
+                write!(f, "a segment's side must be -1, 0 or 1, got {side}")
             }
         }
     }

@@ -27,8 +27,10 @@
 //! entry lies beyond the segment's ends, on the wrong side, or is no entry of the band); the
 //! walk then goes on to the next candidate, in time order.
 
+use crate::collision::length_unit::largest;
 use crate::path::{Segment, spans};
 use crate::poly::{RealRoots, solve_quadratic};
+use nalgebra::SVector;
 
 /// `c + b·s + q·s²`: a signed distance (less the radius) on one segment of a path, in the
 /// time `s` since the segment's start.
@@ -214,6 +216,29 @@ pub(crate) fn first_entry<const D: usize, const N: usize, X>(
         positive_before = Some(positive);
     }
     None
+}
+
+/// The largest magnitude among the positions, velocities and accelerations of `segments`:
+/// with the object's lengths and the radius, what a query's unit of length comes from.
+#[inline(always)]
+pub(crate) fn largest_in_path<const D: usize>(segments: &[Segment<D>]) -> f64 {
+    segments.iter().fold(0.0, |most, s| {
+        let most = largest([most, largest(s.position.into())]);
+        largest([
+            most,
+            largest(s.velocity.into()),
+            largest(s.acceleration.into()),
+        ])
+    })
+}
+
+/// `x·y` in a fixed order (component 0 first), so that quarter turns and reflections, which
+/// permute and negate the products, give the same bits.
+#[inline(always)]
+pub(crate) fn dot<const D: usize>(x: &SVector<f64, D>, y: &SVector<f64, D>) -> f64 {
+    let mut products = x.iter().zip(y.iter()).map(|(a, b)| a * b);
+    let first = products.next().unwrap_or(0.0);
+    products.fold(first, |sum, p| sum + p)
 }
 
 #[cfg(test)]
