@@ -6,11 +6,12 @@
 //! power of two over the whole exponent range (and a plane's normal by another), a
 //! translation by exact amounts (segments and planes, whose queries form every difference
 //! from the caller's own numbers), a horizon after the contact, the box walls against the
-//! planes they are. Inexact ones must agree within [`close`]'s tolerance, on configurations
-//! that are [`robust`] (not within rounding of a graze or of a segment's end, where the
-//! hit/miss answer is legitimately undecided): a segment reversed (`P` and `Q` swapped, its
-//! side flipped), a circle or a target translated. Every answer must be valid (finite, from
-//! the first start on, before the horizon) and a contact (at the contact distance there, or
+//! planes they are, a circle or a target against the pair search with a ball at rest.
+//! Inexact ones must agree within [`close`]'s tolerance, on configurations that are
+//! [`robust`] (not within rounding of a graze or of a segment's end, where the hit/miss
+//! answer is legitimately undecided): a segment reversed (`P` and `Q` swapped, its side
+//! flipped), a circle or a target translated. Every answer must be valid (finite, from the
+//! first start on, before the horizon) and a contact (at the contact distance there, or
 //! within it at a start).
 //!
 //! Every property runs a fixed number of cases from a fixed seed.
@@ -535,6 +536,20 @@ proptest! {
             prop_assume!(robust(&flipped));
             close(other.time(), flipped.time())?;
         }
+    }
+
+    #[test]
+    fn a_circle_or_a_target_is_a_ball_at_rest(case in case_of(disc_object::<2>())) {
+        let (centre, contact) = match case.object {
+            Object::Circle(c, rho) => (c, rho + case.radius),
+            Object::Target(c, rho) => (c, rho),
+            _ => return Err(TestCaseError::reject("not a disc")),
+        };
+        let path = Path::new(case.path.clone()).expect("valid");
+        let rest = Path::new(vec![Segment::at_rest(case.first_start(), centre)]).expect("valid");
+        let options = CollisionOptions::default();
+        let pair = ballcollide::path_collision_time(&path, &rest, contact, &options);
+        prop_assert_eq!(bits(case.time()), bits(pair.expect("valid")));
     }
 
     #[test]
