@@ -11,8 +11,8 @@
 //! [`robust`] (not within rounding of a graze or of a segment's end, where the hit/miss
 //! answer is legitimately undecided): a segment reversed (`P` and `Q` swapped, its side
 //! flipped), a circle or a target translated. Every answer must be valid (finite, from the
-//! first start on, before the horizon) and a contact (at the contact distance there, or
-//! within it at a start).
+//! first start on, before the horizon; for numbers from the whole float range too) and a
+//! contact (at the contact distance there, or within it at a start).
 //!
 //! Every property runs a fixed number of cases from a fixed seed.
 
@@ -29,7 +29,7 @@ use ballcollide::path::{Path, Segment};
 use ballcollide::schedule::Walls;
 use ballcollide::{CollisionOptions, InputErrorKind};
 use nalgebra::{SVector, Vector2, Vector3};
-use property_paths::{bits, config};
+use property_paths::{bits, config, wild, wild_path};
 use proptest::prelude::*;
 
 const INF: f64 = f64::INFINITY;
@@ -439,8 +439,66 @@ fn check_contact<const D: usize>(case: &Case<D>) -> Result<(), TestCaseError> {
     Ok(())
 }
 
+/// An object with numbers from the whole float range (valid: a segment's ends apart, radii
+/// not negative, a normal not zero).
+fn wild_object<const D: usize>() -> BoxedStrategy<Object<D>> {
+    let point = || prop::array::uniform::<_, D>(wild()).prop_map(Vector::from);
+    let segment = (point(), point(), side())
+        .prop_filter("distinct ends", |(p, q, _)| p != q)
+        .prop_map(|(p, q, side)| Object::Segment(p, q, side));
+    let circle = (point(), wild()).prop_map(|(c, rho)| Object::Circle(c, rho.abs()));
+    let target = (point(), wild())
+        .prop_filter("a radius", |(_, rho)| *rho != 0.0)
+        .prop_map(|(c, rho)| Object::Target(c, rho.abs()));
+    let plane = (point(), point())
+        .prop_filter("a normal", |(_, n)| n.iter().any(|x| *x != 0.0))
+        .prop_map(|(q, n)| Object::Plane(q, n));
+    if D == 2 {
+        prop_oneof![segment, circle, target, plane].boxed()
+    } else {
+        prop_oneof![circle, target, plane].boxed()
+    }
+}
+
+/// A wild case and horizon: paths, objects and radii from the whole float range.
+fn wild_case<const D: usize>() -> impl Strategy<Value = (Case<D>, f64)> {
+    let radius = wild().prop_map(|r| if r == 0.0 { 1.0 } else { r.abs() });
+    let t_max = prop_oneof![Just(INF), Just(0.0), wild().prop_map(f64::abs)];
+    (wild_path::<D>(), radius, wild_object::<D>(), t_max).prop_map(
+        |(path, radius, object, t_max)| {
+            (
+                Case {
+                    path,
+                    radius,
+                    object,
+                },
+                t_max,
+            )
+        },
+    )
+}
+
+/// An answer from anywhere in the float range is a finite time from the first start on,
+/// before the horizon (never a panic, never NaN).
+fn check_valid<const D: usize>((case, t_max): (Case<D>, f64)) -> Result<(), TestCaseError> {
+    if let Some(t) = case.time_until(t_max) {
+        prop_assert!(t.is_finite() && t >= case.first_start() && t < t_max, "{t}");
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(config(1000, 0x36_0001))]
+
+    #[test]
+    fn answers_over_the_whole_float_range_are_valid_in_2d(case in wild_case::<2>()) {
+        check_valid(case)?;
+    }
+
+    #[test]
+    fn answers_over_the_whole_float_range_are_valid_in_3d(case in wild_case::<3>()) {
+        check_valid(case)?;
+    }
 
     #[test]
     fn exact_maps_in_the_plane_change_no_bit(case in case::<2>()) {

@@ -30,7 +30,7 @@ use ballcollide::path::{Path, Segment};
 use ballcollide::{Ball, CollisionOptions, InputError, InputErrorKind};
 use ballcollide::{collision_time, path_collision_time};
 use nalgebra::{Rotation2, Rotation3, SVector, Vector2, Vector3};
-use property_paths::{bits, config};
+use property_paths::{bits, config, wild, wild_path};
 use proptest::prelude::*;
 
 const INF: f64 = f64::INFINITY;
@@ -462,49 +462,6 @@ fn robust_balls(a: &Ball, b: &Ball, radius: f64) -> bool {
 
 // ---------------------------------------------------------------------------------------------
 // Valid answers for any valid input
-
-/// A finite float from anywhere in the range: zeros of both signs, subnormals, tiny, ordinary
-/// and huge magnitudes, up to `f64::MAX`.
-fn wild() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        2 => Just(0.0),
-        1 => Just(-0.0),
-        4 => -2.0..2.0f64,
-        4 => (1.0..2.0f64, -1074..=1023i32, prop::bool::ANY).prop_map(|(m, e, negative)| {
-            let x = (m * 2f64.powi(e.max(-1022))) * 2f64.powi((e + 1022).min(0));
-            let x = if x.is_finite() { x } else { f64::MAX };
-            if negative { -x } else { x }
-        }),
-        1 => Just(f64::MAX),
-        1 => Just(f64::MIN_POSITIVE),
-        1 => Just(f64::from_bits(1)),
-    ]
-}
-
-/// A path of 1–6 segments with values from anywhere in the float range: starts from `wild`
-/// (any sign) then non-decreasing by `wild` steps (0 included: empty segments; a sum that
-/// overflows is held at `f64::MAX`).
-fn wild_path<const D: usize>() -> impl Strategy<Value = Segments<D>> {
-    let piece = (
-        wild(),
-        prop::array::uniform::<_, D>(wild()),
-        prop::array::uniform::<_, D>(wild()),
-        prop::array::uniform::<_, D>(wild()),
-    );
-    (wild(), prop::collection::vec(piece, 1..=6)).prop_map(|(t0, pieces)| {
-        let mut t = t0;
-        pieces
-            .into_iter()
-            .enumerate()
-            .map(|(k, (dt, p, v, a))| {
-                if k > 0 {
-                    t = (t + dt.abs()).min(f64::MAX);
-                }
-                Segment::new(t, p.into(), v.into(), a.into())
-            })
-            .collect()
-    })
-}
 
 fn wild_pair<const D: usize>() -> impl Strategy<Value = (Pair<D>, f64)> {
     let radius = wild().prop_map(|r| if r == 0.0 { 1.0 } else { r.abs() });

@@ -1,7 +1,8 @@
 //! What the property suites on paths share (`tests/path_properties.rs`,
 //! `tests/geometry_properties.rs`; included by path, beside `support/cases.rs` as `cases`):
-//! the fixed-seed configuration, a simulator's kind of path, the check that a horizon only
-//! cuts, and the range of exact power-of-two scalings.
+//! the fixed-seed configuration, a simulator's kind of path, paths with values from the whole
+//! float range, the check that a horizon only cuts, and the range of exact power-of-two
+//! scalings.
 
 #![allow(dead_code)]
 
@@ -92,4 +93,47 @@ pub fn exponent_range(lengths: impl IntoIterator<Item = f64>) -> (i32, i32) {
     }
     // Within one of the bounds on either side: the rounding of log2 is then harmless.
     (-1021 - lo, 1022 - hi)
+}
+
+/// A finite float from anywhere in the range: zeros of both signs, subnormals, tiny, ordinary
+/// and huge magnitudes, up to `f64::MAX`.
+pub fn wild() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        2 => Just(0.0),
+        1 => Just(-0.0),
+        4 => -2.0..2.0f64,
+        4 => (1.0..2.0f64, -1074..=1023i32, prop::bool::ANY).prop_map(|(m, e, negative)| {
+            let x = (m * 2f64.powi(e.max(-1022))) * 2f64.powi((e + 1022).min(0));
+            let x = if x.is_finite() { x } else { f64::MAX };
+            if negative { -x } else { x }
+        }),
+        1 => Just(f64::MAX),
+        1 => Just(f64::MIN_POSITIVE),
+        1 => Just(f64::from_bits(1)),
+    ]
+}
+
+/// A path of 1–6 segments with values from anywhere in the float range: starts from `wild`
+/// (any sign) then non-decreasing by `wild` steps (0 included: empty segments; a sum that
+/// overflows is held at `f64::MAX`).
+pub fn wild_path<const D: usize>() -> impl Strategy<Value = Vec<Segment<D>>> {
+    let piece = (
+        wild(),
+        prop::array::uniform::<_, D>(wild()),
+        prop::array::uniform::<_, D>(wild()),
+        prop::array::uniform::<_, D>(wild()),
+    );
+    (wild(), prop::collection::vec(piece, 1..=6)).prop_map(|(t0, pieces)| {
+        let mut t = t0;
+        pieces
+            .into_iter()
+            .enumerate()
+            .map(|(k, (dt, p, v, a))| {
+                if k > 0 {
+                    t = (t + dt.abs()).min(f64::MAX);
+                }
+                Segment::new(t, p.into(), v.into(), a.into())
+            })
+            .collect()
+    })
 }
