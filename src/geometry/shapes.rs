@@ -119,17 +119,17 @@ impl LineSegment {
         Ok(Self { p, q, side })
     }
 
-    /// The first end, `P` (`u = 0`).
+    /// The first end, `P` (`u = 0`; example: [`LineSegment`]).
     pub fn p(&self) -> Vector2<f64> {
         self.p
     }
 
-    /// The second end, `Q` (`u = 1`).
+    /// The second end, `Q` (`u = 1`; example: [`LineSegment`]).
     pub fn q(&self) -> Vector2<f64> {
         self.q
     }
 
-    /// Which contacts count.
+    /// Which contacts count (example: [`LineSegment`]).
     pub fn side(&self) -> SegmentSide {
         self.side
     }
@@ -183,12 +183,12 @@ impl<const D: usize> Circle<D> {
         Ok(Self { centre, rho })
     }
 
-    /// The centre `C`.
+    /// The centre `C` (example: [`Circle`]).
     pub fn centre(&self) -> SVector<f64, D> {
         self.centre
     }
 
-    /// The radius `ρ`.
+    /// The radius `ρ` (example: [`Circle`]).
     pub fn rho(&self) -> f64 {
         self.rho
     }
@@ -203,7 +203,7 @@ impl<const D: usize> Circle<D> {
 /// use nalgebra::Vector2;
 ///
 /// let pocket = Target::new(Vector2::new(0.0, 0.0), 0.06)?;
-/// assert_eq!(pocket.rho(), 0.06);
+/// assert_eq!((pocket.centre(), pocket.rho()), (Vector2::zeros(), 0.06));
 /// let err = Target::new(Vector2::new(0.0, 0.0), 0.0).unwrap_err();
 /// assert_eq!(err.to_string(), "rho: a target's radius must be > 0, got 0");
 /// # Ok::<(), ballcollide::InputError>(())
@@ -226,12 +226,12 @@ impl<const D: usize> Target<D> {
         Ok(Self { centre, rho })
     }
 
-    /// The centre `C`.
+    /// The centre `C` (example: [`Target`]).
     pub fn centre(&self) -> SVector<f64, D> {
         self.centre
     }
 
-    /// The radius `ρ`.
+    /// The radius `ρ` (example: [`Target`]).
     pub fn rho(&self) -> f64 {
         self.rho
     }
@@ -248,7 +248,7 @@ impl<const D: usize> Target<D> {
 /// use nalgebra::Vector3;
 ///
 /// let bed = Plane::new(Vector3::zeros(), Vector3::new(0.0, 0.0, 2.0))?;
-/// assert_eq!(bed.normal(), Vector3::new(0.0, 0.0, 2.0));
+/// assert_eq!((bed.point(), bed.normal()), (Vector3::zeros(), Vector3::new(0.0, 0.0, 2.0)));
 /// let err = Plane::new(Vector3::zeros(), Vector3::zeros()).unwrap_err();
 /// assert_eq!(err.to_string(), "normal: a plane's normal must not be zero");
 /// # Ok::<(), ballcollide::InputError>(())
@@ -274,12 +274,13 @@ impl<const D: usize> Plane<D> {
         Ok(Self { point, normal })
     }
 
-    /// The point `Q` on the plane.
+    /// The point `Q` on the plane (example: [`Plane`]).
     pub fn point(&self) -> SVector<f64, D> {
         self.point
     }
 
-    /// The normal `n`, as given: it points to the side the plane is touched from.
+    /// The normal `n`, as given: it points to the side the plane is touched from (example:
+    /// [`Plane`]).
     pub fn normal(&self) -> SVector<f64, D> {
         self.normal
     }
