@@ -102,6 +102,16 @@ pub enum InputErrorKind {
         /// How many events came at that instant.
         events: usize,
     },
+    /// A segment (of static geometry) whose two ends are the same point.
+    DegenerateSegment,
+    /// A circle's radius (of static geometry) below zero.
+    NegativeCircleRadius(f64),
+    /// A target's radius (of static geometry) that is zero or negative.
+    NonPositiveTargetRadius(f64),
+    /// A plane's normal that is the zero vector.
+    ZeroNormal,
+    /// A segment's side that is not −1, 0 or 1.
+    InvalidSide(i64),
 }
 
 impl InputErrorKind {
@@ -137,6 +147,11 @@ impl InputErrorKind {
             Self::OutsideBox { .. } => "outside_box",
             Self::WiderThanBox { .. } => "wider_than_box",
             Self::NoProgress { .. } => "no_progress",
+            Self::DegenerateSegment => "degenerate_segment",
+            Self::NegativeCircleRadius(_) => "negative_circle_radius",
+            Self::NonPositiveTargetRadius(_) => "non_positive_target_radius",
+            Self::ZeroNormal => "zero_normal",
+            Self::InvalidSide(_) => "invalid_side",
         }
     }
 
@@ -156,7 +171,10 @@ impl InputErrorKind {
             | Self::NonPositiveBallRadius(x)
             | Self::InvalidHorizon(x)
             | Self::NotInUnitInterval(x)
-            | Self::NonPositiveMass(x) => Some(x),
+            | Self::NonPositiveMass(x)
+            | Self::NegativeCircleRadius(x)
+            | Self::NonPositiveTargetRadius(x) => Some(x),
+            Self::InvalidSide(side) => Some(side as f64),
             Self::DecreasingStart { start, .. } | Self::StartsDiffer { start, .. } => Some(start),
             Self::BeforeCurrentTime { time, .. } => Some(time),
             Self::IndexOutOfRange { index, .. } => Some(index as f64),
@@ -166,7 +184,12 @@ impl InputErrorKind {
             Self::Overlap { distance, .. } => Some(distance),
             Self::LengthMismatch { found, .. } => Some(found as f64),
             Self::NoProgress { time, .. } => Some(time),
-            Self::NoSegments | Self::Endless | Self::Interrupted | Self::OutsideBox { .. } => None,
+            Self::NoSegments
+            | Self::Endless
+            | Self::Interrupted
+            | Self::OutsideBox { .. }
+            | Self::DegenerateSegment
+            | Self::ZeroNormal => None,
         }
     }
 }
@@ -395,6 +418,17 @@ impl fmt::Display for InputErrorKind {
                     " keep colliding at t = {}: {events} events at that instant",
                     Brief(time)
                 )
+            }
+            Self::DegenerateSegment => f.write_str("a segment's two ends must differ"),
+            Self::NegativeCircleRadius(x) => {
+                write!(f, "a circle's radius must be ≥ 0, got {}", Brief(x))
+            }
+            Self::NonPositiveTargetRadius(x) => {
+                write!(f, "a target's radius must be > 0, got {}", Brief(x))
+            }
+            Self::ZeroNormal => f.write_str("a plane's normal must not be zero"),
+            Self::InvalidSide(side) => {
+                write!(f, "a segment's side must be -1, 0 or 1, got {side}")
             }
         }
     }

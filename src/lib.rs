@@ -10,6 +10,8 @@
 //! - [`Gap`] ([`coefficients`]): the relative motion of two balls and its gap quartic;
 //! - [`collision_time`] ([`collision`]): the first contact of two balls;
 //! - [`Path`] ([`path`]): general motion, paths of constant-acceleration segments in 2-D and 3-D;
+//! - [`geometry`]: static objects (segments, circles, targets, planes) and when a ball on a
+//!   path first touches one;
 //! - [`poly`]: real-root solvers for polynomials of degree ≤ 4;
 //! - [`scene`]: many balls at once: earliest collisions, with a broad phase;
 //! - [`schedule`]: an event calendar: the next collision among N balls, kept up to date.
@@ -29,6 +31,7 @@ pub mod batch;
 pub mod coefficients;
 pub mod collision;
 pub mod error;
+pub mod geometry;
 pub mod interrupt;
 pub mod motion;
 pub mod path;

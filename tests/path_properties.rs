@@ -22,14 +22,16 @@
 
 #[path = "support/cases.rs"]
 mod cases;
+#[path = "support/property_paths.rs"]
+mod property_paths;
 
 use ballcollide::batch::{PathPairs, PathRows, PerPair, Threads, path_collision_times};
 use ballcollide::path::{Path, Segment};
 use ballcollide::{Ball, CollisionOptions, InputError, InputErrorKind};
 use ballcollide::{collision_time, path_collision_time};
 use nalgebra::{Rotation2, Rotation3, SVector, Vector2, Vector3};
+use property_paths::{bits, config, wild, wild_path};
 use proptest::prelude::*;
-use proptest::test_runner::RngSeed;
 
 const INF: f64 = f64::INFINITY;
 
@@ -97,50 +99,12 @@ fn time_of<const D: usize>(
         .expect("valid radius and horizon")
 }
 
-fn bits(t: Option<f64>) -> Option<u64> {
-    t.map(f64::to_bits)
-}
-
-/// `fast` cases in the fast tier (`PROPTEST_CASES` in the thorough one) from a fixed seed.
-fn config(fast: u32, seed: u64) -> ProptestConfig {
-    ProptestConfig {
-        cases: cases::cases(fast),
-        rng_seed: RngSeed::Fixed(seed),
-        max_global_rejects: 4096,
-        ..ProptestConfig::default()
-    }
-}
-
 // ---------------------------------------------------------------------------------------------
 // Configurations
 
-/// A path of 1–5 segments, the first starting in `[0, 2)`: each later segment starts 0 (the
-/// one before is then empty) to 2 s after the one before; most continue the previous motion,
-/// as a simulator's paths do, the others jump. Lengths in metres (positions in a 2 m box),
-/// speeds up to 2 m/s, accelerations up to 1 m/s².
+/// A path of 1–5 segments (see [`property_paths::path`]).
 fn path<const D: usize>() -> impl Strategy<Value = Segments<D>> {
-    let piece = (
-        prop_oneof![1 => Just(0.0), 4 => 0.0..2.0f64],
-        prop::bool::weighted(0.7),
-        prop::array::uniform::<_, D>(-1.0..1.0f64),
-        prop::array::uniform::<_, D>(-2.0..2.0f64),
-        prop::array::uniform::<_, D>(-1.0..1.0f64),
-    );
-    (0.0..2.0f64, prop::collection::vec(piece, 1..=5)).prop_map(|(t0, pieces)| {
-        let mut segments: Segments<D> = Vec::new();
-        let mut t = t0;
-        for (k, (dt, continuous, p, v, a)) in pieces.into_iter().enumerate() {
-            if k > 0 {
-                t += dt;
-            }
-            let (p, v) = match segments.last() {
-                Some(previous) if continuous => (previous.position_at(t), previous.velocity_at(t)),
-                _ => (p.into(), v.into()),
-            };
-            segments.push(Segment::new(t, p, v, a.into()));
-        }
-        segments
-    })
+    property_paths::path(5)
 }
 
 /// Two random paths, contact distance 0.05–0.6 m; in two cases out of three, B's path is
@@ -358,25 +322,12 @@ fn scaled<const D: usize>(pair: &Pair<D>, k: i32) -> Option<Pair<D>> {
     })
 }
 
-/// The exponents `k` for which every length of `pair` times `2^k` is a normal float: the
-/// range the power-of-two scaling may cover exactly whatever the mantissas.
+/// The exponents `k` for which every length of `pair` times `2^k` is a normal float.
 fn exponent_range<const D: usize>(pair: &Pair<D>) -> (i32, i32) {
-    let (mut lo, mut hi) = (i32::MAX, i32::MIN);
-    let mut note = |x: f64| {
-        if x != 0.0 {
-            let e = x.abs().log2().floor() as i32;
-            lo = lo.min(e);
-            hi = hi.max(e);
-        }
-    };
-    for s in pair.a.iter().chain(&pair.b) {
-        for v in [s.position, s.velocity, s.acceleration] {
-            v.iter().for_each(|&x| note(x));
-        }
-    }
-    note(pair.radius);
-    // Within one of the bounds on either side: the rounding of log2 is then harmless.
-    (-1021 - lo, 1022 - hi)
+    let vectors = pair.a.iter().chain(&pair.b);
+    let vectors = vectors.flat_map(|s| [s.position, s.velocity, s.acceleration]);
+    let lengths = vectors.flat_map(|v| v.iter().copied().collect::<Vec<_>>());
+    property_paths::exponent_range(lengths.chain([pair.radius]))
 }
 
 fn check_units<const D: usize>(pair: &Pair<D>, where_: f64) -> Result<(), TestCaseError> {
@@ -512,49 +463,6 @@ fn robust_balls(a: &Ball, b: &Ball, radius: f64) -> bool {
 // ---------------------------------------------------------------------------------------------
 // Valid answers for any valid input
 
-/// A finite float from anywhere in the range: zeros of both signs, subnormals, tiny, ordinary
-/// and huge magnitudes, up to `f64::MAX`.
-fn wild() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        2 => Just(0.0),
-        1 => Just(-0.0),
-        4 => -2.0..2.0f64,
-        4 => (1.0..2.0f64, -1074..=1023i32, prop::bool::ANY).prop_map(|(m, e, negative)| {
-            let x = (m * 2f64.powi(e.max(-1022))) * 2f64.powi((e + 1022).min(0));
-            let x = if x.is_finite() { x } else { f64::MAX };
-            if negative { -x } else { x }
-        }),
-        1 => Just(f64::MAX),
-        1 => Just(f64::MIN_POSITIVE),
-        1 => Just(f64::from_bits(1)),
-    ]
-}
-
-/// A path of 1–6 segments with values from anywhere in the float range: starts from `wild`
-/// (any sign) then non-decreasing by `wild` steps (0 included: empty segments; a sum that
-/// overflows is held at `f64::MAX`).
-fn wild_path<const D: usize>() -> impl Strategy<Value = Segments<D>> {
-    let piece = (
-        wild(),
-        prop::array::uniform::<_, D>(wild()),
-        prop::array::uniform::<_, D>(wild()),
-        prop::array::uniform::<_, D>(wild()),
-    );
-    (wild(), prop::collection::vec(piece, 1..=6)).prop_map(|(t0, pieces)| {
-        let mut t = t0;
-        pieces
-            .into_iter()
-            .enumerate()
-            .map(|(k, (dt, p, v, a))| {
-                if k > 0 {
-                    t = (t + dt.abs()).min(f64::MAX);
-                }
-                Segment::new(t, p.into(), v.into(), a.into())
-            })
-            .collect()
-    })
-}
-
 fn wild_pair<const D: usize>() -> impl Strategy<Value = (Pair<D>, f64)> {
     let radius = wild().prop_map(|r| if r == 0.0 { 1.0 } else { r.abs() });
     let t_max = prop_oneof![Just(INF), Just(0.0), wild().prop_map(f64::abs)];
@@ -656,26 +564,7 @@ fn check_together<const D: usize>(
 }
 
 fn check_horizon<const D: usize>(pair: &Pair<D>, f: f64) -> Result<(), TestCaseError> {
-    let t = pair.time();
-    let t_from = pair.t_from();
-    match t {
-        Some(t) => {
-            let later = [t.next_up(), t + 1.0 + f, 2.0 * t.abs() + 1.0, 1e300];
-            for t_max in later {
-                prop_assert_eq!(bits(pair.time_until(t_max)), Some(t.to_bits()), "{}", t_max);
-            }
-            let earlier = [t, t.next_down(), t_from + f * (t - t_from), t_from, 0.0];
-            for t_max in earlier.into_iter().filter(|&x| x >= 0.0) {
-                prop_assert_eq!(pair.time_until(t_max), None, "t_max = {}", t_max);
-            }
-        }
-        None => {
-            for t_max in [0.0, t_from + f, 1e300] {
-                prop_assert_eq!(pair.time_until(t_max), None);
-            }
-        }
-    }
-    Ok(())
+    property_paths::check_horizon(|t_max| pair.time_until(t_max), pair.t_from(), f)
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -5,15 +5,16 @@
 //! towards it. On a segment, the signed distance to a wall's contact plane is a quadratic in
 //! the time `s` since the segment's start, `u(s) = c + b·s + q·s²` (`c = (x − lo) − r`,
 //! `b = v`, `q = ½·a` for the low wall; the signs flipped and `c = (hi − x) − r` for the high
-//! one): the contact is its first entry root (`u` going from positive to negative), solved
-//! with [`solve_quadratic`]. The semantics are the pair's: at the path's first start a ball
-//! on or beyond the plane collides at once only if it moves towards the wall; a path that
-//! jumps beyond a plane at a later segment start collides at that start; a tangency is no
-//! contact.
+//! one): the contact is its first entry root (`u` going from positive to negative). The walk
+//! along the path is the plane and segment queries' own
+//! (`geometry/signed_distance.rs`, [`first_entry`]), with the pair's semantics: at the path's
+//! first start a ball on or beyond the plane collides at once only if it moves towards the
+//! wall; a path that jumps beyond a plane at a later segment start collides at that start; a
+//! tangency is no contact.
 
 use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon, finite};
-use crate::path::{Path, Segment, spans};
-use crate::poly::solve_quadratic;
+use crate::geometry::signed_distance::{Quadratic, first_entry};
+use crate::path::{Path, Segment};
 
 /// Which of an axis's two walls.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -143,24 +144,27 @@ pub(crate) fn first_wall_contact<const D: usize>(
     best
 }
 
-/// The signed distance to one wall's contact plane on a segment, `(c, b, q)` of
-/// `c + b·s + q·s²`: positive inside.
+/// The signed distance to one wall's contact plane on a segment, `c + b·s + q·s²`: positive
+/// inside. (A wall is a [`Plane`](crate::geometry::Plane) whose normal is an axis; its
+/// distance is formed here without the general plane's products.)
+#[inline(always)]
 fn plane_distance<const D: usize>(
     segment: &Segment<D>,
     radius: f64,
     walls: &Walls<D>,
     axis: usize,
     side: Side,
-) -> (f64, f64, f64) {
+) -> Quadratic {
     let (x, v, a) = (
         segment.position[axis],
         segment.velocity[axis],
         segment.acceleration[axis],
     );
-    match side {
+    let (c, b, q) = match side {
         Side::Low => ((x - walls.lo[axis]) - radius, v, 0.5 * a),
         Side::High => ((walls.hi[axis] - x) - radius, -v, -0.5 * a),
-    }
+    };
+    Quadratic { c, b, q }
 }
 
 /// The wall a velocity component `v` points to (none for 0).
@@ -174,7 +178,8 @@ fn facing(v: f64) -> Option<Side> {
     }
 }
 
-/// The first entry of one wall's plane, from the path's first start.
+/// The first entry of one wall's plane, from the path's first start: the walk every plane
+/// and segment query takes ([`first_entry`]), on this wall's distance.
 fn first_plane_contact<const D: usize>(
     segments: &[Segment<D>],
     radius: f64,
@@ -183,53 +188,12 @@ fn first_plane_contact<const D: usize>(
     side: Side,
     t_max: f64,
 ) -> Option<f64> {
-    let mut inside_before: Option<bool> = None;
-    for (segment, end) in spans(segments) {
-        if segment.start >= t_max {
-            return None;
-        }
-        let (c, b, q) = plane_distance(segment, radius, walls, axis, side);
-        let approaching = b < 0.0 || (b == 0.0 && q < 0.0);
-        let at_start = match inside_before {
-            // At the first start: on or beyond the plane and moving towards the wall.
-            None => c <= 0.0 && approaching,
-            // At a later start: from inside to beyond (a jump), or onto the plane moving on.
-            Some(inside) => inside && (c < 0.0 || (c == 0.0 && approaching)),
-        };
-        if at_start {
-            return Some(segment.start);
-        }
-        let length = end - segment.start;
-        // A root of 0 from inside (`c > 0`) is an entry that underflowed (a ball that
-        // crosses its room faster than 2⁻¹⁰⁷⁴ time units): a contact at the start, rounded.
-        let after_start = |s: f64| s > 0.0 || (s == 0.0 && c > 0.0);
-        if let Some(s) = entry_root(c, b, q).filter(|&s| after_start(s) && s < length) {
-            let t = segment.start + s;
-            return (t < t_max).then_some(t);
-        }
-        if length == f64::INFINITY {
-            return None;
-        }
-        inside_before = Some(c + (b + q * length) * length > 0.0);
-    }
-    None
-}
-
-/// The root of `c + b·s + q·s²` at which it goes from positive to negative (as `s` grows), if
-/// any: the smaller of two distinct roots when `q > 0`, the larger when `q < 0`, the root of
-/// a falling line when `q = 0`. A double root is a tangency: none.
-fn entry_root(c: f64, b: f64, q: f64) -> Option<f64> {
-    if q == 0.0 {
-        // `solve_quadratic`'s linear case, without its general checks: the root of a falling
-        // line (`b < 0`; finite values only).
-        return (b < 0.0 && b.is_finite() && c.is_finite()).then(|| -c / b);
-    }
-    let roots = solve_quadratic(q, b, c);
-    match *roots.as_slice() {
-        [r1, r2] if r1 < r2 => Some(if q > 0.0 { r1 } else { r2 }),
-        [r] if q == 0.0 && b < 0.0 => Some(r),
-        _ => None,
-    }
+    first_entry(
+        segments,
+        t_max,
+        |segment| ([plane_distance(segment, radius, walls, axis, side)], ()),
+        |_, _, _| true,
+    )
 }
 
 #[cfg(test)]
@@ -279,6 +243,19 @@ mod tests {
             let hit = first_wall_contact(&p, 1.0e-152, &walls, f64::INFINITY);
             assert_eq!(hit, Some((start, 0, Side::High)));
         }
+    }
+
+    #[test]
+    fn reaching_the_plane_exactly_at_a_segment_start_is_a_contact_there() {
+        // The first segment's root is its end (0.25 = 0.75 − 0.5, at speed 1): not inside
+        // it; the next segment starts on the plane, moving on. The contact is at 0.25, found
+        // by the next segment's start (the first one ends apart, by the same roots).
+        let p = path(&[
+            (0.0, [0.5, 0.5], [1.0, 0.0], [0.0, 0.0]),
+            (0.25, [0.75, 0.5], [1.0, 0.0], [0.0, 0.0]),
+        ]);
+        let hit = first_wall_contact(&p, 0.25, &unit_box(), f64::INFINITY);
+        assert_eq!(hit, Some((0.25, 0, Side::High)));
     }
 
     #[test]
