@@ -4,8 +4,9 @@ batches, path batches, scenes, a calendar's construction and ``simulate``.
 Each call runs in a child process that sends itself SIGINT half a second in; uninterrupted,
 each would run for seconds to minutes here (measured on this project's 2-core machine: the
 scene over 12,000 clustered balls about 17 s, the calendar of 10⁶ friction balls 3 s, the
-batches 2–3 s), so a ``KeyboardInterrupt`` that comes soon after the signal comes from the
-call stopping, not from its end."""
+batches 2–3 s; the parallel calls on two threads, as here, whatever the cores), so a
+``KeyboardInterrupt`` that comes soon after the signal comes from the call stopping, not
+from its end."""
 
 import os
 import subprocess
@@ -27,7 +28,7 @@ CALLS = {
         "n = 2_000_000\n"
         "pa, pb = rng.uniform(-1, 1, (n, 2)), rng.uniform(-1, 1, (n, 2))\n"
         "va, vb = rng.normal(size=(n, 2)) * 5e118, rng.normal(size=(n, 2)) * 5e118",
-        "bc.collision_times(pa, va, 1409.0, pb, vb, 1409.0, 0.03)",
+        "bc.collision_times(pa, va, 1409.0, pb, vb, 1409.0, 0.03, num_threads=2)",
     ),
     "path_collision_times": (
         "n = 2_000_000\n"
@@ -35,11 +36,11 @@ CALLS = {
         "pa, pb = rng.uniform(-1, 1, (n, 1, 2)), rng.uniform(-1, 1, (n, 1, 2))\n"
         "va, vb = rng.normal(size=(n, 1, 2)) * 5e118, rng.normal(size=(n, 1, 2)) * 5e118\n"
         "acc = rng.normal(size=(n, 1, 2)) * 1409.0",
-        "bc.path_collision_times(start, pa, va, acc, start, pb, vb, -acc, 0.03)",
+        "bc.path_collision_times(start, pa, va, acc, start, pb, vb, -acc, 0.03, num_threads=2)",
     ),
     "first_contacts": (
         "pos = rng.uniform(0, 1e-3, (12_000, 2))\nvel = rng.normal(size=(12_000, 2))",
-        "bc.first_contacts(pos, vel, 0.0, 1e-6)",
+        "bc.first_contacts(pos, vel, 0.0, 1e-6, num_threads=2)",
     ),
     "CollisionSchedule.from_balls": (
         "pos = rng.uniform(0, 1, (1_000_000, 2))\nvel = rng.normal(size=(1_000_000, 2))",
