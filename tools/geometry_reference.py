@@ -127,10 +127,8 @@ import argparse
 import math
 import os
 import random
-import statistics
 import sys
 import time
-from collections import Counter
 from dataclasses import dataclass, field
 from multiprocessing import Pool
 
@@ -139,23 +137,23 @@ from mpmath import mp, mpf
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from collision_reference import (
-    bracket_root,
     fmt,
     fmt_floor,
     mp_to_float,
     padd,
-    pderiv,
     peval,
     pmul,
     pscale,
     ptrim,
-    root_bound,
-    roots_in,
 )
+
+# The window scan, the answer's record and the summary are path_reference's: geometry's
+# windows hold the same sign runs of an exact polynomial.
 from path_reference import (
     BALL_R,
     MPath,
     Path,
+    Result,
     Vec,
     advance,
     airborne_path,
@@ -171,6 +169,8 @@ from path_reference import (
     rand_vec,
     random_path,
     scale_path,
+    scan_window,
+    summarize,
     table_point,
     translate,
     vadd,
@@ -487,53 +487,9 @@ def windows(problem: Problem) -> list[Window]:
     return out
 
 
-def scan_window(w: Window) -> None:
-    """Fill the sign runs and interior critical points of one window."""
-    c = w.coeffs
-    if len(c) <= 1:
-        w.runs = [(mpf(0), w.sign(mpf(0)))]
-        w.constant = True
-        return
-    dc = ptrim(pderiv(c))
-    if w.hi == INF:
-        bound = root_bound(c)
-        if len(dc) > 1:
-            bound = max(bound, root_bound(dc))
-        h = bound + 1
-    else:
-        h = w.hi - w.lo
-    crit = roots_in(dc, mpf(0), h)
-    pts = [mpf(0), *crit, h]
-    vals = [peval(c, x) for x in pts]
-    signs = [w.sign(x, v) for x, v in zip(pts, vals)]
-    runs = []
-    for i in range(len(pts) - 1):
-        s0, s1 = signs[i], signs[i + 1]
-        if s0 * s1 < 0:
-            root = bracket_root(c, dc, pts[i], pts[i + 1], vals[i], vals[i + 1])
-            runs.append((pts[i], s0))
-            runs.append((root, s1))
-        else:
-            runs.append((pts[i], s0 if s0 != 0 else s1))
-    w.runs = runs
-    w.crits = crit
-
-
 # ---------------------------------------------------------------------------
 # The reference answer
 # ---------------------------------------------------------------------------
-
-
-@dataclass
-class Result:
-    """Reference answer for one case."""
-
-    t: mpf
-    t_unbounded: mpf
-    floor: mpf
-    ambiguous: bool
-    kind: str
-    reasons: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -1519,40 +1475,6 @@ def header(seed: int, n: int) -> list[str]:
         "#   (3 significant digits; 0 for a miss); ambiguous = 1: within 1e-9 relative (or 4",
         "#   roundings) of a graze, a segment's end, touching tangentially at the start, t_max.",
     ]
-
-
-def summarize(rows: list[tuple[Case, Result]]) -> str:
-    """Per-category counts, hits, ambiguous, and the floors of the hits."""
-    stats: dict[str, Counter] = {}
-    floors: dict[str, list[float]] = {}
-    for case, res in rows:
-        c = stats.setdefault(case.category, Counter())
-        c["n"] += 1
-        c["hit"] += res.t < INF
-        c["amb"] += res.ambiguous
-        c[res.kind] += res.t < INF
-        if 0 < abs(res.t) < INF and res.floor < INF:
-            rel = mp_to_float(res.floor) / max(abs(mp_to_float(res.t)), 1e-300)
-            floors.setdefault(case.category, []).append(rel)
-    lines = [
-        f"{'category':14s} {'n':>6s} {'hits':>6s} {'jump':>5s} {'t_from':>6s} {'ambig':>6s}"
-        f" {'floor/t median':>15s} {'max':>9s}"
-    ]
-    total: Counter = Counter()
-    for name, c in stats.items():
-        total.update(c)
-        fl = floors.get(name, [])
-        med = f"{statistics.median(fl):.2e}" if fl else "-"
-        top = f"{max(fl):.2e}" if fl else "-"
-        lines.append(
-            f"{name:14s} {c['n']:6d} {c['hit']:6d} {c['jump']:5d} {c['t_from']:6d} "
-            f"{c['amb']:6d} {med:>15s} {top:>9s}"
-        )
-    lines.append(
-        f"{'total':14s} {total['n']:6d} {total['hit']:6d} {total['jump']:5d} "
-        f"{total['t_from']:6d} {total['amb']:6d}"
-    )
-    return "\n".join(lines)
 
 
 def main(argv: list[str] | None = None) -> int:
