@@ -355,15 +355,19 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
         PairSearch::AllPairs
     };
     let serial = n < PARALLEL_FROM || options.threads == Threads::AtMost(NonZeroUsize::MIN);
-    // Each pair first looks at the caller's flag (a relaxed load): once it is set, the pairs
-    // left find nothing and the call fails below.
+    // Each row first looks at the caller's flag: once it is set, the rows left find nothing
+    // and the call fails below.
     let interrupt = Interrupt::current();
-    let kernel = |i: usize, j: usize| interrupt.check().ok().and_then(|()| kernel(i, j));
+    let running = || interrupt.check().is_ok();
     let run = || -> Vec<Hit> {
         match search {
             PairSearch::AllPairs => {
-                let row =
-                    |i: usize| -> Vec<Hit> { (i + 1..n).filter_map(|j| kernel(i, j)).collect() };
+                let row = |i: usize| -> Vec<Hit> {
+                    if !running() {
+                        return Vec::new();
+                    }
+                    (i + 1..n).filter_map(|j| kernel(i, j)).collect()
+                };
                 if serial {
                     (0..n).flat_map(row).collect()
                 } else {
@@ -374,7 +378,9 @@ fn hits(balls: &[Ball], radii: &[f64], options: &SceneOptions) -> Result<Vec<Hit
                 let sweep = Sweep::new(balls, radii, t_max, !serial);
                 let row = |rank: usize| -> Vec<Hit> {
                     let mut out = Vec::new();
-                    sweep.for_each_after(rank, |i, j| out.extend(kernel(i, j)));
+                    if running() {
+                        sweep.for_each_after(rank, |i, j| out.extend(kernel(i, j)));
+                    }
                     out
                 };
                 // A box crossing several strips has several ranks.

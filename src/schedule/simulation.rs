@@ -203,6 +203,9 @@ pub fn simulate_observed(
     let mut last_event = vec![f64::NEG_INFINITY; n];
     // The pairs that collided at the current instant (see `Run::collide`).
     let mut instant_pairs: Vec<[usize; 2]> = Vec::new();
+    // The balls whose velocity an event changed, whose pairs of the instant are followed up
+    // (kept from event to event: no allocation per event).
+    let mut moved: Vec<usize> = Vec::new();
     let mut end = 0.0;
     let mut stopped = false;
     let run = Run {
@@ -221,11 +224,12 @@ pub fn simulate_observed(
             instant_pairs.clear();
         }
         end = t;
-        let mut moved = match event {
+        let (i, j) = match event {
             Event::Collision(c) => {
                 run.collide(&mut calendar, &mut last_event, [c.i, c.j], t, false)?;
                 instant_pairs.push([c.i, c.j]);
-                vec![c.i, c.j]
+                moved.extend([c.i, c.j]);
+                (c.i, Some(c.j))
             }
             Event::Wall(w) => {
                 last_event[w.ball] = t;
@@ -240,41 +244,30 @@ pub fn simulate_observed(
                     balls[w.ball].friction(),
                 )];
                 calendar.update_balls(&[w.ball], t, &new)?;
-                vec![w.ball]
+                moved.push(w.ball);
+                (w.ball, None)
             }
         };
-        let (i, j) = match event {
-            Event::Collision(c) => (c.i, Some(c.j)),
-            Event::Wall(w) => (w.ball, None),
+        let mut log = |events: &mut Vec<LoggedEvent>, i: usize, j: Option<usize>| {
+            events.push(LoggedEvent { time: t, i, j });
+            at_this_instant += 1;
+            check_progress(at_this_instant, most_at_one_instant, t, i, j)
         };
-        events.push(LoggedEvent { time: t, i, j });
-        at_this_instant += 1;
-        check_progress(at_this_instant, most_at_one_instant, t, i, j)?;
+        log(&mut events, i, j)?;
         // The follow-ups at this instant of every ball whose velocity changed.
         while let Some(x) = moved.pop() {
-            let partners: Vec<usize> = instant_pairs
-                .iter()
-                .filter_map(|&[p, q]| (p == x).then_some(q).or((q == x).then_some(p)))
-                .collect();
-            for y in partners {
+            for &[p, q] in &instant_pairs {
+                let y = match x {
+                    _ if p == x => q,
+                    _ if q == x => p,
+                    _ => continue,
+                };
                 if events.len() >= max_events {
                     break 'events;
                 }
                 let pair = [x.min(y), x.max(y)];
                 if run.collide(&mut calendar, &mut last_event, pair, t, true)? {
-                    events.push(LoggedEvent {
-                        time: t,
-                        i: pair[0],
-                        j: Some(pair[1]),
-                    });
-                    at_this_instant += 1;
-                    check_progress(
-                        at_this_instant,
-                        most_at_one_instant,
-                        t,
-                        pair[0],
-                        Some(pair[1]),
-                    )?;
+                    log(&mut events, pair[0], Some(pair[1]))?;
                     moved.extend(pair);
                 }
             }
