@@ -1,0 +1,187 @@
+//! A scene's static objects together: [`Table`], the kinds of object ([`ObjectKind`]) and a
+//! ball's contact with one of them ([`ObjectContact`]).
+
+use nalgebra::Vector2;
+
+use super::shapes::{Circle, LineSegment, Plane, Target};
+use crate::path::Segment;
+
+/// The kind of a static object, with its number (the Python layer's `SEGMENT`, `CIRCLE`,
+/// `TARGET`, `PLANE`): the order in which contacts at one time are reported.
+///
+/// ```
+/// use ballcollide::geometry::ObjectKind;
+/// assert_eq!(ObjectKind::Target.code(), 2);
+/// assert!(ObjectKind::Segment < ObjectKind::Plane);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum ObjectKind {
+    /// A [`LineSegment`] (`0`).
+    Segment,
+    /// A [`Circle`] (`1`).
+    Circle,
+    /// A [`Target`] (`2`).
+    Target,
+    /// A [`Plane`] (`3`).
+    Plane,
+}
+
+impl ObjectKind {
+    /// Every kind, in order.
+    pub const ALL: [Self; 4] = [Self::Segment, Self::Circle, Self::Target, Self::Plane];
+
+    /// The kind's number (example: [`ObjectKind`]).
+    pub const fn code(self) -> u8 {
+        self as u8
+    }
+}
+
+/// A ball's first contact with one object of a [`Table`]: when, the object's kind and its
+/// index among the objects of that kind.
+///
+/// Contacts are ordered by time, then kind ([`ObjectKind`]'s order), then index.
+///
+/// ```
+/// use ballcollide::geometry::{ObjectContact, ObjectKind};
+/// let a = ObjectContact { time: 1.0, kind: ObjectKind::Segment, index: 3 };
+/// let b = ObjectContact { time: 1.0, kind: ObjectKind::Circle, index: 0 };
+/// assert!(a.before(&b));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ObjectContact {
+    /// When the ball starts to touch the object (absolute).
+    pub time: f64,
+    /// The object's kind.
+    pub kind: ObjectKind,
+    /// The object's index among the table's objects of its kind.
+    pub index: usize,
+}
+
+impl ObjectContact {
+    /// Whether `self` comes before `other`: by time, then kind, then index (example:
+    /// [`ObjectContact`]).
+    pub fn before(&self, other: &Self) -> bool {
+        (self.time, self.kind, self.index) < (other.time, other.kind, other.index)
+    }
+}
+
+/// The static objects of a scene: a pool table's cushions and jaws (segments), the jaws'
+/// rounded tips (circles), its pockets (targets) and its bed (a plane); a curling sheet's or a
+/// silo's walls. Objects are numbered within their kind, in the order given.
+///
+/// In 3-D a segment is the vertical wall over its line: its contact is that of the centre's
+/// `(x, y)`; circles and targets are spheres, planes planes.
+///
+/// ```
+/// use ballcollide::geometry::{Circle, LineSegment, SegmentSide, Table, Target};
+/// use nalgebra::Vector2;
+///
+/// let cushion = LineSegment::new(Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0), SegmentSide::Left)?;
+/// let pocket = Target::new(Vector2::new(-0.05, -0.05), 0.06)?;
+/// let table = Table { segments: vec![cushion], targets: vec![pocket], ..Default::default() };
+/// assert_eq!(table.len(), 2);
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Table<const D: usize> {
+    /// Straight segments, each touched from its side.
+    pub segments: Vec<LineSegment>,
+    /// Circles (a jaw's tip, a segment's rounded end), touched from outside.
+    pub circles: Vec<Circle<D>>,
+    /// Targets (pockets): a ball whose centre enters one is captured.
+    pub targets: Vec<Target<D>>,
+    /// Planes, touched from the side their normal points to.
+    pub planes: Vec<Plane<D>>,
+}
+
+impl<const D: usize> Default for Table<D> {
+    fn default() -> Self {
+        Self {
+            segments: Vec::new(),
+            circles: Vec::new(),
+            targets: Vec::new(),
+            planes: Vec::new(),
+        }
+    }
+}
+
+impl<const D: usize> Table<D> {
+    /// How many objects the table has, of every kind (example: [`Table`]).
+    pub fn len(&self) -> usize {
+        self.segments.len() + self.circles.len() + self.targets.len() + self.planes.len()
+    }
+
+    /// Whether the table has no object.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// How many objects of `kind` there are.
+    pub fn count(&self, kind: ObjectKind) -> usize {
+        match kind {
+            ObjectKind::Segment => self.segments.len(),
+            ObjectKind::Circle => self.circles.len(),
+            ObjectKind::Target => self.targets.len(),
+            ObjectKind::Plane => self.planes.len(),
+        }
+    }
+
+    /// The box `(lo, hi)` of object `index` of `kind` (`None`: unbounded, a plane), each
+    /// bound rounded outwards; for a segment in 3-D the vertical extent is unbounded.
+    #[allow(dead_code)] // (the calendar's grid, next)
+    pub(crate) fn object_box(
+        &self,
+        kind: ObjectKind,
+        index: usize,
+    ) -> Option<([f64; D], [f64; D])> {
+        let outward = |lo: f64, hi: f64| (lo.next_down(), hi.next_up());
+        match kind {
+            ObjectKind::Segment => {
+                let s = &self.segments[index];
+                let (p, q) = (s.p(), s.q());
+                Some((
+                    std::array::from_fn(|k| {
+                        if k < 2 {
+                            p[k].min(q[k]).next_down()
+                        } else {
+                            f64::NEG_INFINITY
+                        }
+                    }),
+                    std::array::from_fn(|k| {
+                        if k < 2 {
+                            p[k].max(q[k]).next_up()
+                        } else {
+                            f64::INFINITY
+                        }
+                    }),
+                ))
+            }
+            ObjectKind::Circle | ObjectKind::Target => {
+                let (c, rho) = match kind {
+                    ObjectKind::Circle => (self.circles[index].centre(), self.circles[index].rho()),
+                    _ => (self.targets[index].centre(), self.targets[index].rho()),
+                };
+                let lo = std::array::from_fn(|k| outward(c[k] - rho, c[k] + rho).0);
+                let hi = std::array::from_fn(|k| outward(c[k] - rho, c[k] + rho).1);
+                Some((lo, hi))
+            }
+            ObjectKind::Plane => None,
+        }
+    }
+}
+
+/// A path's segments in the plane of a [`LineSegment`]: their `(x, y)` components (in 2-D a
+/// copy), written over `out`.
+pub(crate) fn planar<const D: usize>(segments: &[Segment<D>], out: &mut Vec<Segment<2>>) {
+    // (`D < 2` has no plane: its one axis and 0.)
+    let xy = |v: &nalgebra::SVector<f64, D>| Vector2::new(v[0], v.get(1).copied().unwrap_or(0.0));
+    out.clear();
+    out.extend(segments.iter().map(|s| {
+        Segment::new(
+            s.start,
+            xy(&s.position),
+            xy(&s.velocity),
+            xy(&s.acceleration),
+        )
+    }));
+}
