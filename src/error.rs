@@ -79,6 +79,16 @@ pub enum InputErrorKind {
         /// The sum of the two radii.
         contact: f64,
     },
+    /// A ball that overlaps an object of the table (or lies in a target) at the start of a
+    /// simulation.
+    OverlapsObject {
+        /// The object's kind.
+        kind: crate::geometry::ObjectKind,
+        /// The object's index among its kind.
+        index: usize,
+        /// How far the centre is from the object (for a target, from its centre).
+        distance: f64,
+    },
     /// A ball that overlaps a wall of the box, or lies outside it, at the start of a
     /// simulation.
     OutsideBox {
@@ -144,6 +154,7 @@ impl InputErrorKind {
             Self::Interrupted => "interrupted",
             Self::EmptyBox { .. } => "empty_box",
             Self::Overlap { .. } => "overlap",
+            Self::OverlapsObject { .. } => "overlaps_object",
             Self::OutsideBox { .. } => "outside_box",
             Self::WiderThanBox { .. } => "wider_than_box",
             Self::NoProgress { .. } => "no_progress",
@@ -181,7 +192,9 @@ impl InputErrorKind {
             Self::RepeatedIndex(i) => Some(i as f64),
             Self::EmptyBox { lo, .. } => Some(lo),
             Self::WiderThanBox { width, .. } => Some(width),
-            Self::Overlap { distance, .. } => Some(distance),
+            Self::Overlap { distance, .. } | Self::OverlapsObject { distance, .. } => {
+                Some(distance)
+            }
             Self::LengthMismatch { found, .. } => Some(found as f64),
             Self::NoProgress { time, .. } => Some(time),
             Self::NoSegments
@@ -393,6 +406,16 @@ impl fmt::Display for InputErrorKind {
                  less than the sum of their radii {}",
                 Brief(distance),
                 Brief(contact)
+            ),
+            Self::OverlapsObject {
+                kind,
+                index,
+                distance,
+            } => write!(
+                f,
+                "the ball overlaps {} {index} of the table at the start: its centre is {} from it",
+                kind.name(),
+                Brief(distance)
             ),
             Self::OutsideBox { axis } => write!(
                 f,

@@ -761,6 +761,7 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<schedule::CollisionSchedule>()?;
     m.add("Event", schedule::event_type(py)?)?;
     m.add("Simulation", schedule::simulation_type(py)?)?;
+    schedule::add_kinds(m)?;
     for f in public {
         // Their public home, as numpy's functions are `numpy`'s: reprs, pickles and doctest
         // find them there.

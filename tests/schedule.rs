@@ -9,9 +9,13 @@
 #[path = "support/cases.rs"]
 mod cases;
 
+use ballcollide::geometry::{
+    Circle, LineSegment, ObjectKind, Plane, SegmentSide, Table, Target, path_table_contact,
+};
 use ballcollide::path::{Path, Segment};
 use ballcollide::schedule::{
-    Collision, CollisionSchedule, Event, FrictionPath, ScheduleOptions, Side, WallContact, Walls,
+    Collision, CollisionSchedule, Event, FrictionPath, ObjectEvent, ScheduleOptions, Side,
+    Transition, WallContact, Walls,
 };
 use ballcollide::{Ball, CollisionOptions, InputErrorKind, path_collision_time};
 use nalgebra::{SVector, Vector2};
@@ -114,12 +118,53 @@ impl Draw {
     }
 }
 
+impl Draw {
+    /// A random table in the scene's square `[0, size]^D`: a few objects of every kind.
+    fn table<const D: usize>(&mut self) -> Table<D> {
+        let size = self.size;
+        let mut table = Table::default();
+        for _ in 0..self.rng.below(6) {
+            let p: SVector<f64, D> = self.vector(0.0, size);
+            let q: SVector<f64, D> = self.vector(0.0, size);
+            let side = SegmentSide::from_sign(self.rng.below(3) as i64 - 1).expect("a side");
+            if let Ok(s) =
+                LineSegment::new(Vector2::new(p[0], p[1]), Vector2::new(q[0], q[1]), side)
+            {
+                table.segments.push(s);
+            }
+        }
+        for _ in 0..self.rng.below(4) {
+            let rho = if self.rng.below(3) == 0 {
+                0.0
+            } else {
+                self.number(0.0, 0.5)
+            };
+            table
+                .circles
+                .push(Circle::new(self.vector(0.0, size), rho).expect("a circle"));
+        }
+        for _ in 0..self.rng.below(3) {
+            let rho = self.number(0.125, 0.5).max(0.125);
+            table
+                .targets
+                .push(Target::new(self.vector(0.0, size), rho).expect("a target"));
+        }
+        for _ in 0..self.rng.below(2) {
+            let n: SVector<f64, D> = self.vector(-1.0, 1.0);
+            if let Ok(plane) = Plane::new(self.vector(0.0, size), n) {
+                table.planes.push(plane);
+            }
+        }
+        table
+    }
+}
+
 /// The brute-force answer: every pair recomputed.
 fn brute_collision<const D: usize>(s: &CollisionSchedule<D>) -> Option<Collision> {
     let options = CollisionOptions { t_max: s.t_max() };
     let mut best: Option<Collision> = None;
-    for i in 0..s.len() {
-        for j in i + 1..s.len() {
+    for i in (0..s.len()).filter(|&i| s.in_play(i)) {
+        for j in (i + 1..s.len()).filter(|&j| s.in_play(j)) {
             let r = s.radius(i) + s.radius(j);
             let t = path_collision_time(s.path(i), s.path(j), r, &options).expect("valid");
             if let Some(t) = t.filter(|&t| t >= s.time()) {
@@ -137,7 +182,7 @@ fn brute_collision<const D: usize>(s: &CollisionSchedule<D>) -> Option<Collision
 fn brute_wall<const D: usize>(s: &CollisionSchedule<D>) -> Option<WallContact> {
     let walls = s.walls()?;
     let mut best: Option<WallContact> = None;
-    for ball in 0..s.len() {
+    for ball in (0..s.len()).filter(|&i| s.in_play(i)) {
         let hit = walls
             .first_contact(s.path(ball), s.radius(ball), s.t_max())
             .expect("valid");
@@ -153,6 +198,76 @@ fn brute_wall<const D: usize>(s: &CollisionSchedule<D>) -> Option<WallContact> {
         }
     }
     best
+}
+
+/// The brute-force object contact: every ball against every object, each object on its own
+/// (a table of one), contacts at or after the current time, in the order of `Event`.
+fn brute_object<const D: usize>(s: &CollisionSchedule<D>) -> Option<ObjectEvent> {
+    let table = s.table();
+    let options = CollisionOptions { t_max: s.t_max() };
+    let mut best: Option<ObjectEvent> = None;
+    for ball in (0..s.len()).filter(|&i| s.in_play(i)) {
+        for kind in ObjectKind::ALL {
+            for index in 0..table.count(kind) {
+                let mut one = Table::default();
+                match kind {
+                    ObjectKind::Segment => one.segments.push(table.segments[index]),
+                    ObjectKind::Circle => one.circles.push(table.circles[index]),
+                    ObjectKind::Target => one.targets.push(table.targets[index]),
+                    ObjectKind::Plane => one.planes.push(table.planes[index]),
+                }
+                let hit = path_table_contact(s.path(ball), &one, s.radius(ball), &options)
+                    .expect("valid");
+                // Strictly earlier only: balls, kinds and indices come in order.
+                if let Some(c) = hit.filter(|c| c.time >= s.time())
+                    && best.is_none_or(|b| c.time < b.time)
+                {
+                    best = Some(ObjectEvent {
+                        time: c.time,
+                        ball,
+                        kind,
+                        index,
+                    });
+                }
+            }
+        }
+    }
+    best
+}
+
+/// The brute-force transition: every ball's next segment start at or after the current time.
+fn brute_transition<const D: usize>(s: &CollisionSchedule<D>) -> Option<Transition> {
+    let mut best: Option<Transition> = None;
+    for ball in (0..s.len()).filter(|&i| s.in_play(i)) {
+        let next = s
+            .path(ball)
+            .segments()
+            .iter()
+            .enumerate()
+            .skip(1)
+            .find(|(_, x)| x.start >= s.time());
+        if let Some((segment, x)) = next.filter(|(_, x)| x.start < s.t_max())
+            && best.is_none_or(|b| x.start < b.time)
+        {
+            best = Some(Transition {
+                time: x.start,
+                ball,
+                segment,
+            });
+        }
+    }
+    best
+}
+
+/// An event's place in `Event`'s order, written out here on its own.
+fn order(e: &Event) -> (u64, usize, u8, usize, usize) {
+    let bits = |t: f64| t.to_bits();
+    match *e {
+        Event::Transition(t) => (bits(t.time), t.ball, 0, t.segment, 0),
+        Event::Wall(w) => (bits(w.time), w.ball, 1, w.axis, w.side as usize),
+        Event::Object(o) => (bits(o.time), o.ball, 2, o.kind as usize, o.index),
+        Event::Collision(c) => (bits(c.time), c.i, 3, c.j, 0),
+    }
 }
 
 fn bits_c(c: Option<Collision>) -> Option<(u64, usize, usize)> {
@@ -171,12 +286,23 @@ fn check<const D: usize>(s: &mut CollisionSchedule<D>) -> Option<Event> {
     let wall = brute_wall(s);
     assert_eq!(s.next_wall_contact(), wall);
     let event = s.next_event();
-    let expected = match (expected, wall) {
-        (Some(c), Some(w)) if (w.time, w.ball) <= (c.time, c.i) => Some(Event::Wall(w)),
-        (Some(c), _) => Some(Event::Collision(c)),
-        (None, w) => w.map(Event::Wall),
-    };
-    assert_eq!(event, expected);
+    // (Times are ≥ 0 here: their bits order as they do.)
+    let transitions = s.transitions();
+    let expected = [
+        expected.map(Event::Collision),
+        wall.map(Event::Wall),
+        brute_object(s).map(Event::Object),
+        brute_transition(s)
+            .filter(|_| transitions)
+            .map(Event::Transition),
+    ]
+    .into_iter()
+    .flatten()
+    .min_by_key(order);
+    assert_eq!(event, expected, "next_event at {}", s.time());
+    if let Some(e) = event {
+        SEEN.with(|seen| seen.borrow_mut()[order(&e).2 as usize] += 1);
+    }
     event
 }
 
@@ -218,11 +344,14 @@ fn refused_updates_change_nothing<const D: usize>(s: &mut CollisionSchedule<D>, 
 }
 
 /// A random scene and a long random sequence of events and updates, checked throughout.
+#[allow(clippy::too_many_arguments)]
 fn run<const D: usize>(
     seed: u64,
     numbers: Numbers,
     n: usize,
     walls: bool,
+    table: bool,
+    transitions: bool,
     t_max: f64,
     steps: usize,
 ) {
@@ -235,7 +364,17 @@ fn run<const D: usize>(
     let paths: Vec<Path<D>> = (0..n).map(|_| draw.path(0.0, None)).collect();
     let radii: Vec<f64> = (0..n).map(|_| draw.number(0.125, 0.5).max(0.125)).collect();
     let walls = walls.then(|| Walls::new([-0.5; D], [size + 0.5; D]).expect("a box"));
-    let options = ScheduleOptions { walls, t_max };
+    let table = if table {
+        draw.table()
+    } else {
+        Table::default()
+    };
+    let options = ScheduleOptions {
+        walls,
+        table,
+        transitions,
+        t_max,
+    };
     let mut s = CollisionSchedule::new(paths, &radii, options).expect("valid");
     play(&mut s, &mut draw, steps);
 }
@@ -249,6 +388,14 @@ fn play<const D: usize>(s: &mut CollisionSchedule<D>, draw: &mut Draw, steps: us
         if n > 0 && step % 7 == 3 {
             refused_updates_change_nothing(s, draw);
         }
+        if n > 0 && step % 11 == 5 {
+            // Out of play (a capture), until an update brings it back.
+            let i = draw.rng.below(n as u64) as usize;
+            s.retire(i).expect("in range");
+            assert!(!s.in_play(i));
+            assert!(s.retire(n).is_err());
+            check(s);
+        }
         let roll = draw.rng.below(10);
         let now = s.time();
         let (indices, t): (Vec<usize>, f64) = match event {
@@ -258,6 +405,8 @@ fn play<const D: usize>(s: &mut CollisionSchedule<D>, draw: &mut Draw, steps: us
                 match e {
                     Event::Collision(c) => (vec![c.i, c.j], t),
                     Event::Wall(w) => (vec![w.ball], t),
+                    Event::Object(o) => (vec![o.ball], t),
+                    Event::Transition(x) => (vec![x.ball], t),
                 }
             }
             // Skip ahead, past events perhaps, and change a few balls.
@@ -310,7 +459,7 @@ proptest! {
         horizon in prop_oneof![Just(f64::INFINITY), 1.0f64..20.0],
     ) {
         let numbers = if dyadic { Numbers::Dyadic } else { Numbers::Full };
-        run::<2>(seed, numbers, n, walls, horizon, 60);
+        run::<2>(seed, numbers, n, walls, false, false, horizon, 60);
     }
 
     #[test]
@@ -321,8 +470,59 @@ proptest! {
         walls in any::<bool>(),
     ) {
         let numbers = if dyadic { Numbers::Dyadic } else { Numbers::Full };
-        run::<3>(seed, numbers, n, walls, f64::INFINITY, 40);
+        run::<3>(seed, numbers, n, walls, false, false, f64::INFINITY, 40);
     }
+}
+
+thread_local! {
+    /// How many events of each class (transition, wall, object, collision) `check` has seen on
+    /// this thread: the table tests show that they meet every kind.
+    static SEEN: std::cell::RefCell<[usize; 4]> = const { std::cell::RefCell::new([0; 4]) };
+}
+
+/// The calendar with a table (and transitions, half the time) against brute force, over
+/// `cases` random scenes of dimension `D`; every class of event must come up.
+fn tables_are_brute_force<const D: usize>(cases: u64, seed: u64, most: u64) {
+    SEEN.with(|seen| *seen.borrow_mut() = [0; 4]);
+    let mut rng = Rng(seed);
+    for case in 0..cases {
+        let numbers = if case % 2 == 0 {
+            Numbers::Dyadic
+        } else {
+            Numbers::Full
+        };
+        let n = rng.below(most) as usize;
+        let horizon = if case % 3 == 0 {
+            rng.uniform(1.0, 20.0)
+        } else {
+            f64::INFINITY
+        };
+        run::<D>(
+            rng.below(u64::MAX),
+            numbers,
+            n,
+            case % 4 != 1,
+            true,
+            case % 2 == 1,
+            horizon,
+            60,
+        );
+    }
+    let seen = SEEN.with(|seen| *seen.borrow());
+    assert!(
+        seen.iter().all(|&k| k >= 5),
+        "events seen by class: {seen:?}"
+    );
+}
+
+#[test]
+fn the_calendar_with_a_table_and_transitions_is_brute_force_in_2d() {
+    tables_are_brute_force::<2>(cases::cases(48).into(), 0x7AB1_E002, 24);
+}
+
+#[test]
+fn the_calendar_with_a_table_and_transitions_is_brute_force_in_3d() {
+    tables_are_brute_force::<3>(cases::cases(32).into(), 0x7AB1_E003, 16);
 }
 
 /// Grids that collapse to one cell with more balls than the calendar keeps bits for (64): a
@@ -349,7 +549,7 @@ fn grids_of_one_cell_with_many_balls_are_brute_force() {
         let walls = Walls::new([-1e308; 2], [1e308; 2]).expect("a box");
         let options = ScheduleOptions {
             walls: Some(walls),
-            t_max: f64::INFINITY,
+            ..Default::default()
         };
         let mut s = CollisionSchedule::new(paths, &radii, options).expect("valid");
         play(&mut s, &mut draw, steps);
@@ -411,6 +611,7 @@ fn a_dense_frictionless_box_is_brute_force_over_a_thousand_events() {
                     s.update(&[c.i, c.j], vec![line(pi, vi - dv), line(pj, vj + dv)])
                         .expect("valid");
                 }
+                Event::Object(_) | Event::Transition(_) => unreachable!("no table, no transitions"),
             }
         }
     }

@@ -36,6 +36,7 @@ fn run(
         restitution,
         t_end,
         max_events: Some(2_000_000),
+        ..Default::default()
     };
     simulate(balls, radii, walls, &options).expect("a valid simulation")
 }
@@ -404,6 +405,7 @@ fn a_ball_faster_than_float_time_resolves_is_stopped_inside_its_box() {
         restitution: case.restitution,
         t_end: case.t_end,
         max_events: None,
+        ..Default::default()
     };
     let e = simulate(&balls, &case.radii, walls, &options).expect_err("no progress");
     assert!(

@@ -17,10 +17,17 @@ _Path = tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike] | list
 _I64Array = npt.NDArray[np.int64]
 
 __all__ = [
+    "BALL",
+    "CIRCLE",
     "CollisionSchedule",
     "Event",
     "InputError",
+    "PLANE",
+    "SEGMENT",
     "Simulation",
+    "TARGET",
+    "TRANSITION",
+    "WALL",
     "__version__",
     "collision_time",
     "collision_times",
@@ -149,12 +156,22 @@ class _ProgressBar(Protocol):
     def set_postfix(self, *args: Any, **kwargs: Any) -> Any: ...
     def close(self) -> Any: ...
 
+SEGMENT: Final[int]
+CIRCLE: Final[int]
+TARGET: Final[int]
+PLANE: Final[int]
+BALL: Final[int]
+WALL: Final[int]
+TRANSITION: Final[int]
+
 class Event(NamedTuple):
     time: float
     i: int
     j: int
-    axis: int
-    side: int
+    kind: int
+    # The object's index, as the contract names it: it shadows `tuple.index` (the method stays
+    # reachable as `tuple.index(event, value)`).
+    index: int  # type: ignore[assignment]
 
 class Simulation(NamedTuple):
     times: _F64Array

@@ -12,6 +12,7 @@
 //! | `path_circle_contact.rs` | [`path_circle_contact`]: the pair search of two paths against the circle's centre at rest, at contact distance `ρ + r` |
 //! | `path_target_contact.rs` | [`path_target_contact`]: the same at contact distance `ρ` (the centre enters the disc) |
 //! | `table.rs` | [`Table`]: a scene's objects together; [`ObjectKind`], [`ObjectContact`] |
+//! | `pool_table.rs` | [`PoolTable`]: a pool table's rails, jaws, jaw tips and pockets as a [`Table`] |
 //! | `path_table_contact.rs` | [`path_table_contact`]: the earliest contact with any object of a table (each by its own query); the calendar asks the same function per object |
 //!
 //! Every query answers with the first contact's absolute time, as
@@ -44,6 +45,7 @@ mod path_plane_contact;
 mod path_segment_contact;
 mod path_table_contact;
 mod path_target_contact;
+mod pool_table;
 mod shapes;
 pub(crate) mod signed_distance;
 mod table;
@@ -52,8 +54,8 @@ pub use path_circle_contact::path_circle_contact;
 pub use path_plane_contact::path_plane_contact;
 pub use path_segment_contact::path_segment_contact;
 pub use path_table_contact::path_table_contact;
-#[allow(unused_imports)] // (the batch and the calendar, next)
-pub(crate) use path_table_contact::{TablePath, first_table_contact, object_contact};
+pub(crate) use path_table_contact::{TablePath, object_contact};
 pub use path_target_contact::path_target_contact;
+pub use pool_table::PoolTable;
 pub use shapes::{Circle, LineSegment, Plane, SegmentSide, Target};
 pub use table::{ObjectContact, ObjectKind, Table};

@@ -34,6 +34,17 @@ impl ObjectKind {
     pub const fn code(self) -> u8 {
         self as u8
     }
+
+    /// The kind's name, as the Python layer's constant is named but in lower case:
+    /// `"segment"`, `"circle"`, `"target"`, `"plane"`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Segment => "segment",
+            Self::Circle => "circle",
+            Self::Target => "target",
+            Self::Plane => "plane",
+        }
+    }
 }
 
 /// A ball's first contact with one object of a [`Table`]: when, the object's kind and its
@@ -128,7 +139,6 @@ impl<const D: usize> Table<D> {
 
     /// The box `(lo, hi)` of object `index` of `kind` (`None`: unbounded, a plane), each
     /// bound rounded outwards; for a segment in 3-D the vertical extent is unbounded.
-    #[allow(dead_code)] // (the calendar's grid, next)
     pub(crate) fn object_box(
         &self,
         kind: ObjectKind,
@@ -184,4 +194,73 @@ pub(crate) fn planar<const D: usize>(segments: &[Segment<D>], out: &mut Vec<Segm
             xy(&s.acceleration),
         )
     }));
+}
+
+impl Table<2> {
+    /// The distance of a centre at `x` from object `index` of `kind` where a ball there would
+    /// touch it: for a segment, from its line, if the foot lies on it and the side counts
+    /// (else `None`); for a circle, from its rim; for a target, from its centre; for a plane,
+    /// the signed distance (negative behind it).
+    pub(crate) fn distance_to(
+        &self,
+        kind: ObjectKind,
+        index: usize,
+        x: Vector2<f64>,
+    ) -> Option<f64> {
+        match kind {
+            ObjectKind::Segment => {
+                let s = &self.segments[index];
+                let (e, w) = (s.q() - s.p(), x - s.p());
+                let along = w.dot(&e) / e.norm_squared();
+                let d = (e.x * w.y - e.y * w.x) / e.norm();
+                let sign = if d > 0.0 {
+                    1
+                } else if d < 0.0 {
+                    -1
+                } else {
+                    0
+                };
+                ((0.0..=1.0).contains(&along) && s.side().counts(sign)).then_some(d.abs())
+            }
+            ObjectKind::Circle => {
+                let c = &self.circles[index];
+                Some((x - c.centre()).norm() - c.rho())
+            }
+            ObjectKind::Target => Some((x - self.targets[index].centre()).norm()),
+            ObjectKind::Plane => {
+                let p = &self.planes[index];
+                Some(p.normal().dot(&(x - p.point())) / p.normal().norm())
+            }
+        }
+    }
+
+    /// The unit normal of object `index` of `kind` (not a target) at a ball's centre `x` in
+    /// contact: from the contact point towards the centre.
+    pub(crate) fn normal_at(
+        &self,
+        kind: ObjectKind,
+        index: usize,
+        x: Vector2<f64>,
+    ) -> Vector2<f64> {
+        let unit = |v: Vector2<f64>| {
+            let length = v.norm();
+            if length > 0.0 && length.is_finite() {
+                v / length
+            } else {
+                Vector2::zeros()
+            }
+        };
+        match kind {
+            ObjectKind::Segment => {
+                let s = &self.segments[index];
+                let e = s.q() - s.p();
+                let left = Vector2::new(-e.y, e.x);
+                let n = unit(left);
+                if n.dot(&(x - s.p())) >= 0.0 { n } else { -n }
+            }
+            ObjectKind::Circle => unit(x - self.circles[index].centre()),
+            ObjectKind::Target => Vector2::zeros(),
+            ObjectKind::Plane => unit(self.planes[index].normal()),
+        }
+    }
 }

@@ -23,6 +23,7 @@ use super::read::{self, Given, param, rows};
 use crate::Path;
 use crate::batch::PerPair;
 use crate::error::{InputError, InputErrorKind};
+use crate::geometry::ObjectKind;
 use crate::scene;
 use crate::schedule::{
     Collision, CollisionSchedule as Core, Event as CoreEvent, ScheduleOptions, Side as WallSide,
@@ -115,12 +116,17 @@ pub(super) struct CollisionSchedule {
     inner: Inner,
 }
 
-/// An event of a :class:`CollisionSchedule`: ``(time, i, j, axis, side)``.
-///
-/// A collision of balls ``i < j``: ``axis = -1``, ``side = 0``. Ball ``i`` reaching a wall:
-/// ``j = -1``, ``axis`` the wall's axis (0 for x), ``side`` ``-1`` for the low wall and
-/// ``+1`` for the high one. No event: ``(inf, -1, -1, -1, 0)``.
+/// An event of a :class:`CollisionSchedule`: ``(time, i, j, kind, index)`` (see
+/// [`EVENT_DOC`]).
 static EVENT: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
+
+/// The :class:`Event` type's documentation.
+const EVENT_DOC: &str = "An event of a CollisionSchedule: (time, i, j, kind, index).\n\n\
+    kind says what ball i meets, as one of the module's constants: BALL (j the other ball, \
+    i < j; index -1), WALL (index the wall: 2*axis for the low wall of an axis, 2*axis + 1 \
+    for the high one), SEGMENT, CIRCLE, TARGET, PLANE (index the object's, among those of \
+    its kind), TRANSITION (ball i's path starts its segment index). j is -1 unless kind is \
+    BALL. No event: (inf, -1, -1, -1, -1).";
 
 /// The :class:`Event` named tuple type.
 pub(super) fn event_type(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
@@ -128,12 +134,26 @@ pub(super) fn event_type(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
         py,
         &EVENT,
         "Event",
-        &["time", "i", "j", "axis", "side"],
-        "An event of a CollisionSchedule: (time, i, j, axis, side).\n\n\
-         A collision of balls i < j: axis = -1, side = 0. Ball i reaching a wall: j = -1, \
-         axis the wall's axis (0 for x), side -1 for the low wall and +1 for the high one. \
-         No event: (inf, -1, -1, -1, 0).",
+        &["time", "i", "j", "kind", "index"],
+        EVENT_DOC,
     )
+}
+
+/// The event kinds of :class:`Event` and of the geometry calls, as module constants: the
+/// objects' by [`ObjectKind::code`], then `BALL`, `WALL` and `TRANSITION`.
+pub(super) const BALL: i64 = 4;
+pub(super) const WALL: i64 = 5;
+pub(super) const TRANSITION: i64 = 6;
+
+/// Adds the kinds' constants to the module.
+pub(super) fn add_kinds(m: &Bound<'_, pyo3::types::PyModule>) -> PyResult<()> {
+    for kind in ObjectKind::ALL {
+        m.add(kind.name().to_uppercase(), i64::from(kind.code()))?;
+    }
+    m.add("BALL", BALL)?;
+    m.add("WALL", WALL)?;
+    m.add("TRANSITION", TRANSITION)?;
+    Ok(())
 }
 
 /// The :class:`Simulation` named tuple type (what :func:`simulate` returns).
@@ -173,15 +193,26 @@ fn named_tuple<'py>(
 /// The event as the named tuple.
 fn event_tuple<'py>(py: Python<'py>, event: Option<CoreEvent>) -> PyResult<Bound<'py, PyAny>> {
     let fields: (f64, i64, i64, i64, i64) = match event {
-        None => (f64::INFINITY, -1, -1, -1, 0),
-        Some(CoreEvent::Collision(c)) => (c.time, index_i64(c.i), index_i64(c.j), -1, 0),
+        None => (f64::INFINITY, -1, -1, -1, -1),
+        Some(CoreEvent::Collision(c)) => (c.time, index_i64(c.i), index_i64(c.j), BALL, -1),
         Some(CoreEvent::Wall(w)) => {
-            let side = match w.side {
-                WallSide::Low => -1,
-                WallSide::High => 1,
-            };
-            (w.time, index_i64(w.ball), -1, index_i64(w.axis), side)
+            let face = 2 * w.axis + usize::from(w.side == WallSide::High);
+            (w.time, index_i64(w.ball), -1, WALL, index_i64(face))
         }
+        Some(CoreEvent::Object(o)) => (
+            o.time,
+            index_i64(o.ball),
+            -1,
+            i64::from(o.kind.code()),
+            index_i64(o.index),
+        ),
+        Some(CoreEvent::Transition(t)) => (
+            t.time,
+            index_i64(t.ball),
+            -1,
+            TRANSITION,
+            index_i64(t.segment),
+        ),
     };
     event_type(py)?.call1(fields)
 }
@@ -366,6 +397,7 @@ impl CollisionSchedule {
         let options = ScheduleOptions {
             walls: walls_of::<2>(py, r#box)?,
             t_max,
+            ..Default::default()
         };
         let core = run(py, calendar_kernel(balls.len()), || {
             Core::from_balls(&balls, &radii, t, options)
@@ -546,7 +578,11 @@ fn build<const D: usize>(
     t_max: f64,
 ) -> PyResult<Core<D>> {
     let paths = paths_of::<D>(paths).map_err(|e| from_core(py, e))?;
-    let options = ScheduleOptions { walls, t_max };
+    let options = ScheduleOptions {
+        walls,
+        t_max,
+        ..Default::default()
+    };
     run(py, calendar_kernel(paths.len()), || {
         Core::new(paths, radii, options)
     })
@@ -738,6 +774,7 @@ pub(super) fn simulate<'py>(
         restitution: restitution.number_or("restitution", 1.0)?,
         t_end: t_end.number_or("t_end", f64::INFINITY)?,
         max_events: read::count("max_events", max_events)?,
+        ..Default::default()
     };
     let bar = progress_bar(py, progress, options.max_events)?;
     // Ctrl-C and the progress bar: the run looks for Python's signals, and moves the bar on,

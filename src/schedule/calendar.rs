@@ -1,14 +1,16 @@
 //! [`CollisionSchedule`]: N balls on paths, a current time, and their next collision, kept up
 //! to date as paths change.
 
-use super::event::{Collision, Event, WallContact};
+use super::event::{Collision, Event, ObjectEvent, Transition, WallContact};
 use super::grid::{CellRange, Grid};
+use super::objects::{ObjectCounts, Objects};
 use super::queue::{Key, Queue};
 use super::reach::{Reach, reach};
 use super::walls::{Side, Walls, first_wall_contact};
 use crate::collision::path_bounds::PathBounds;
 use crate::collision::path_contact::{first_bounded_contact_one, first_path_contact};
 use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon, finite};
+use crate::geometry::{ObjectKind, Table};
 use crate::interrupt::Interrupt;
 use crate::motion::Ball;
 use crate::path::{Path, Segment};
@@ -21,10 +23,16 @@ use crate::path::{Path, Segment};
 /// assert_eq!(options.t_max, f64::INFINITY);
 /// # Ok::<(), ballcollide::InputError>(())
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct ScheduleOptions<const D: usize> {
     /// The walls of an axis-aligned box, if ball–wall contacts are wanted.
     pub walls: Option<Walls<D>>,
+    /// Static objects (cushions, jaws, pockets, planes), if ball–object contacts are wanted.
+    /// Default none.
+    pub table: Table<D>,
+    /// Whether [`next_event`](CollisionSchedule::next_event) reports each ball's segment
+    /// starts ([`Transition`]). Default `false`.
+    pub transitions: bool,
     /// The horizon: a contact at `t ≥ t_max` is none. Default `∞`.
     pub t_max: f64,
 }
@@ -33,6 +41,8 @@ impl<const D: usize> Default for ScheduleOptions<D> {
     fn default() -> Self {
         Self {
             walls: None,
+            table: Table::default(),
+            transitions: false,
             t_max: f64::INFINITY,
         }
     }
@@ -118,6 +128,14 @@ pub struct CollisionSchedule<const D: usize> {
     cell: f64,
     pairs: Queue<PairKey>,
     wall_contacts: Queue<WallKey>,
+    /// The table's objects, and each ball's pending object contact (or its re-check; empty
+    /// without objects).
+    objects: Objects<D>,
+    object_contacts: Queue<ObjectKey>,
+    /// Each ball's next segment start (empty unless transitions are asked for).
+    transitions: Option<Queue<TransitionKey>>,
+    /// Per ball, whether it is out of play ([`retire`](Self::retire)); empty until a ball is.
+    retired: Vec<bool>,
     /// Scratch: a mark per ball, to list each candidate partner once.
     marks: Vec<u32>,
     mark: u32,
@@ -252,6 +270,72 @@ impl Key for WallKey {
     }
 }
 
+/// A ball's pending object key: its earliest object contact among the objects its box
+/// meets, or its re-check (at its horizon, when that comes first: an object beyond its box
+/// may come before the contact found), or nothing.
+#[derive(Clone, Copy, Debug)]
+struct ObjectKey {
+    time: f64,
+    kind: ObjectKeyKind,
+    index: u32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum ObjectKeyKind {
+    /// Its box must be moved on (comes first at equal times: it may reveal a contact).
+    Recheck,
+    Contact(ObjectKind),
+    Nothing,
+}
+
+impl ObjectKey {
+    const NOTHING: Self = Self {
+        time: f64::INFINITY,
+        kind: ObjectKeyKind::Nothing,
+        index: 0,
+    };
+}
+
+impl Key for ObjectKey {
+    fn before(&self, other: &Self) -> bool {
+        // Equal times: re-checks first; then (contacts) the lower ball, as the queue breaks
+        // ties to the left, and each ball holds one key.
+        let (earlier, later) = (self.time < other.time, self.time > other.time);
+        if earlier | later {
+            return earlier;
+        }
+        (self.kind == ObjectKeyKind::Recheck) & (other.kind != ObjectKeyKind::Recheck)
+    }
+
+    fn time(&self) -> f64 {
+        self.time
+    }
+}
+
+/// A ball's next segment start (`time = ∞` for none).
+#[derive(Clone, Copy, Debug)]
+struct TransitionKey {
+    time: f64,
+    segment: u32,
+}
+
+impl TransitionKey {
+    const NOTHING: Self = Self {
+        time: f64::INFINITY,
+        segment: 0,
+    };
+}
+
+impl Key for TransitionKey {
+    fn before(&self, other: &Self) -> bool {
+        self.time < other.time
+    }
+
+    fn time(&self) -> f64 {
+        self.time
+    }
+}
+
 impl<const D: usize> CollisionSchedule<D> {
     /// The calendar of balls on `paths` with `radii` (one per ball), at the earliest first
     /// start of the paths (`0` without balls).
@@ -294,6 +378,12 @@ impl<const D: usize> CollisionSchedule<D> {
             .unwrap_or(0.0)
             + 0.0;
         let cell = cell_size(&paths, radii, options.walls.as_ref());
+        let no_objects = options.table.is_empty();
+        let objects = Objects::new(options.table, cell);
+        let object_keys = if no_objects { 0 } else { n };
+        let transitions = options
+            .transitions
+            .then(|| Queue::new(vec![TransitionKey::NOTHING; n]));
         let (lo, hi) = region(&paths, options.walls.as_ref(), cell);
         let grid = Grid::new(lo, hi, cell, n);
         // A grid of one cell lists each ball once: no marks needed.
@@ -311,6 +401,10 @@ impl<const D: usize> CollisionSchedule<D> {
             horizons: Vec::with_capacity(n),
             pairs: Queue::new(vec![PairKey::NOTHING; n]),
             wall_contacts: Queue::new(vec![WallKey::NOTHING; n]),
+            objects,
+            object_contacts: Queue::new(vec![ObjectKey::NOTHING; object_keys]),
+            transitions,
+            retired: Vec::new(),
             marks,
             updated: Vec::new(),
             refreshed: Vec::new(),
@@ -366,6 +460,8 @@ impl<const D: usize> CollisionSchedule<D> {
             }
             schedule.refresh(i, None);
             schedule.refresh_wall(i);
+            schedule.refresh_object(i);
+            schedule.refresh_transition(i);
         }
         Ok(schedule)
     }
@@ -426,6 +522,15 @@ impl<const D: usize> CollisionSchedule<D> {
         &self.paths[i]
     }
 
+    /// Whether ball `i` is in play: not taken out by [`retire`](Self::retire) since its last
+    /// update.
+    ///
+    /// # Panics
+    /// If `i` is out of range.
+    pub fn in_play(&self, i: usize) -> bool {
+        !self.retired.get(i).is_some_and(|&r| r)
+    }
+
     /// Ball `i`'s radius.
     ///
     /// # Panics
@@ -437,6 +542,23 @@ impl<const D: usize> CollisionSchedule<D> {
     /// The walls, if any.
     pub fn walls(&self) -> Option<&Walls<D>> {
         self.walls.as_ref()
+    }
+
+    /// The table's objects (empty without any).
+    pub fn table(&self) -> &Table<D> {
+        self.objects.table()
+    }
+
+    /// How many ball–object pairs the object searches have left out and asked so far (all
+    /// zero without objects): what the object grid saves.
+    pub fn object_counts(&self) -> ObjectCounts {
+        self.objects.counts
+    }
+
+    /// Whether [`next_event`](Self::next_event) reports transitions
+    /// ([`ScheduleOptions::transitions`]).
+    pub fn transitions(&self) -> bool {
+        self.transitions.is_some()
     }
 
     /// The horizon.
@@ -510,28 +632,153 @@ impl<const D: usize> CollisionSchedule<D> {
         }
     }
 
-    /// The earliest event from the current time on: a collision ([`next_collision`]) or a
-    /// wall contact ([`next_wall_contact`]), in the order of [`Event`].
+    /// The earliest object contact from the current time on (`None` without objects), its
+    /// upkeep stopping at `limit` as [`next_collision_until`](Self::next_collision_until)'s.
+    fn next_object_until(&mut self, limit: f64) -> Option<ObjectEvent> {
+        loop {
+            let ball = self.object_contacts.first()?;
+            let key = *self.object_contacts.key(ball);
+            if key.time > limit {
+                return None;
+            }
+            match key.kind {
+                ObjectKeyKind::Nothing => return None,
+                ObjectKeyKind::Recheck => self.recheck_objects(ball),
+                ObjectKeyKind::Contact(_) if key.time < self.time => self.refresh_object(ball),
+                ObjectKeyKind::Contact(kind) => {
+                    return Some(ObjectEvent {
+                        time: key.time,
+                        ball,
+                        kind,
+                        index: key.index as usize,
+                    });
+                }
+            }
+        }
+    }
+
+    /// The earliest segment start from the current time on (`None` unless transitions are
+    /// asked for).
+    fn next_transition(&mut self) -> Option<Transition> {
+        loop {
+            let queue = self.transitions.as_ref()?;
+            let ball = queue.first()?;
+            let key = *queue.key(ball);
+            if key.time == f64::INFINITY {
+                return None;
+            }
+            if key.time < self.time {
+                // Gone past without an update: the next start from the current time.
+                self.refresh_transition(ball);
+                continue;
+            }
+            return Some(Transition {
+                time: key.time,
+                ball,
+                segment: key.segment as usize,
+            });
+        }
+    }
+
+    /// The earliest event from the current time on, in the order of [`Event`]: a collision
+    /// ([`next_collision`]), a wall contact ([`next_wall_contact`]), a contact with an object
+    /// of the table (each ball's first contact with each object, searched from its path's
+    /// first start and kept if at or after the current time, as for a pair of balls), or, if
+    /// asked for, a ball's next segment start.
+    ///
+    /// An event stays the next one until the calendar moves past it: update the balls it
+    /// involves (for a transition, with the ball's path from then on, if nothing else
+    /// changes).
     ///
     /// ```
+    /// use ballcollide::geometry::{LineSegment, ObjectKind, SegmentSide, Table};
     /// use ballcollide::path::{Path2, Segment2};
-    /// use ballcollide::schedule::{CollisionSchedule, Event, ScheduleOptions, Side, WallContact, Walls};
+    /// use ballcollide::schedule::{CollisionSchedule, Event, ObjectEvent, ScheduleOptions, Side, WallContact, Walls};
     /// use nalgebra::Vector2;
     ///
     /// let path = Path2::new(vec![Segment2::new(0.0, Vector2::new(0.5, 0.5), Vector2::new(1.0, 0.0), Vector2::zeros())])?;
     /// let options = ScheduleOptions { walls: Some(Walls::new([0.0, 0.0], [1.0, 1.0])?), ..Default::default() };
-    /// let mut s = CollisionSchedule::new(vec![path], &[0.25], options)?;
+    /// let mut s = CollisionSchedule::new(vec![path.clone()], &[0.25], options)?;
     /// let wall = WallContact { time: 0.25, ball: 0, axis: 0, side: Side::High };
     /// assert_eq!(s.next_event(), Some(Event::Wall(wall)));
+    ///
+    /// // A cushion across the ball's way at x = 0.6, played from the ball's side.
+    /// let cushion = LineSegment::new(Vector2::new(0.6, 0.0), Vector2::new(0.6, 1.0), SegmentSide::Left)?;
+    /// let table = Table { segments: vec![cushion], ..Default::default() };
+    /// let mut s = CollisionSchedule::new(vec![path], &[0.05], ScheduleOptions { table, ..Default::default() })?;
+    /// let Some(Event::Object(hit)) = s.next_event() else { panic!("the cushion") };
+    /// assert_eq!((hit.ball, hit.kind, hit.index), (0, ObjectKind::Segment, 0));
+    /// assert!((hit.time - 0.05).abs() < 1e-15);
     /// # Ok::<(), ballcollide::InputError>(())
     /// ```
     ///
     /// [`next_collision`]: Self::next_collision
     /// [`next_wall_contact`]: Self::next_wall_contact
     pub fn next_event(&mut self) -> Option<Event> {
+        let transition = self.next_transition();
         let wall = self.next_wall_contact();
-        let collision = self.next_collision_until(wall.map_or(f64::INFINITY, |w| w.time));
-        Event::first_of(collision, wall)
+        let time = |t: Option<f64>| t.unwrap_or(f64::INFINITY);
+        let limit = time(transition.map(|t| t.time)).min(time(wall.map(|w| w.time)));
+        let object = self.next_object_until(limit);
+        let limit = limit.min(time(object.map(|o| o.time)));
+        let collision = self.next_collision_until(limit);
+        Event::first_of([
+            transition.map(Event::Transition),
+            wall.map(Event::Wall),
+            object.map(Event::Object),
+            collision.map(Event::Collision),
+        ])
+    }
+
+    /// Takes ball `i` out of play (a ball captured by a pocket): it has no event from now on,
+    /// and no ball meets it, until it is given a path again by an update.
+    ///
+    /// # Errors
+    /// An [`InputError`] naming `i` if it is out of range; the calendar is then unchanged.
+    ///
+    /// ```
+    /// use ballcollide::Ball;
+    /// use ballcollide::schedule::{Collision, CollisionSchedule, ScheduleOptions};
+    /// use nalgebra::Vector2;
+    ///
+    /// let balls = [Ball::new(Vector2::zeros(), Vector2::new(1.0, 0.0), 0.0)?, Ball::at_rest(Vector2::new(2.0, 0.0))?, Ball::at_rest(Vector2::new(4.0, 0.0))?];
+    /// let mut s = CollisionSchedule::from_balls(&balls, &[0.5; 3], 0.0, ScheduleOptions::default())?;
+    /// assert_eq!(s.next_collision(), Some(Collision { time: 1.0, i: 0, j: 1 }));
+    /// s.retire(1)?;
+    /// assert_eq!(s.next_collision(), Some(Collision { time: 3.0, i: 0, j: 2 }));
+    /// # Ok::<(), ballcollide::InputError>(())
+    /// ```
+    pub fn retire(&mut self, i: usize) -> Result<(), InputError> {
+        if i >= self.len() {
+            let kind = InputErrorKind::IndexOutOfRange {
+                index: i64::try_from(i).unwrap_or(i64::MAX),
+                len: self.len(),
+            };
+            return Err(InputError::new("i", kind));
+        }
+        // A box of NaN: it overlaps no other (not even an unbounded one), so no refresh
+        // finds the ball (it stays listed in its cells until its next update moves it).
+        self.boxes[i] = Reach {
+            lo: [f64::NAN; D],
+            hi: [f64::NAN; D],
+        };
+        if self.retired.is_empty() {
+            self.retired = vec![false; self.len()];
+        }
+        self.retired[i] = true;
+        self.horizons[i] = f64::INFINITY;
+        // Its partners' keys with it are stale from now on.
+        self.versions[i] = self.versions[i].wrapping_add(1);
+        self.bump_clock(i);
+        self.pairs.set(i, PairKey::NOTHING);
+        self.wall_contacts.set(i, WallKey::NOTHING);
+        if !self.objects.table().is_empty() {
+            self.object_contacts.set(i, ObjectKey::NOTHING);
+        }
+        if let Some(queue) = &mut self.transitions {
+            queue.set(i, TransitionKey::NOTHING);
+        }
+        Ok(())
     }
 
     /// Replaces the paths of balls `indices` by `paths`, which must all start at one time
@@ -562,6 +809,16 @@ impl<const D: usize> CollisionSchedule<D> {
             *bounds = PathBounds::of(self.paths[i].segments());
         }
         self.versions[i] = self.versions[i].wrapping_add(1);
+        self.bump_clock(i);
+        if let Some(retired) = self.retired.get_mut(i) {
+            *retired = false;
+        }
+        let (reach, horizon) = self.span_box(i, None);
+        self.move_box(i, reach, horizon);
+    }
+
+    /// Stamps ball `i` as changed now (for [`Known::Since`]).
+    fn bump_clock(&mut self, i: usize) {
         if self.clock == u32::MAX {
             // Wrapped: every ball counts as changed since every refresh.
             self.refreshed.fill(0);
@@ -572,8 +829,6 @@ impl<const D: usize> CollisionSchedule<D> {
         if let Some(updated) = self.updated.get_mut(i) {
             *updated = self.clock;
         }
-        let (reach, horizon) = self.span_box(i, None);
-        self.move_box(i, reach, horizon);
     }
 
     /// After the balls `indices` were replaced: their keys.
@@ -590,6 +845,8 @@ impl<const D: usize> CollisionSchedule<D> {
             }
             self.refresh(i, Some(known));
             self.refresh_wall(i);
+            self.refresh_object(i);
+            self.refresh_transition(i);
         }
         self.want = u32::MAX;
     }
@@ -695,17 +952,20 @@ impl<const D: usize> CollisionSchedule<D> {
             + self.ranges.capacity() * size_of::<CellRange<D>>()
             + self.horizons.capacity() * size_of::<f64>()
             + self.marks.capacity() * size_of::<u32>()
+            + self.retired.capacity()
             + self.updated.capacity() * size_of::<u32>()
             + self.refreshed.capacity() * size_of::<u32>()
             + self.searched.capacity() * size_of::<u64>()
             + self.best_times.capacity() * size_of::<f64>()
             + self.candidates.capacity() * size_of::<u32>()
             + self.pairs.heap_bytes()
-            + self.wall_contacts.heap_bytes();
+            + self.wall_contacts.heap_bytes()
+            + self.object_contacts.heap_bytes()
+            + self.transitions.as_ref().map_or(0, Queue::heap_bytes);
         HeapBytes {
             paths,
             per_ball,
-            grid: self.grid.heap_bytes(),
+            grid: self.grid.heap_bytes() + self.objects.heap_bytes(),
         }
     }
 
@@ -896,6 +1156,25 @@ impl<const D: usize> CollisionSchedule<D> {
         if !self.refresh(i, known) {
             self.refresh(i, None);
         }
+        // An object contact found before the old horizon stands (the new box holds the old
+        // one's span from now on); a re-check is done now.
+        let objects = !self.objects.table().is_empty();
+        if objects && self.object_contacts.key(i).kind == ObjectKeyKind::Recheck {
+            self.refresh_object(i);
+        }
+    }
+
+    /// At ball `i`'s horizon, reached first by its object key: as [`recheck`](Self::recheck)
+    /// if its pair key is a re-check too, else its box moved on and both keys recomputed.
+    fn recheck_objects(&mut self, i: usize) {
+        if self.pairs.key(i).kind == Kind::Recheck {
+            self.recheck(i);
+            return;
+        }
+        let (reach, horizon) = self.span_box(i, Some(self.horizons[i]));
+        self.move_box(i, reach, horizon);
+        self.refresh(i, None);
+        self.refresh_object(i);
     }
 
     /// Recomputes ball `i`'s pair key: its earliest collision at or after the current time
@@ -1033,6 +1312,60 @@ impl<const D: usize> CollisionSchedule<D> {
             _ => WallKey::NOTHING,
         };
         self.wall_contacts.set(i, key);
+    }
+
+    /// Recomputes ball `i`'s object key: its earliest object contact at or after the current
+    /// time among the objects its box meets, or its re-check if that may come first.
+    fn refresh_object(&mut self, i: usize) {
+        if self.objects.table().is_empty() {
+            return;
+        }
+        let best = self.objects.first_contact(
+            self.paths[i].segments(),
+            self.radii[i],
+            &self.boxes[i],
+            self.time,
+            self.t_max,
+        );
+        let horizon = self.horizons[i];
+        let key = match best {
+            // Before the horizon: every object touched by then meets the box.
+            Some(c) if c.time < horizon => ObjectKey {
+                time: c.time,
+                kind: ObjectKeyKind::Contact(c.kind),
+                index: c.index as u32,
+            },
+            _ if horizon.is_finite() => ObjectKey {
+                time: horizon,
+                kind: ObjectKeyKind::Recheck,
+                index: 0,
+            },
+            _ => ObjectKey::NOTHING,
+        };
+        self.object_contacts.set(i, key);
+    }
+
+    /// Recomputes ball `i`'s transition key: its path's first segment start after its first
+    /// at or after the current time (and before `t_max`).
+    fn refresh_transition(&mut self, i: usize) {
+        let Some(queue) = &mut self.transitions else {
+            return;
+        };
+        let (time, t_max) = (self.time, self.t_max);
+        let next = self.paths[i]
+            .segments()
+            .iter()
+            .enumerate()
+            .skip(1)
+            .find(|(_, s)| s.start >= time);
+        let key = match next {
+            Some((k, s)) if s.start < t_max => TransitionKey {
+                time: s.start,
+                segment: k as u32,
+            },
+            _ => TransitionKey::NOTHING,
+        };
+        queue.set(i, key);
     }
 }
 

@@ -14,6 +14,7 @@
 //! | incremental broad phase | `grid.rs` | uniform grid of the balls' boxes |
 //! | a ball's box | `reach.rs` | the box a ball covers over a span, with a rounding margin |
 //! | [`Walls`] | `walls.rs` | an axis-aligned box and a ball's first wall contact |
+//! | static objects | `objects.rs` | the table's objects in a grid of their own; a ball's first contact with those its box meets |
 //! | [`Event`] | `event.rs` | what the calendar reports |
 //! | [`simulate`] | `simulation.rs` | an event-driven simulation of friction balls in a box |
 //!
@@ -35,13 +36,15 @@
 mod calendar;
 mod event;
 mod grid;
+mod objects;
 mod queue;
 mod reach;
 mod simulation;
 mod walls;
 
 pub use calendar::{CollisionSchedule, FrictionPath, HeapBytes, ScheduleOptions};
-pub use event::{Collision, Event, WallContact};
+pub use event::{Collision, Event, ObjectEvent, Transition, WallContact};
+pub use objects::ObjectCounts;
 pub use simulation::{
     LoggedEvent, MAX_EVENTS_AT_ONE_INSTANT, Progress, Simulation, SimulationOptions, simulate,
     simulate_observed,

@@ -10,6 +10,11 @@
 //!   and later events at one instant are elastic (see [`restitution_at`]), and a pair that
 //!   a later event of the instant leaves parting too slowly collides again (`Run::collide`);
 //! - a ball touches a wall: its velocity's component normal to the wall is reflected;
+//! - a ball touches a segment, a circle or a plane of the table: its velocity's component
+//!   normal to the object (from the contact point to its centre) is reflected with the
+//!   table's restitution (and made at least `2⁻⁴⁰` of its speed, so that it parts);
+//! - a ball's centre enters a target: the ball is captured, at rest where it entered, and
+//!   takes no further part ([`CollisionSchedule::retire`]);
 //!
 //! and the balls involved get new friction paths from the event's time. It runs until
 //! `t_end`, `max_events` or until no event is left (every ball at rest, or moving away for
@@ -26,6 +31,7 @@ use super::calendar::{CollisionSchedule, ScheduleOptions};
 use super::event::Event;
 use super::walls::{Side, Walls};
 use crate::error::{InputError, InputErrorKind, check_horizon, finite};
+use crate::geometry::{ObjectKind, Table};
 use crate::motion::Ball;
 use nalgebra::Vector2;
 use std::ops::ControlFlow;
@@ -47,6 +53,10 @@ pub struct SimulationOptions {
     pub t_end: f64,
     /// The simulation ends after this many events. Default none.
     pub max_events: Option<usize>,
+    /// The table's objects, besides the box. Default none.
+    pub table: Table<2>,
+    /// The coefficient of restitution of ball–object contacts, in `[0, 1]`. Default 1.
+    pub table_restitution: f64,
 }
 
 impl Default for SimulationOptions {
@@ -56,20 +66,25 @@ impl Default for SimulationOptions {
             restitution: 1.0,
             t_end: f64::INFINITY,
             max_events: None,
+            table: Table::default(),
+            table_restitution: 1.0,
         }
     }
 }
 
 /// One event of a simulation's log: balls `i` and `j` collide at `time`, or ball `i` touches
-/// a wall (`j = None`).
+/// a wall (`j = None`, `object = None`) or an object of the table (`object`: its kind and
+/// index; a target captures the ball).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LoggedEvent {
     /// When.
     pub time: f64,
     /// The (lower) ball.
     pub i: usize,
-    /// The other ball, `None` for a wall.
+    /// The other ball, `None` for a wall or an object.
     pub j: Option<usize>,
+    /// The object, for an object contact.
+    pub object: Option<(ObjectKind, usize)>,
 }
 
 /// What [`simulate`] returns: the event log and the final state.
@@ -81,8 +96,10 @@ pub struct Simulation {
     /// event (`max_events`), or the time every ball is at rest (no event left; `0`, the start,
     /// if some ball moves away for ever).
     pub end: f64,
-    /// The balls at `end`.
+    /// The balls at `end` (a captured ball at rest where it entered its target).
     pub balls: Vec<Ball>,
+    /// Per ball, the target that captured it, if any.
+    pub captured: Vec<Option<usize>>,
     /// Whether the run was stopped by its observer ([`simulate_observed`]) before its end.
     pub stopped: bool,
 }
@@ -186,12 +203,21 @@ pub fn simulate_observed(
     if endless {
         return Err(InputError::new("t_end", InputErrorKind::Endless));
     }
+    let table_restitution = options.table_restitution;
+    if !(0.0..=1.0).contains(&table_restitution) {
+        let kind = InputErrorKind::NotInUnitInterval(table_restitution);
+        return Err(InputError::new("table_restitution", kind));
+    }
     let calendar_options = ScheduleOptions {
         walls: Some(walls),
+        table: options.table.clone(),
         t_max: t_end,
+        ..Default::default()
     };
     let mut calendar = CollisionSchedule::<2>::from_balls(balls, radii, 0.0, calendar_options)?;
     check_start(balls, radii, &walls)?;
+    check_start_on_table(balls, radii, &options.table)?;
+    let mut captured: Vec<Option<usize>> = vec![None; n];
     let mut events = Vec::new();
     let max_events = options.max_events.unwrap_or(usize::MAX);
     let most_at_one_instant = MAX_EVENTS_AT_ONE_INSTANT
@@ -224,13 +250,39 @@ pub fn simulate_observed(
             instant_pairs.clear();
         }
         end = t;
-        let (i, j) = match event {
+        let (i, j, object) = match event {
             Event::Collision(c) => {
                 run.collide(&mut calendar, &mut last_event, [c.i, c.j], t, false)?;
                 instant_pairs.push([c.i, c.j]);
                 moved.extend([c.i, c.j]);
-                (c.i, Some(c.j))
+                (c.i, Some(c.j), None)
             }
+            Event::Object(o) => {
+                last_event[o.ball] = t;
+                let (p, v) = at(&calendar, o.ball, t);
+                let friction = balls[o.ball].friction();
+                if o.kind == ObjectKind::Target {
+                    calendar.update_balls(
+                        &[o.ball],
+                        t,
+                        &[Ball::from_checked(p.into(), [0.0; 2], friction)],
+                    )?;
+                    calendar.retire(o.ball)?;
+                    captured[o.ball] = Some(o.index);
+                } else {
+                    let normal = options.table.normal_at(o.kind, o.index, p);
+                    let v = reflected(v, normal, table_restitution);
+                    calendar.update_balls(
+                        &[o.ball],
+                        t,
+                        &[Ball::from_checked(p.into(), v.into(), friction)],
+                    )?;
+                    moved.push(o.ball);
+                }
+                (o.ball, None, Some((o.kind, o.index)))
+            }
+            // (Not asked for.)
+            Event::Transition(_) => continue,
             Event::Wall(w) => {
                 last_event[w.ball] = t;
                 let (p, mut v) = at(&calendar, w.ball, t);
@@ -245,15 +297,20 @@ pub fn simulate_observed(
                 )];
                 calendar.update_balls(&[w.ball], t, &new)?;
                 moved.push(w.ball);
-                (w.ball, None)
+                (w.ball, None, None)
             }
         };
-        let mut log = |events: &mut Vec<LoggedEvent>, i: usize, j: Option<usize>| {
-            events.push(LoggedEvent { time: t, i, j });
+        let mut log = |events: &mut Vec<LoggedEvent>, i: usize, j: Option<usize>, object| {
+            events.push(LoggedEvent {
+                time: t,
+                i,
+                j,
+                object,
+            });
             at_this_instant += 1;
             check_progress(at_this_instant, most_at_one_instant, t, i, j)
         };
-        log(&mut events, i, j)?;
+        log(&mut events, i, j, object)?;
         // The follow-ups at this instant of every ball whose velocity changed.
         while let Some(x) = moved.pop() {
             for &[p, q] in &instant_pairs {
@@ -262,12 +319,15 @@ pub fn simulate_observed(
                     _ if q == x => p,
                     _ => continue,
                 };
+                if captured[x].is_some() || captured[y].is_some() {
+                    continue;
+                }
                 if events.len() >= max_events {
                     break 'events;
                 }
                 let pair = [x.min(y), x.max(y)];
                 if run.collide(&mut calendar, &mut last_event, pair, t, true)? {
-                    log(&mut events, pair[0], Some(pair[1]))?;
+                    log(&mut events, pair[0], Some(pair[1]), None)?;
                     moved.extend(pair);
                 }
             }
@@ -302,6 +362,7 @@ pub fn simulate_observed(
         events,
         end,
         balls,
+        captured,
         stopped,
     })
 }
@@ -370,6 +431,20 @@ fn check_progress(
         events,
     };
     Err(InputError::new("pos", kind).at(i))
+}
+
+/// A velocity `v` after a contact with an object whose unit normal at the contact is `n`
+/// (towards the ball): an approaching normal component reflected with restitution `e`, and
+/// the normal speed made at least [`ROUNDING`] of the speed, so that the ball parts whatever
+/// the rounding of its position (at `e = 0` it would slide along the object, touching it).
+fn reflected(v: Vector2<f64>, n: Vector2<f64>, e: f64) -> Vector2<f64> {
+    let normal = v.dot(&n);
+    let target = (-e * normal).max(ROUNDING * v.norm());
+    if normal >= target {
+        v
+    } else {
+        v + n * (target - normal)
+    }
 }
 
 /// The restitution of a collision at `t` of two balls whose last events came at `last`:
@@ -543,6 +618,32 @@ fn check_start(balls: &[Ball], radii: &[f64], walls: &Walls<2>) -> Result<(), In
         }
         None => Ok(()),
     }
+}
+
+/// The start of a simulation on a table: no ball overlaps a segment, a circle or a plane, or
+/// lies in a target, beyond [`START_TOLERANCE`] of its radius (touching is fine).
+fn check_start_on_table(balls: &[Ball], radii: &[f64], table: &Table<2>) -> Result<(), InputError> {
+    for (i, (ball, &r)) in balls.iter().zip(radii).enumerate() {
+        let p = ball.position();
+        for kind in ObjectKind::ALL {
+            for index in 0..table.count(kind) {
+                let (distance, least) = match table.distance_to(kind, index, p) {
+                    Some(d) if kind == ObjectKind::Target => (d, table.targets[index].rho()),
+                    Some(d) => (d, r * (1.0 - START_TOLERANCE)),
+                    None => continue,
+                };
+                if distance < least {
+                    let kind = InputErrorKind::OverlapsObject {
+                        kind,
+                        index,
+                        distance,
+                    };
+                    return Err(InputError::new("pos", kind).at(i));
+                }
+            }
+        }
+    }
+    Ok(())
 }
 
 /// How deep an overlap at the start may be, relative to the radii: rounding in the caller's

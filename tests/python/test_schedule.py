@@ -233,11 +233,12 @@ def test_an_event_is_a_named_tuple_and_walls_come_first_at_ties() -> None:
     )
     e = s.next_event()
     assert isinstance(e, bc.Event)
-    assert e == bc.Event(0.25, 0, -1, 0, 1)
-    assert (e.time, e.i, e.j, e.axis, e.side) == (0.25, 0, -1, 0, 1)
+    # The high wall of axis 0: index 2·0 + 1.
+    assert e == bc.Event(0.25, 0, -1, bc.WALL, 1)
+    assert (e.time, e.i, e.j, e.kind, e.index) == (0.25, 0, -1, bc.WALL, 1)
     assert s.next_collision() == (0.25, 1, 2)
     empty = bc.CollisionSchedule.from_balls(np.zeros((0, 2)), np.zeros((0, 2)), 0.0, 1.0)
-    assert empty.next_event() == (math.inf, -1, -1, -1, 0)
+    assert empty.next_event() == (math.inf, -1, -1, -1, -1)
     assert empty.next_collision() == (math.inf, -1, -1)
 
 
@@ -313,7 +314,7 @@ def test_wall_contacts_match_mpmath(seed: int) -> None:
         floor = eps * (float(size) / max(float(slope), 1e-300) + abs(float(t_ref)))
         if float(slope) < 1e-6:
             continue  # grazing: either answer is acceptable
-        assert (e.i, e.j, e.axis, e.side) == (0, -1, axis, side)
+        assert (e.i, e.j, e.kind, e.index) == (0, -1, bc.WALL, 2 * axis + (side > 0))
         assert abs(mpmath.mpf(e.time) - t_ref) <= 8 * floor, (segments, r, e, t_ref)
         checked += 1
     assert checked > 150

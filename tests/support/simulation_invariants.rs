@@ -82,6 +82,7 @@ fn run(
         restitution: case.restitution,
         t_end,
         max_events: Some(MAX_EVENTS),
+        ..Default::default()
     };
     simulate(balls, &case.radii, walls, &options).map_err(|e| format!("{e}"))
 }
@@ -160,6 +161,7 @@ pub fn simulation(case: &SimulationCase) -> Result<(), String> {
         restitution: case.restitution,
         t_end: case.t_end,
         max_events: Some(MAX_EVENTS),
+        ..Default::default()
     };
     let full = match simulate(&balls, &case.radii, walls, &options) {
         Ok(run) => run,
