@@ -29,6 +29,7 @@
 
 use super::calendar::{CollisionSchedule, ScheduleOptions};
 use super::event::Event;
+use super::objects::ObjectCounts;
 use super::walls::{Side, Walls};
 use crate::error::{InputError, InputErrorKind, check_horizon, finite};
 use crate::geometry::{ObjectKind, Table};
@@ -100,6 +101,9 @@ pub struct Simulation {
     pub balls: Vec<Ball>,
     /// Per ball, the target that captured it, if any.
     pub captured: Vec<Option<usize>>,
+    /// How many ball–object pairs the calendar's object grid left out and asked
+    /// ([`CollisionSchedule::object_counts`]).
+    pub object_counts: ObjectCounts,
     /// Whether the run was stopped by its observer ([`simulate_observed`]) before its end.
     pub stopped: bool,
 }
@@ -363,6 +367,7 @@ pub fn simulate_observed(
         end,
         balls,
         captured,
+        object_counts: calendar.object_counts(),
         stopped,
     })
 }
