@@ -1165,7 +1165,11 @@ impl<const D: usize> CollisionSchedule<D> {
     }
 
     /// At ball `i`'s horizon, reached first by its object key: as [`recheck`](Self::recheck)
-    /// if its pair key is a re-check too, else its box moved on and both keys recomputed.
+    /// if its pair key is a re-check too, else its box moved on and its object key
+    /// recomputed. Its pair key stands: a collision found before the old horizon is still its
+    /// earliest (every ball it meets before then was a candidate), and a stale one, a lower
+    /// bound, is recomputed with the new box when it comes first; the other balls meet the
+    /// larger box at their own refreshes.
     fn recheck_objects(&mut self, i: usize) {
         if self.pairs.key(i).kind == Kind::Recheck {
             self.recheck(i);
@@ -1173,7 +1177,6 @@ impl<const D: usize> CollisionSchedule<D> {
         }
         let (reach, horizon) = self.span_box(i, Some(self.horizons[i]));
         self.move_box(i, reach, horizon);
-        self.refresh(i, None);
         self.refresh_object(i);
     }
 
