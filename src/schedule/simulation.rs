@@ -74,8 +74,8 @@ impl Default for SimulationOptions {
 }
 
 /// One event of a simulation's log: balls `i` and `j` collide at `time`, or ball `i` touches
-/// a wall (`j = None`, `object = None`) or an object of the table (`object`: its kind and
-/// index; a target captures the ball).
+/// a wall (`j = None`, `wall`: its axis and side) or an object of the table (`j = None`,
+/// `object`: its kind and index; a target captures the ball).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LoggedEvent {
     /// When.
@@ -84,6 +84,8 @@ pub struct LoggedEvent {
     pub i: usize,
     /// The other ball, `None` for a wall or an object.
     pub j: Option<usize>,
+    /// The wall, for a wall contact: its axis and side.
+    pub wall: Option<(usize, Side)>,
     /// The object, for an object contact.
     pub object: Option<(ObjectKind, usize)>,
 }
@@ -254,12 +256,12 @@ pub fn simulate_observed(
             instant_pairs.clear();
         }
         end = t;
-        let (i, j, object) = match event {
+        let (i, j, wall, object) = match event {
             Event::Collision(c) => {
                 run.collide(&mut calendar, &mut last_event, [c.i, c.j], t, false)?;
                 instant_pairs.push([c.i, c.j]);
                 moved.extend([c.i, c.j]);
-                (c.i, Some(c.j), None)
+                (c.i, Some(c.j), None, None)
             }
             Event::Object(o) => {
                 last_event[o.ball] = t;
@@ -283,7 +285,7 @@ pub fn simulate_observed(
                     )?;
                     moved.push(o.ball);
                 }
-                (o.ball, None, Some((o.kind, o.index)))
+                (o.ball, None, None, Some((o.kind, o.index)))
             }
             // (Not asked for.)
             Event::Transition(_) => continue,
@@ -301,20 +303,21 @@ pub fn simulate_observed(
                 )];
                 calendar.update_balls(&[w.ball], t, &new)?;
                 moved.push(w.ball);
-                (w.ball, None, None)
+                (w.ball, None, Some((w.axis, w.side)), None)
             }
         };
-        let mut log = |events: &mut Vec<LoggedEvent>, i: usize, j: Option<usize>, object| {
+        let mut log = |events: &mut Vec<LoggedEvent>, i: usize, j: Option<usize>, wall, object| {
             events.push(LoggedEvent {
                 time: t,
                 i,
                 j,
+                wall,
                 object,
             });
             at_this_instant += 1;
             check_progress(at_this_instant, most_at_one_instant, t, i, j)
         };
-        log(&mut events, i, j, object)?;
+        log(&mut events, i, j, wall, object)?;
         // The follow-ups at this instant of every ball whose velocity changed.
         while let Some(x) = moved.pop() {
             for &[p, q] in &instant_pairs {
@@ -331,7 +334,7 @@ pub fn simulate_observed(
                 }
                 let pair = [x.min(y), x.max(y)];
                 if run.collide(&mut calendar, &mut last_event, pair, t, true)? {
-                    log(&mut events, pair[0], Some(pair[1]), None)?;
+                    log(&mut events, pair[0], Some(pair[1]), None, None)?;
                     moved.extend(pair);
                 }
             }
