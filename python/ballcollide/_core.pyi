@@ -2,6 +2,7 @@
 # in src/python.rs and src/python/*.rs (what `help()` shows): the one place the
 # Python API is documented.
 
+from collections.abc import Sequence
 from typing import Any, Final, NamedTuple, Protocol, SupportsFloat, SupportsIndex, final
 
 import numpy as np
@@ -15,8 +16,17 @@ _F64Array = npt.NDArray[np.float64]
 # One path: (start (K,), pos (K, D), vel (K, D), acc (K, D)).
 _Path = tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike] | list[npt.ArrayLike]
 _I64Array = npt.NDArray[np.int64]
+_I8Array = npt.NDArray[np.int8]
+# Static objects (path_geometry_times): an array each, None or [] for none; segment_sides
+# None (both sides), one int for all, or M ints in {-1, 0, 1}.
+_Objects = npt.ArrayLike | None
+_Sides = SupportsIndex | Sequence[SupportsIndex] | npt.NDArray[np.integer[Any]] | None
 
 __all__ = [
+    "CIRCLE",
+    "PLANE",
+    "SEGMENT",
+    "TARGET",
     "CollisionSchedule",
     "Event",
     "InputError",
@@ -29,6 +39,7 @@ __all__ = [
     "pairwise_collision_times",
     "path_collision_time",
     "path_collision_times",
+    "path_geometry_times",
     "path_positions_at",
     "positions_at",
     "real_roots",
@@ -36,6 +47,12 @@ __all__ = [
 ]
 
 __version__: Final[str]
+
+# The kinds of static object (path_geometry_times' `kind`): geometry::ObjectKind::code().
+SEGMENT: Final = 0
+CIRCLE: Final = 1
+TARGET: Final = 2
+PLANE: Final = 3
 
 class InputError(ValueError):
     argument: str
@@ -111,6 +128,22 @@ def path_positions_at(
     num_threads: SupportsIndex | None = None,
     out: _F64Array | None = None,
 ) -> _F64Array: ...
+def path_geometry_times(
+    start: npt.ArrayLike,
+    pos: npt.ArrayLike,
+    vel: npt.ArrayLike,
+    acc: npt.ArrayLike,
+    radius: _PerPair,
+    *,
+    segments: _Objects = None,
+    segment_sides: _Sides = None,
+    circles: _Objects = None,
+    targets: _Objects = None,
+    planes: _Objects = None,
+    t_max: _PerPair = ...,
+    num_threads: SupportsIndex | None = None,
+    out: tuple[_F64Array, _I8Array, _I64Array] | list[Any] | None = None,
+) -> tuple[_F64Array, _I8Array, _I64Array]: ...
 def real_roots(coeffs: npt.ArrayLike) -> _F64Array: ...
 def pairwise_collision_times(
     pos: npt.ArrayLike,

@@ -138,7 +138,10 @@ pub fn path_geometry_times<const D: usize>(
     mut out: ContactColumns<'_>,
     threads: Threads,
 ) -> Result<(), InputError> {
-    let shared = check_path_geometry(paths, radius, t_max, &out)?;
+    let n = out.len();
+    let shared = check_path_geometry(paths, radius, t_max, n)?;
+    check_len("kind", out.kind.len(), n)?;
+    check_len("index", out.index.len(), n)?;
     let size = paths_a_chunk(table.len());
     let mut parts = out.parts(size);
     run_chunks_of(1, &mut parts, threads, |part, one| {
@@ -174,24 +177,21 @@ fn query<const D: usize>(
     Ok(first_table_contact(segments, table, radius, t_max, scratch))
 }
 
-/// The checks of [`path_geometry_times`] that need no query: the rows, 1 or `out.len()` paths,
-/// `radius` and `t_max` of `out.len()` values if per query and valid if shared, the columns of
-/// one length; the broadcast path, read and checked. The Python binding runs them before it
-/// looks at a caller's `out` arrays.
+/// The checks of [`path_geometry_times`] on the inputs that need no query, for `n` queries: the
+/// rows, 1 or `n` paths, `radius` and `t_max` of `n` values if per query and valid if shared;
+/// the broadcast path, read and checked. The Python binding runs them before it looks at a
+/// caller's `out` arrays.
 pub(crate) fn check_path_geometry<const D: usize>(
     paths: &PathRows<'_, D>,
     radius: PerPair<'_>,
     t_max: PerPair<'_>,
-    out: &ContactColumns<'_>,
+    n: usize,
 ) -> Result<Option<Vec<Segment<D>>>, InputError> {
-    let n = out.len();
     check_side(paths, &NAMES_ONE, n)?;
     radius.check_len("radius", n)?;
     t_max.check_len("t_max", n)?;
     radius.check_shared("radius", check_ball_radius)?;
     t_max.check_shared("t_max", check_horizon)?;
-    check_len("kind", out.kind.len(), n)?;
-    check_len("index", out.index.len(), n)?;
     // A broadcast path is a shared value: checked here, even with no query to answer.
     shared_path(paths, &NAMES_ONE)
 }
