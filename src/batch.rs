@@ -5,6 +5,10 @@
 //! pair ([`PerPair`]). Every pair goes through the same validation and the same
 //! [`collision_time`](crate::collision_time) search as a single query, so batch and scalar
 //! answers are identical, and so are the answers for any number of threads.
+//!
+//! Paths go in rows as well (`paths.rs`: [`path_collision_times`], [`path_positions_at`]), and
+//! so do balls on paths against a table of static objects (`path_geometry.rs`:
+//! [`path_geometry_times`], whose answers go into [`ContactColumns`]).
 
 mod first_window_lanes;
 // The generic lanes are built and tested at every level, but the batch runs them nowhere yet
@@ -12,6 +16,7 @@ mod first_window_lanes;
 // intrinsics twin): see `paths::path_chunk_avx2`.
 #[cfg_attr(not(test), allow(dead_code))]
 mod lane_ops;
+mod path_geometry;
 #[cfg_attr(not(test), allow(dead_code))]
 mod path_lanes;
 #[cfg(target_arch = "x86_64")]
@@ -22,6 +27,9 @@ mod window_lanes;
 #[cfg(target_arch = "x86_64")]
 mod window_lanes_avx512;
 
+#[cfg(feature = "python")]
+pub(crate) use path_geometry::check_path_geometry;
+pub use path_geometry::{ContactColumns, path_geometry_times};
 pub use paths::{PathPairs, PathRows, path_collision_times, path_positions_at};
 #[cfg(feature = "python")]
 pub(crate) use paths::{check_path_pairs, check_path_positions};
@@ -777,35 +785,46 @@ fn length_mismatch(argument: &'static str, expected: usize, found: usize) -> Inp
     InputError::new(argument, InputErrorKind::LengthMismatch { expected, found })
 }
 
-/// Runs `work(offset, chunk)` over `out` in chunks, on the requested threads, and returns the
-/// error of the lowest index if any chunk failed (each chunk stops at its first error). Each
-/// chunk first looks at the caller's [`Interrupt`] flag: once it is set, the chunks left fail
-/// with [`InputErrorKind::Interrupted`].
+/// Runs `work(offset, chunk)` over `out` in chunks of [`CHUNK`] ([`run_chunks_of`]).
 fn run_chunks<T: Send>(
     out: &mut [T],
     threads: Threads,
     work: impl Fn(usize, &mut [T]) -> Result<(), InputError> + Sync,
 ) -> Result<(), InputError> {
+    run_chunks_of(CHUNK, out, threads, work)
+}
+
+/// Runs `work(offset, chunk)` over `out` in chunks of `size` (≥ 1) items, on the requested
+/// threads, and returns the error of the lowest index if any chunk failed (each chunk stops at
+/// its first error). Each chunk first looks at the caller's [`Interrupt`] flag: once it is
+/// set, the chunks left fail with [`InputErrorKind::Interrupted`].
+fn run_chunks_of<T: Send>(
+    size: usize,
+    out: &mut [T],
+    threads: Threads,
+    work: impl Fn(usize, &mut [T]) -> Result<(), InputError> + Sync,
+) -> Result<(), InputError> {
+    let size = size.max(1);
     let interrupt = Interrupt::current();
     let work = |offset: usize, out: &mut [T]| {
         interrupt.check()?;
         work(offset, out)
     };
     let parallel = |out: &mut [T]| {
-        out.par_chunks_mut(CHUNK)
+        out.par_chunks_mut(size)
             .enumerate()
-            .map(|(c, chunk)| work(c * CHUNK, chunk))
+            .map(|(c, chunk)| work(c * size, chunk))
             .reduce(|| Ok(()), first_error)
     };
     // On the calling thread: chunk after chunk, each looking at the flag.
     let serial = |out: &mut [T]| {
-        out.chunks_mut(CHUNK)
+        out.chunks_mut(size)
             .enumerate()
-            .try_for_each(|(c, chunk)| work(c * CHUNK, chunk))
+            .try_for_each(|(c, chunk)| work(c * size, chunk))
     };
     match threads {
         // One chunk's worth (or one thread): handing it to a pool would only add a wake-up.
-        _ if out.len() <= CHUNK => work(0, out),
+        _ if out.len() <= size => work(0, out),
         Threads::AtMost(n) if n.get() == 1 => serial(out),
         Threads::All => parallel(out),
         Threads::AtMost(n) => match pool(n.get()) {

@@ -16,11 +16,13 @@
 //! `.argument`, `.index` and `.reason`); what is not made of real numbers raises `TypeError`.
 //! Nothing here panics on any input.
 
+mod geometry;
 mod input_error;
 mod long_call;
 mod paths;
 mod read;
 mod schedule;
+mod table;
 
 use std::cell::Cell;
 use std::num::NonZeroUsize;
@@ -752,6 +754,7 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(paths::path_collision_times, m)?,
         wrap_pyfunction!(paths::path_collision_time, m)?,
         wrap_pyfunction!(paths::path_positions_at, m)?,
+        wrap_pyfunction!(geometry::path_geometry_times, m)?,
         wrap_pyfunction!(real_roots, m)?,
         wrap_pyfunction!(pairwise_collision_times, m)?,
         wrap_pyfunction!(earliest_collision, m)?,

@@ -2,6 +2,7 @@
 # in src/python.rs and src/python/*.rs (what `help()` shows): the one place the
 # Python API is documented.
 
+from collections.abc import Sequence
 from typing import Any, Final, NamedTuple, Protocol, SupportsFloat, SupportsIndex, final
 
 import numpy as np
@@ -15,6 +16,11 @@ _F64Array = npt.NDArray[np.float64]
 # One path: (start (K,), pos (K, D), vel (K, D), acc (K, D)).
 _Path = tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike, npt.ArrayLike] | list[npt.ArrayLike]
 _I64Array = npt.NDArray[np.int64]
+_I8Array = npt.NDArray[np.int8]
+# Static objects (path_geometry_times): an array each, None or [] for none; segment_sides
+# None (both sides), one int for all, or M ints in {-1, 0, 1}.
+_Objects = npt.ArrayLike | None
+_Sides = SupportsIndex | Sequence[SupportsIndex] | npt.NDArray[np.integer[Any]] | None
 
 __all__ = [
     "BALL",
@@ -36,6 +42,7 @@ __all__ = [
     "pairwise_collision_times",
     "path_collision_time",
     "path_collision_times",
+    "path_geometry_times",
     "path_positions_at",
     "positions_at",
     "real_roots",
@@ -43,6 +50,16 @@ __all__ = [
 ]
 
 __version__: Final[str]
+
+# The kinds of static object (path_geometry_times' `kind`, geometry::ObjectKind::code()), and
+# of the calendar's other events (Event.kind).
+SEGMENT: Final = 0
+CIRCLE: Final = 1
+TARGET: Final = 2
+PLANE: Final = 3
+BALL: Final = 4
+WALL: Final = 5
+TRANSITION: Final = 6
 
 class InputError(ValueError):
     argument: str
@@ -118,6 +135,22 @@ def path_positions_at(
     num_threads: SupportsIndex | None = None,
     out: _F64Array | None = None,
 ) -> _F64Array: ...
+def path_geometry_times(
+    start: npt.ArrayLike,
+    pos: npt.ArrayLike,
+    vel: npt.ArrayLike,
+    acc: npt.ArrayLike,
+    radius: _PerPair,
+    *,
+    segments: _Objects = None,
+    segment_sides: _Sides = None,
+    circles: _Objects = None,
+    targets: _Objects = None,
+    planes: _Objects = None,
+    t_max: _PerPair = ...,
+    num_threads: SupportsIndex | None = None,
+    out: tuple[_F64Array, _I8Array, _I64Array] | list[Any] | None = None,
+) -> tuple[_F64Array, _I8Array, _I64Array]: ...
 def real_roots(coeffs: npt.ArrayLike) -> _F64Array: ...
 def pairwise_collision_times(
     pos: npt.ArrayLike,
@@ -155,14 +188,6 @@ class _ProgressBar(Protocol):
     def update(self, n: int = ..., /) -> Any: ...
     def set_postfix(self, *args: Any, **kwargs: Any) -> Any: ...
     def close(self) -> Any: ...
-
-SEGMENT: Final[int]
-CIRCLE: Final[int]
-TARGET: Final[int]
-PLANE: Final[int]
-BALL: Final[int]
-WALL: Final[int]
-TRANSITION: Final[int]
 
 class Event(NamedTuple):
     time: float

@@ -555,7 +555,7 @@ pub(crate) fn check_path_pairs<const D: usize>(
 }
 
 /// A side's only path, read and checked (errors at pair 0), if it holds one path.
-fn shared_path<const D: usize>(
+pub(super) fn shared_path<const D: usize>(
     side: &PathRows<'_, D>,
     names: &Names,
 ) -> Result<Option<Vec<Segment<D>>>, InputError> {
@@ -568,7 +568,7 @@ fn shared_path<const D: usize>(
 }
 
 /// The argument names of [`path_positions_at`]'s rows in errors.
-const NAMES_ONE: Names = Names {
+pub(super) const NAMES_ONE: Names = Names {
     segments: "start",
     start: "start",
     position: "pos",
@@ -701,7 +701,7 @@ fn pair_time<const D: usize, const K: usize>(
 /// Path `i` of `side`, checked, read into `buffer` (reused from path to path); its segments
 /// (its errors at the segment's index).
 #[inline(always)]
-fn read_path<'b, const D: usize, const K: usize>(
+pub(super) fn read_path<'b, const D: usize, const K: usize>(
     side: &PathRows<'_, D>,
     i: usize,
     names: &Names,
@@ -713,7 +713,7 @@ fn read_path<'b, const D: usize, const K: usize>(
 }
 
 /// Checks a side's shape: `segments ≥ 1`, every slice of `N·K` rows, `N` either 1 or `n`.
-fn check_side<const D: usize>(
+pub(super) fn check_side<const D: usize>(
     side: &PathRows<'_, D>,
     names: &Names,
     n: usize,

@@ -53,6 +53,7 @@ mod table;
 pub use path_circle_contact::path_circle_contact;
 pub use path_plane_contact::path_plane_contact;
 pub use path_segment_contact::path_segment_contact;
+pub(crate) use path_table_contact::first_table_contact;
 pub use path_table_contact::path_table_contact;
 pub(crate) use path_table_contact::{TablePath, object_contact};
 pub use path_target_contact::path_target_contact;

@@ -130,6 +130,21 @@ mod tests {
     }
 
     #[test]
+    fn a_contact_at_a_first_start_of_minus_zero_is_at_plus_zero() {
+        // Beyond the line x = 0 (touched from x > 0) and moving deeper, from t = −0: a
+        // contact at once, at +0 (found by the invariants of tests/invariants_geometry.rs).
+        let path = vec![Segment::new(
+            -0.0,
+            Vector2::zeros(),
+            Vector2::zeros(),
+            Vector2::new(-1.0, 0.0),
+        )];
+        let line = Plane::new(Vector2::new(1.0, 0.0), Vector2::new(1.0, 0.0)).expect("valid");
+        let t = first_plane_contact(&path, &line, 0.5, INF).expect("at once");
+        assert_eq!(t.to_bits(), 0.0f64.to_bits());
+    }
+
+    #[test]
     fn the_normal_s_length_and_the_units_change_no_bit() {
         let path = vec![Segment::new(
             0.25,

@@ -170,7 +170,8 @@ pub(crate) fn first_entry<const D: usize, const N: usize, X>(
                 crossing,
             };
             if on_or_beyond && accept(segment, &extra, candidate) {
-                return Some(segment.start);
+                // (A first start of −0 is the time +0, as the pair search answers.)
+                return Some(segment.start + 0.0);
             }
         }
         let length = end - segment.start;

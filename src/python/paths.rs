@@ -28,7 +28,7 @@ type Names = [&'static str; 4];
 
 const NAMES_A: Names = ["start_a", "pos_a", "vel_a", "acc_a"];
 const NAMES_B: Names = ["start_b", "pos_b", "vel_b", "acc_b"];
-const NAMES_ONE: Names = ["start", "pos", "vel", "acc"];
+pub(super) const NAMES_ONE: Names = ["start", "pos", "vel", "acc"];
 
 /// How a side's arrays are shaped: `(N, K)` and `(N, K, D)` in a batch, `(K,)` and `(K, D)`
 /// for a single path.
@@ -77,7 +77,7 @@ impl Side<'_> {
         }
     }
 
-    fn inputs(&self) -> [Option<&Floats<'_>>; 4] {
+    pub(super) fn inputs(&self) -> [Option<&Floats<'_>>; 4] {
         self.arrays.each_ref().map(Some)
     }
 }
@@ -166,17 +166,17 @@ fn comma(layout: Layout) -> &'static str {
 
 /// The batch's length `N`: the first of `lengths` other than 1 (numpy's broadcasting of a
 /// leading dimension of 1), else 1. The core checks that every other length is 1 or `N`.
-fn broadcast_len(lengths: impl IntoIterator<Item = usize>) -> usize {
+pub(super) fn broadcast_len(lengths: impl IntoIterator<Item = usize>) -> usize {
     lengths.into_iter().find(|&n| n != 1).unwrap_or(1)
 }
 
 /// A per-pair parameter's length, if it has one.
-fn param_len(p: &Param<'_>) -> Option<usize> {
+pub(super) fn param_len(p: &Param<'_>) -> Option<usize> {
     p.each().map(|values| values.values().len())
 }
 
 /// A per-pair parameter of one value, broadcast: that value for all `n` pairs.
-fn broadcast<'a>(p: PerPair<'a>, n: usize) -> PerPair<'a> {
+pub(super) fn broadcast<'a>(p: PerPair<'a>, n: usize) -> PerPair<'a> {
     match p {
         PerPair::Each(&[x]) if n != 1 => PerPair::All(x),
         p => p,

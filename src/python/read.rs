@@ -742,7 +742,11 @@ pub(super) fn indices(name: &str, obj: &Bound<'_, PyAny>, n: usize) -> PyResult<
 /// An int argument (a Python int, or anything with `__index__`: a numpy integer), as a Python
 /// int; a bool (Python's or numpy's), a float or anything else is a `TypeError` naming it,
 /// saying it `expected` that.
-fn int<'py>(name: &str, obj: &Bound<'py, PyAny>, expected: &str) -> PyResult<Bound<'py, PyAny>> {
+pub(super) fn int<'py>(
+    name: &str,
+    obj: &Bound<'py, PyAny>,
+    expected: &str,
+) -> PyResult<Bound<'py, PyAny>> {
     let py = obj.py();
     let not_int =
         |what: &str| PyTypeError::new_err(format!("{name}: expected {expected}, got {what}"));
@@ -776,20 +780,59 @@ pub(super) fn out<'py, D: Dimension>(
     shape: &[usize],
     expected: &str,
     inputs: &[Option<&Floats<'_>>],
-) -> PyResult<Out<'py, D>> {
+) -> PyResult<Out<'py, f64, D>> {
+    out_of::<f64, D>(obj, None, shape, expected, inputs)
+}
+
+/// The element types of output arrays, and how their dtypes are told apart without asking
+/// numpy for a descriptor to compare with.
+pub(super) trait OutElement: numpy::Element {
+    /// Whether `dtype` is this type in this machine's byte order.
+    fn is(dtype: &Bound<'_, PyArrayDescr>) -> bool;
+}
+
+impl OutElement for f64 {
+    fn is(dtype: &Bound<'_, PyArrayDescr>) -> bool {
+        native_float64(dtype)
+    }
+}
+
+impl OutElement for i8 {
+    fn is(dtype: &Bound<'_, PyArrayDescr>) -> bool {
+        dtype.kind() == b'i' && dtype.itemsize() == 1
+    }
+}
+
+impl OutElement for i64 {
+    fn is(dtype: &Bound<'_, PyArrayDescr>) -> bool {
+        // (`long` and `long long` alike.)
+        dtype.kind() == b'i' && dtype.itemsize() == 8 && dtype.is_native_byteorder() != Some(false)
+    }
+}
+
+/// [`out`] for arrays of `T`, the output named `out[at]` where it is one of several (a tuple's
+/// item `at`).
+pub(super) fn out_of<'py, T: OutElement, D: Dimension>(
+    obj: &Bound<'py, PyAny>,
+    at: Option<usize>,
+    shape: &[usize],
+    expected: &str,
+    inputs: &[Option<&Floats<'_>>],
+) -> PyResult<Out<'py, T, D>> {
     let py = obj.py();
-    let fail = |reason: &str| input_error(py, "out", None, kind::OUT_LAYOUT, reason);
+    let fail = |reason: &str| input_error(py, "out", at, kind::OUT_LAYOUT, reason);
     let array = match obj.cast::<PyUntypedArray>() {
-        Ok(a) if a.ndim() == shape.len() && native_float64(&a.dtype()) => {
-            // SAFETY: an ndarray of native float64 (`native_float64`) with `D`'s dimensions.
-            unsafe { a.cast_unchecked::<PyArray<f64, D>>() }
+        Ok(a) if a.ndim() == shape.len() && T::is(&a.dtype()) => {
+            // SAFETY: an ndarray of native `T` (`OutElement::is`) with `D`'s dimensions.
+            unsafe { a.cast_unchecked::<PyArray<T, D>>() }
         }
         found => {
             let found = match found {
                 Ok(a) => format!("a {}-D array of dtype {}", a.ndim(), a.dtype()),
                 Err(_) => type_name(obj),
             };
-            let message = format!("out: expected {expected}, got {found}");
+            let name = at.map_or_else(|| "out".to_owned(), |k| format!("out[{k}]"));
+            let message = format!("{name}: expected {expected}, got {found}");
             return Err(PyTypeError::new_err(message));
         }
     };
@@ -798,7 +841,10 @@ pub(super) fn out<'py, D: Dimension>(
         return Err(fail(&format!("expected shape {want}, got {got}")));
     }
     if !array.is_c_contiguous() || !array.is_aligned() {
-        return Err(fail("expected a C-contiguous, aligned float64 array"));
+        let dtype = array.dtype();
+        return Err(fail(&format!(
+            "expected a C-contiguous, aligned {dtype} array"
+        )));
     }
     // SAFETY: a live array's header.
     let flags = unsafe { (*npyffi::_PyArray_GET_ITEM_DATA(array.as_array_ptr())).flags };
@@ -833,21 +879,32 @@ fn shares_memory(a: &Bound<'_, PyUntypedArray>, b: &Bound<'_, PyAny>) -> PyResul
     f.call1((a, b))?.is_truthy()
 }
 
-/// A caller's `out=` array, checked by [`out`].
-pub(super) struct Out<'py, D>(Bound<'py, PyArray<f64, D>>);
+/// A caller's `out=` array, checked by [`out`] (or [`out_of`]).
+pub(super) struct Out<'py, T, D>(Bound<'py, PyArray<T, D>>);
 
-impl<'py, D: Dimension> Out<'py, D> {
+impl<'py, T: OutElement, D: Dimension> Out<'py, T, D> {
+    /// A new array of `shape`, all zeros: an output of the call's own.
+    pub(super) fn zeros(py: Python<'py>, shape: D) -> Self {
+        Self(PyArray::zeros(py, shape, false))
+    }
+
     /// Its elements, to be written.
-    pub(super) fn values(&mut self) -> &mut [f64] {
+    pub(super) fn values(&mut self) -> &mut [T] {
         // SAFETY: writeable, C-contiguous and aligned (checked by `out`), overlapping no
         // input; nothing else writes into it or reads it during the call: the GIL is held,
         // or the array is borrowed through the registry ([`Out::tracked`]).
         unsafe { self.0.as_slice_mut() }.unwrap_or(&mut [])
     }
 
+    /// The addresses its elements occupy.
+    pub(super) fn span(&self) -> std::ops::Range<usize> {
+        // SAFETY: only the addresses are looked at.
+        unsafe { self.0.as_slice() }.map_or(0..0, address_range)
+    }
+
     /// The array borrowed for writing through rust-numpy's registry, for a call that releases
     /// the GIL (see [`track`]): refused if some rust-numpy code borrows it meanwhile.
-    pub(super) fn tracked(&self) -> PyResult<PyReadwriteArray<'py, f64, D>> {
+    pub(super) fn tracked(&self) -> PyResult<PyReadwriteArray<'py, T, D>> {
         let py = self.0.py();
         self.0.try_readwrite().map_err(|_| {
             input_error(
@@ -860,13 +917,13 @@ impl<'py, D: Dimension> Out<'py, D> {
         })
     }
 
-    pub(super) fn into_array(self) -> Bound<'py, PyArray<f64, D>> {
+    pub(super) fn into_array(self) -> Bound<'py, PyArray<T, D>> {
         self.0
     }
 }
 
 /// The addresses a slice's elements occupy.
-fn address_range(values: &[f64]) -> std::ops::Range<usize> {
+fn address_range<T>(values: &[T]) -> std::ops::Range<usize> {
     let r = values.as_ptr_range();
     r.start as usize..r.end as usize
 }

@@ -45,6 +45,7 @@ COUNT = {"huge", "beyond float", "None"}  # max_events: beyond 64 bits is no lim
 OPTIONAL = {"None"}  # out=, box= of the calendar
 FLAG = {"bool", "None"}  # progress=: True, False or None (or a tqdm-like bar)
 NOTHING: set[str] = set()  # arrays, paths, indices, restitution (in [0, 1])
+SIDES = {"negative", "None"}  # segment_sides: one int for every segment, -1 among them
 
 
 def schedule() -> bc.CollisionSchedule:
@@ -87,6 +88,14 @@ PATHS_AB = {
     "radius": 0.5,
 }
 BOX = ([-4.0, -4.0], [4.0, 4.0])
+# One object of each kind, none of them in ONE_PATH's way but the plane.
+OBJECTS = {
+    "segments": [[[-1.0, -1.0], [-1.0, 1.0]]],
+    "segment_sides": 1,
+    "circles": [[3.0, 2.0, 0.1]],
+    "targets": [[5.0, -2.0, 0.5]],
+    "planes": [[[9.0, 0.0], [-1.0, 0.0]]],
+}
 
 # Each call: how to make it from keyword arguments, its valid arguments, and what each
 # argument accepts among BAD.
@@ -156,6 +165,22 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
         {
             **dict.fromkeys(ONE_PATH, NOTHING),
             "t": ANY_NUMBER,  # before the first start: the first position
+            "num_threads": THREADS,
+            "out": OPTIONAL,
+        },
+    ),
+    "path_geometry_times": (
+        bc.path_geometry_times,
+        ONE_PATH
+        | {"radius": 0.5}
+        | OBJECTS
+        | {"t_max": math.inf, "num_threads": None, "out": None},
+        {
+            **dict.fromkeys(ONE_PATH, NOTHING),
+            "radius": NUMBER,
+            **dict.fromkeys(["segments", "circles", "targets", "planes"], OPTIONAL),
+            "segment_sides": SIDES,
+            "t_max": NUMBER,
             "num_threads": THREADS,
             "out": OPTIONAL,
         },

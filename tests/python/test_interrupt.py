@@ -38,6 +38,17 @@ CALLS = {
         "acc = rng.normal(size=(n, 1, 2)) * 1409.0",
         "bc.path_collision_times(start, pa, va, acc, start, pb, vb, -acc, 0.03, num_threads=2)",
     ),
+    "path_geometry_times": (
+        # 300,000 balls moving for ever among 120 objects: about 5 s on two threads.
+        "n, m = 300_000, 40\n"
+        "start = np.zeros((n, 1))\n"
+        "pos, vel = rng.uniform(0, 1, (n, 1, 2)), rng.normal(size=(n, 1, 2))\n"
+        "acc = rng.normal(size=(n, 1, 2)) * 0.5\n"
+        "segments = rng.uniform(0, 1, (m, 2, 2))\n"
+        "discs = np.c_[rng.uniform(0, 1, (m, 2)), np.full(m, 0.01)]",
+        "bc.path_geometry_times(start, pos, vel, acc, 0.03, segments=segments, circles=discs,"
+        " targets=discs, num_threads=2)",
+    ),
     "first_contacts": (
         "pos = rng.uniform(0, 1e-3, (12_000, 2))\nvel = rng.normal(size=(12_000, 2))",
         "bc.first_contacts(pos, vel, 0.0, 1e-6, num_threads=2)",
