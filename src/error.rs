@@ -122,6 +122,13 @@ pub enum InputErrorKind {
     ZeroNormal,
     /// A segment's side that is not −1, 0 or 1.
     InvalidSide(i64),
+    /// A dimension of a [`PoolTable`](crate::geometry::PoolTable) that breaks `rule`.
+    TableDimension {
+        /// The dimension given.
+        value: f64,
+        /// What it must be, e.g. `"must be > 0"`.
+        rule: &'static str,
+    },
 }
 
 impl InputErrorKind {
@@ -163,6 +170,7 @@ impl InputErrorKind {
             Self::NonPositiveTargetRadius(_) => "non_positive_target_radius",
             Self::ZeroNormal => "zero_normal",
             Self::InvalidSide(_) => "invalid_side",
+            Self::TableDimension { .. } => "table_dimension",
         }
     }
 
@@ -186,6 +194,7 @@ impl InputErrorKind {
             | Self::NegativeCircleRadius(x)
             | Self::NonPositiveTargetRadius(x) => Some(x),
             Self::InvalidSide(side) => Some(side as f64),
+            Self::TableDimension { value, .. } => Some(value),
             Self::DecreasingStart { start, .. } | Self::StartsDiffer { start, .. } => Some(start),
             Self::BeforeCurrentTime { time, .. } => Some(time),
             Self::IndexOutOfRange { index, .. } => Some(index as f64),
@@ -450,6 +459,7 @@ impl fmt::Display for InputErrorKind {
                 write!(f, "a target's radius must be > 0, got {}", Brief(x))
             }
             Self::ZeroNormal => f.write_str("a plane's normal must not be zero"),
+            Self::TableDimension { value, rule } => write!(f, "{rule}, got {}", Brief(value)),
             Self::InvalidSide(side) => {
                 write!(f, "a segment's side must be -1, 0 or 1, got {side}")
             }

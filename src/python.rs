@@ -755,6 +755,7 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(paths::path_collision_time, m)?,
         wrap_pyfunction!(paths::path_positions_at, m)?,
         wrap_pyfunction!(geometry::path_geometry_times, m)?,
+        wrap_pyfunction!(geometry::pool_table, m)?,
         wrap_pyfunction!(real_roots, m)?,
         wrap_pyfunction!(pairwise_collision_times, m)?,
         wrap_pyfunction!(earliest_collision, m)?,

@@ -25,15 +25,15 @@ _Sides = SupportsIndex | Sequence[SupportsIndex] | npt.NDArray[np.integer[Any]] 
 __all__ = [
     "BALL",
     "CIRCLE",
-    "CollisionSchedule",
-    "Event",
-    "InputError",
     "PLANE",
     "SEGMENT",
-    "Simulation",
     "TARGET",
     "TRANSITION",
     "WALL",
+    "CollisionSchedule",
+    "Event",
+    "InputError",
+    "Simulation",
     "__version__",
     "collision_time",
     "collision_times",
@@ -44,6 +44,7 @@ __all__ = [
     "path_collision_times",
     "path_geometry_times",
     "path_positions_at",
+    "pool_table",
     "positions_at",
     "real_roots",
     "simulate",
@@ -204,6 +205,10 @@ class Simulation(NamedTuple):
     j: _I64Array
     pos: _F64Array
     vel: _F64Array
+    kind: _I64Array
+    # As Event.index: it shadows `tuple.index`.
+    index: _I64Array  # type: ignore[assignment]
+    captured: _I64Array
 
 @final
 class CollisionSchedule:
@@ -217,6 +222,12 @@ class CollisionSchedule:
         *,
         box: _Box | None = None,
         t_max: _Number = ...,
+        segments: _Objects = None,
+        segment_sides: _Sides = None,
+        circles: _Objects = None,
+        targets: _Objects = None,
+        planes: _Objects = None,
+        transitions: bool | None = False,
     ) -> CollisionSchedule: ...
     @staticmethod
     def from_balls(
@@ -228,12 +239,20 @@ class CollisionSchedule:
         box: _Box | None = None,
         *,
         t_max: _Number = ...,
+        segments: _Objects = None,
+        segment_sides: _Sides = None,
+        circles: _Objects = None,
+        targets: _Objects = None,
+        planes: _Objects = None,
+        transitions: bool | None = False,
     ) -> CollisionSchedule: ...
     @property
     def time(self) -> float: ...
     def __len__(self) -> int: ...
     def next_collision(self) -> tuple[float, int, int]: ...
     def next_event(self) -> Event: ...
+    def retire(self, i: SupportsIndex) -> None: ...
+    def in_play(self, i: SupportsIndex) -> bool: ...
     def update(
         self,
         indices: _Indices,
@@ -263,4 +282,22 @@ def simulate(
     t_end: _Number = ...,
     max_events: SupportsIndex | None = None,
     progress: bool | _ProgressBar | None = False,
+    segments: _Objects = None,
+    segment_sides: _Sides = None,
+    circles: _Objects = None,
+    targets: _Objects = None,
+    planes: _Objects = None,
+    table_restitution: _Number = 1.0,
 ) -> Simulation: ...
+def pool_table(
+    *,
+    width: _Number = 1.27,
+    length: _Number = 2.54,
+    corner_mouth: _Number = 0.1168,
+    side_mouth: _Number = 0.1295,
+    jaw_length: _Number = 0.04,
+    jaw_radius: _Number = 0.005,
+    corner_jaw_angle: _Number = 7.0,
+    side_jaw_angle: _Number = 14.0,
+    pocket_radius: _Number = 0.045,
+) -> dict[str, npt.NDArray[Any]]: ...

@@ -10,7 +10,7 @@ use nalgebra::Vector2;
 
 use super::shapes::{Circle, LineSegment, SegmentSide, Target};
 use super::table::Table;
-use crate::error::InputError;
+use crate::error::{InputError, InputErrorKind};
 
 /// The dimensions of a pool table, in metres (or any one unit). The playing area (between the
 /// cushion noses) is `[0, width] × [0, length]`; the corner pockets are at its corners, the
@@ -88,6 +88,7 @@ impl PoolTable {
     /// An [`InputError`] if the dimensions make a degenerate object (a NaN, a negative
     /// radius, mouths wider than the rails).
     pub fn table(&self) -> Result<Table<2>, InputError> {
+        self.check()?;
         let (w, l) = (self.width, self.length);
         let c = self.corner_mouth / std::f64::consts::SQRT_2;
         let s = self.side_mouth / 2.0;
@@ -141,16 +142,88 @@ impl PoolTable {
             table.targets.push(Target::new(centre, self.pocket_radius)?);
         }
         // Rail k runs from pocket k's second nose to pocket k + 1's first (anticlockwise:
-        // the table on its left).
-        for k in 0..6 {
+        // the table on its left), along the border's direction there: else the mouths and
+        // tips leave no rail between the pockets.
+        let directions = [
+            v(1.0, 0.0),
+            v(0.0, 1.0),
+            v(0.0, 1.0),
+            v(-1.0, 0.0),
+            v(0.0, -1.0),
+            v(0.0, -1.0),
+        ];
+        for (k, direction) in directions.into_iter().enumerate() {
             let from = rail_ends[k][1];
             let to = rail_ends[(k + 1) % 6][0];
+            if (to - from).dot(&direction) <= 0.0 {
+                let (argument, value) = if k % 3 == 1 {
+                    ("side_mouth", self.side_mouth)
+                } else {
+                    ("corner_mouth", self.corner_mouth)
+                };
+                let kind = InputErrorKind::TableDimension {
+                    value,
+                    rule: "leaves no rail between the pockets (with the jaw tips)",
+                };
+                return Err(InputError::new(argument, kind));
+            }
             table
                 .segments
                 .push(LineSegment::new(from, to, SegmentSide::Left)?);
         }
         table.segments.extend(jaws);
         Ok(table)
+    }
+
+    /// Every dimension finite; the lengths `> 0` (the jaw tips' radius `≥ 0` and below half the
+    /// narrower mouth), the jaw angles in `[0°, 45°)`, the mouths apart in float64.
+    fn check(&self) -> Result<(), InputError> {
+        let bad = |argument: &'static str, value: f64, rule: &'static str| {
+            Err(InputError::new(
+                argument,
+                InputErrorKind::TableDimension { value, rule },
+            ))
+        };
+        for (argument, value) in [
+            ("width", self.width),
+            ("length", self.length),
+            ("corner_mouth", self.corner_mouth),
+            ("side_mouth", self.side_mouth),
+            ("jaw_length", self.jaw_length),
+            ("pocket_radius", self.pocket_radius),
+        ] {
+            if !(value > 0.0 && value.is_finite()) {
+                return bad(argument, value, "must be finite and > 0");
+            }
+        }
+        // Each mouth's noses apart in float64 (a table far larger than its mouths rounds
+        // them together).
+        let c = self.corner_mouth / std::f64::consts::SQRT_2;
+        let half = self.length / 2.0;
+        let s = self.side_mouth / 2.0;
+        let too_large = "is too large for the pockets' mouths to be told apart in float64";
+        if self.width - c >= self.width {
+            return bad("width", self.width, too_large);
+        }
+        if self.length - c >= self.length || half - s >= half + s {
+            return bad("length", self.length, too_large);
+        }
+        if !(self.jaw_radius >= 0.0 && self.jaw_radius.is_finite()) {
+            return bad("jaw_radius", self.jaw_radius, "must be finite and ≥ 0");
+        }
+        if self.jaw_radius >= self.corner_mouth.min(self.side_mouth) / 2.0 {
+            let rule = "must be below half the narrower mouth";
+            return bad("jaw_radius", self.jaw_radius, rule);
+        }
+        for (argument, value) in [
+            ("corner_jaw_angle", self.corner_jaw_angle),
+            ("side_jaw_angle", self.side_jaw_angle),
+        ] {
+            if !(0.0..45.0).contains(&value) {
+                return bad(argument, value, "must be in [0, 45) degrees");
+            }
+        }
+        Ok(())
     }
 
     /// The nose at `at` of a pocket (a side pocket's, or a corner's) whose other nose is

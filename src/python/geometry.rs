@@ -287,3 +287,108 @@ fn outputs<'py>(
     }
     Ok((time, kind, index))
 }
+
+/// A pool table's objects, as the keyword arguments of :func:`simulate`,
+/// :class:`CollisionSchedule` and :func:`path_geometry_times` take them: a dict with
+/// ``segments`` (shape ``(18, 2, 2)``: the six rails, then two jaws per pocket),
+/// ``segment_sides`` (``(18,)``: ``+1`` for the rails, played from the table's side, ``0`` for
+/// the jaws), ``circles`` (``(12, 3)``: the round tips where rails meet jaws) and ``targets``
+/// (``(6, 3)``: the pockets' capture circles).
+///
+/// The playing area is ``[0, width] × [0, length]``; the corner pockets are at its corners,
+/// the side pockets halfway along the long rails. The defaults are a 9-foot table (2.54 m ×
+/// 1.27 m, corner mouths 4.6 in, side mouths 5.1 in) with jaws and pockets of a simplified
+/// shape (Rust: ``geometry::PoolTable``).
+///
+/// Parameters
+/// ----------
+/// width, length
+///     The playing area's sides, along x and y.
+/// corner_mouth, side_mouth
+///     The pockets' mouths, between the noses.
+/// jaw_length, jaw_radius
+///     How far each jaw runs into its pocket; the radius of the jaw tips.
+/// corner_jaw_angle, side_jaw_angle
+///     How far the jaws turn towards their pocket's axis, in degrees.
+/// pocket_radius
+///     The capture circles' radius.
+///
+/// Raises
+/// ------
+/// InputError
+///     Dimensions that make a degenerate object.
+///
+/// Examples
+/// --------
+/// >>> import ballcollide as bc
+/// >>> table = bc.pool_table()
+/// >>> {k: v.shape for k, v in table.items()}
+/// {'segments': (18, 2, 2), 'segment_sides': (18,), 'circles': (12, 3), 'targets': (6, 3)}
+/// >>> run = bc.simulate([[0.635, 0.5]], [[0, 2]], 0.3, 0.028575, box=([-0.3, -0.3], [1.6, 2.9]),
+/// ...                   **table)
+/// >>> run.captured  # straight up the middle, off the top rail and back: no pocket
+/// array([-1])
+#[pyfunction]
+#[pyo3(signature = (*, width=Given(None), length=Given(None), corner_mouth=Given(None),
+                    side_mouth=Given(None), jaw_length=Given(None), jaw_radius=Given(None),
+                    corner_jaw_angle=Given(None), side_jaw_angle=Given(None),
+                    pocket_radius=Given(None)),
+       text_signature = "(*, width=1.27, length=2.54, corner_mouth=0.1168, side_mouth=0.1295, \
+                         jaw_length=0.04, jaw_radius=0.005, corner_jaw_angle=7.0, \
+                         side_jaw_angle=14.0, pocket_radius=0.045)")]
+#[allow(clippy::too_many_arguments)]
+pub(super) fn pool_table<'py>(
+    py: Python<'py>,
+    width: Given<'py>,
+    length: Given<'py>,
+    corner_mouth: Given<'py>,
+    side_mouth: Given<'py>,
+    jaw_length: Given<'py>,
+    jaw_radius: Given<'py>,
+    corner_jaw_angle: Given<'py>,
+    side_jaw_angle: Given<'py>,
+    pocket_radius: Given<'py>,
+) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
+    let d = crate::geometry::PoolTable::default();
+    let spec = crate::geometry::PoolTable {
+        width: width.number_or("width", d.width)?,
+        length: length.number_or("length", d.length)?,
+        corner_mouth: corner_mouth.number_or("corner_mouth", d.corner_mouth)?,
+        side_mouth: side_mouth.number_or("side_mouth", d.side_mouth)?,
+        jaw_length: jaw_length.number_or("jaw_length", d.jaw_length)?,
+        jaw_radius: jaw_radius.number_or("jaw_radius", d.jaw_radius)?,
+        corner_jaw_angle: corner_jaw_angle.number_or("corner_jaw_angle", d.corner_jaw_angle)?,
+        side_jaw_angle: side_jaw_angle.number_or("side_jaw_angle", d.side_jaw_angle)?,
+        pocket_radius: pocket_radius.number_or("pocket_radius", d.pocket_radius)?,
+    };
+    let table = spec.table().map_err(|e| from_core(py, e))?;
+    let rows = |rows: Vec<Vec<f64>>, width: usize| -> PyResult<Bound<'py, PyAny>> {
+        let flat: Vec<f64> = rows.concat();
+        let n = flat.len() / width.max(1);
+        PyArray1::from_vec(py, flat).call_method1("reshape", ((n, width),))
+    };
+    let dict = pyo3::types::PyDict::new(py);
+    let segments: Vec<Vec<f64>> = table
+        .segments
+        .iter()
+        .map(|s| vec![s.p().x, s.p().y, s.q().x, s.q().y])
+        .collect();
+    let segments = rows(segments, 4)?.call_method1("reshape", ((table.segments.len(), 2, 2),))?;
+    dict.set_item("segments", segments)?;
+    let sides: Vec<i64> = table.segments.iter().map(|s| s.side().sign()).collect();
+    dict.set_item("segment_sides", PyArray1::from_vec(py, sides))?;
+    let disc = |c: nalgebra::Vector2<f64>, rho: f64| vec![c.x, c.y, rho];
+    let circles = table
+        .circles
+        .iter()
+        .map(|c| disc(c.centre(), c.rho()))
+        .collect();
+    dict.set_item("circles", rows(circles, 3)?)?;
+    let targets = table
+        .targets
+        .iter()
+        .map(|t| disc(t.centre(), t.rho()))
+        .collect();
+    dict.set_item("targets", rows(targets, 3)?)?;
+    Ok(dict)
+}

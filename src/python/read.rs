@@ -700,20 +700,14 @@ pub(super) fn count(name: &str, obj: Option<&Bound<'_, PyAny>>) -> PyResult<Opti
 /// [`InputError`](super::input_error::InputError) at its position, `indices[m]`; what is not an
 /// int (a bool, a float, a string) a `TypeError` naming it.
 pub(super) fn indices(name: &str, obj: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<usize>> {
-    let py = obj.py();
     let one = |m: Option<usize>, item: &Bound<'_, PyAny>| -> PyResult<usize> {
-        let index = match m {
-            Some(m) => int(&format!("{name}[{m}]"), item, "an int (a ball index)")?,
-            None => int(name, item, "an int or a sequence of ints (ball indices)")?,
+        let expected = match m {
+            Some(_) => "an int (a ball index)",
+            None => "an int or a sequence of ints (ball indices)",
         };
-        match index.extract::<usize>() {
-            Ok(i) if i < n => Ok(i),
-            _ => {
-                let reason = format!("ball index must be in 0..{n}, got {index}");
-                Err(input_error(py, name, m, INDEX_OUT_OF_RANGE, &reason))
-            }
-        }
+        ball_index(name, m, item, n, expected)
     };
+    let py = obj.py();
     let sequence = obj.is_instance_of::<PyList>()
         || obj.is_instance_of::<PyTuple>()
         || obj.cast::<PyUntypedArray>().is_ok_and(|a| a.ndim() != 0);
@@ -737,6 +731,43 @@ pub(super) fn indices(name: &str, obj: &Bound<'_, PyAny>, n: usize) -> PyResult<
         .enumerate()
         .map(|(m, item)| one(Some(m), &item?))
         .collect()
+}
+
+/// One ball index, an int in `0..n` (`name`, at `m` in a sequence): out of range an
+/// [`InputError`](super::input_error::InputError), not an int a `TypeError` saying it
+/// `expected` one.
+pub(super) fn ball_index(
+    name: &str,
+    m: Option<usize>,
+    obj: &Bound<'_, PyAny>,
+    n: usize,
+    expected: &str,
+) -> PyResult<usize> {
+    let index = match m {
+        Some(m) => int(&format!("{name}[{m}]"), obj, expected)?,
+        None => int(name, obj, expected)?,
+    };
+    match index.extract::<usize>() {
+        Ok(i) if i < n => Ok(i),
+        _ => {
+            let reason = format!("ball index must be in 0..{n}, got {index}");
+            Err(input_error(obj.py(), name, m, INDEX_OUT_OF_RANGE, &reason))
+        }
+    }
+}
+
+/// A flag: `True` or `False` (Python's or numpy's bools); anything else is a `TypeError`
+/// naming it.
+pub(super) fn flag(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<bool> {
+    let is_bool =
+        obj.is_instance_of::<PyBool>() || is_numpy_type(obj, NpyTypes::PyBoolArrType_Type);
+    if !is_bool {
+        let what = type_name(obj);
+        return Err(PyTypeError::new_err(format!(
+            "{name}: expected True or False, got {what}"
+        )));
+    }
+    obj.is_truthy()
 }
 
 /// An int argument (a Python int, or anything with `__index__`: a numpy integer), as a Python

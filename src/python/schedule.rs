@@ -20,6 +20,7 @@ use super::input_error::{from_core, input_error};
 use super::long_call::{INLINE_UP_TO, Kernel, SIGNAL_CHECKS, run};
 use super::paths::{Layout, Side, side};
 use super::read::{self, Given, param, rows};
+use super::table::table_of;
 use crate::Path;
 use crate::batch::PerPair;
 use crate::error::{InputError, InputErrorKind};
@@ -165,10 +166,13 @@ pub(super) fn simulation_type(py: Python<'_>) -> PyResult<&Bound<'_, PyAny>> {
         py,
         &SIMULATION,
         "Simulation",
-        &["times", "i", "j", "pos", "vel"],
-        "What simulate returns: (times, i, j, pos, vel).\n\n\
+        &["times", "i", "j", "pos", "vel", "kind", "index", "captured"],
+        "What simulate returns: (times, i, j, pos, vel, kind, index, captured).\n\n\
          times (float64, shape (E,)): the events' times; i, j (int64): the balls of each, \
-         j = -1 for a wall; pos, vel (shape (N, 2)): the final state.",
+         j = -1 for a wall or an object; pos, vel (shape (N, 2)): the final state; kind, \
+         index (int64, shape (E,)): what ball i met, as in Event (BALL, WALL, SEGMENT, \
+         CIRCLE, TARGET, PLANE) and its index; captured (int64, shape (N,)): the target \
+         that captured each ball, -1 for none.",
     )
 }
 
@@ -190,15 +194,33 @@ fn named_tuple<'py>(
     .map(|class| class.bind(py))
 }
 
+/// A logged event's kind and index, as in :class:`Event`.
+fn logged_kind(e: &crate::schedule::LoggedEvent) -> (i64, i64) {
+    match (e.j, e.wall, e.object) {
+        (Some(_), ..) => (BALL, -1),
+        (None, Some((axis, side)), _) => (WALL, wall_face(axis, side)),
+        (None, None, Some((kind, index))) => (i64::from(kind.code()), index_i64(index)),
+        (None, None, None) => (-1, -1),
+    }
+}
+
+/// A wall's index in :class:`Event`: `2·axis` for the low wall, `2·axis + 1` for the high.
+fn wall_face(axis: usize, side: WallSide) -> i64 {
+    index_i64(2 * axis + usize::from(side == WallSide::High))
+}
+
 /// The event as the named tuple.
 fn event_tuple<'py>(py: Python<'py>, event: Option<CoreEvent>) -> PyResult<Bound<'py, PyAny>> {
     let fields: (f64, i64, i64, i64, i64) = match event {
         None => (f64::INFINITY, -1, -1, -1, -1),
         Some(CoreEvent::Collision(c)) => (c.time, index_i64(c.i), index_i64(c.j), BALL, -1),
-        Some(CoreEvent::Wall(w)) => {
-            let face = 2 * w.axis + usize::from(w.side == WallSide::High);
-            (w.time, index_i64(w.ball), -1, WALL, index_i64(face))
-        }
+        Some(CoreEvent::Wall(w)) => (
+            w.time,
+            index_i64(w.ball),
+            -1,
+            WALL,
+            wall_face(w.axis, w.side),
+        ),
         Some(CoreEvent::Object(o)) => (
             o.time,
             index_i64(o.ball),
@@ -324,8 +346,12 @@ fn balls(
 impl CollisionSchedule {
     #[new]
     #[pyo3(
-        signature = (start, pos, vel, acc, radius, *, r#box=None, t_max=Given(None)),
-        text_signature = "(start, pos, vel, acc, radius, *, box=None, t_max=1e999)"
+        signature = (start, pos, vel, acc, radius, *, r#box=None, t_max=Given(None),
+                     segments=None, segment_sides=None, circles=None, targets=None,
+                     planes=None, transitions=None),
+        text_signature = "(start, pos, vel, acc, radius, *, box=None, t_max=1e999, \
+                          segments=None, segment_sides=None, circles=None, targets=None, \
+                          planes=None, transitions=False)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn new(
@@ -337,13 +363,26 @@ impl CollisionSchedule {
         radius: &Bound<'_, PyAny>,
         r#box: Option<&Bound<'_, PyAny>>,
         t_max: Given<'_>,
+        segments: Option<&Bound<'_, PyAny>>,
+        segment_sides: Option<&Bound<'_, PyAny>>,
+        circles: Option<&Bound<'_, PyAny>>,
+        targets: Option<&Bound<'_, PyAny>>,
+        planes: Option<&Bound<'_, PyAny>>,
+        transitions: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let paths = side(py, NAMES, [start, pos, vel, acc], Layout::Batch, None)?;
         let radii = radii(py, radius, paths.paths)?;
         let t_max = t_max.number_or("t_max", f64::INFINITY)?;
+        let objects = [segments, segment_sides, circles, targets, planes];
         let inner = match paths.dim {
-            2 => Inner::Two(build(py, &paths, &radii, walls_of(py, r#box)?, t_max)?),
-            _ => Inner::Three(build(py, &paths, &radii, walls_of(py, r#box)?, t_max)?),
+            2 => {
+                let options = options_of::<2>(py, r#box, t_max, objects, transitions)?;
+                Inner::Two(build(py, &paths, &radii, options)?)
+            }
+            _ => {
+                let options = options_of::<3>(py, r#box, t_max, objects, transitions)?;
+                Inner::Three(build(py, &paths, &radii, options)?)
+            }
         };
         Ok(Self { inner })
     }
@@ -376,8 +415,12 @@ impl CollisionSchedule {
     /// (2.5, 0, 1)
     #[staticmethod]
     #[pyo3(
-        signature = (pos, vel, friction, radius, t=Given(None), r#box=None, *, t_max=Given(None)),
-        text_signature = "(pos, vel, friction, radius, t=0.0, box=None, *, t_max=1e999)"
+        signature = (pos, vel, friction, radius, t=Given(None), r#box=None, *, t_max=Given(None),
+                     segments=None, segment_sides=None, circles=None, targets=None,
+                     planes=None, transitions=None),
+        text_signature = "(pos, vel, friction, radius, t=0.0, box=None, *, t_max=1e999, \
+                          segments=None, segment_sides=None, circles=None, targets=None, \
+                          planes=None, transitions=False)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn from_balls(
@@ -389,16 +432,19 @@ impl CollisionSchedule {
         t: Given<'_>,
         r#box: Option<&Bound<'_, PyAny>>,
         t_max: Given<'_>,
+        segments: Option<&Bound<'_, PyAny>>,
+        segment_sides: Option<&Bound<'_, PyAny>>,
+        circles: Option<&Bound<'_, PyAny>>,
+        targets: Option<&Bound<'_, PyAny>>,
+        planes: Option<&Bound<'_, PyAny>>,
+        transitions: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let balls = balls(py, pos, vel, friction)?;
         let radii = radii(py, radius, balls.len())?;
         let t = t.number_or("t", 0.0)?;
         let t_max = t_max.number_or("t_max", f64::INFINITY)?;
-        let options = ScheduleOptions {
-            walls: walls_of::<2>(py, r#box)?,
-            t_max,
-            ..Default::default()
-        };
+        let objects = [segments, segment_sides, circles, targets, planes];
+        let options = options_of::<2>(py, r#box, t_max, objects, transitions)?;
         let core = run(py, calendar_kernel(balls.len()), || {
             Core::from_balls(&balls, &radii, t, options)
         })?;
@@ -431,19 +477,59 @@ impl CollisionSchedule {
         collision_tuple(each_dim!(&mut self.inner, s => s.next_collision()))
     }
 
-    /// The earliest event from :attr:`time` on, a collision or (with a ``box``) a ball
-    /// reaching a wall, as an :class:`Event` ``(time, i, j, axis, side)``. At equal times the
-    /// lower ball comes first, and a ball's wall contact before its collisions.
+    /// The earliest event from :attr:`time` on, as an :class:`Event` ``(time, i, j, kind,
+    /// index)``: a collision (``kind`` :data:`BALL`), a ball reaching a wall of the ``box``
+    /// (:data:`WALL`, ``index`` ``2·axis`` for the low wall, ``2·axis + 1`` for the high one)
+    /// or an object of the table (:data:`SEGMENT`, :data:`CIRCLE`, :data:`TARGET`,
+    /// :data:`PLANE`, ``index`` the object's), or with ``transitions=True`` a ball's next
+    /// segment start (:data:`TRANSITION`, ``index`` the segment). Ordered by time, then the
+    /// (lower) ball, then a ball's transition, wall, object (by kind, then index) and
+    /// collisions. An event stays the next until the calendar moves past it: update the balls
+    /// it involves.
     ///
     /// Examples
     /// --------
     /// >>> import ballcollide as bc
     /// >>> s = bc.CollisionSchedule.from_balls([[0.5, 0.5]], [[1, 0]], 0.0, 0.25, box=([0, 0], [1, 1]))
     /// >>> s.next_event()
-    /// Event(time=0.25, i=0, j=-1, axis=0, side=1)
+    /// Event(time=0.25, i=0, j=-1, kind=5, index=1)
+    /// >>> # A cushion from (0.6, 0) to (0.6, 1), played from its left (the ball's side).
+    /// >>> s = bc.CollisionSchedule.from_balls([[0.5, 0.5]], [[1, 0]], 0.0, 0.05,
+    /// ...                                     segments=[[[0.6, 0], [0.6, 1]]], segment_sides=1)
+    /// >>> e = s.next_event()
+    /// >>> e.kind == bc.SEGMENT, e.index, round(e.time, 12)
+    /// (True, 0, 0.05)
     fn next_event<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let event = each_dim!(&mut self.inner, s => s.next_event());
         event_tuple(py, event)
+    }
+
+    /// Takes ball ``i`` out of play (a ball captured by a pocket): it has no event from now
+    /// on and no ball meets it, until an update gives it a path again.
+    ///
+    /// Raises
+    /// ------
+    /// InputError
+    ///     An index out of range (``i: ball index must be in 0..3, got 5``); nothing changes.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import ballcollide as bc
+    /// >>> s = bc.CollisionSchedule.from_balls([[0, 0], [2, 0], [4, 0]], [[1, 0], [0, 0], [0, 0]], 0.0, 0.5)
+    /// >>> s.retire(1)
+    /// >>> s.in_play(1), s.next_collision()
+    /// (False, (3.0, 0, 2))
+    fn retire(&mut self, py: Python<'_>, i: &Bound<'_, PyAny>) -> PyResult<()> {
+        let i = read::ball_index("i", None, i, self.__len__(), "an int (a ball index)")?;
+        let result = each_dim!(&mut self.inner, s => s.retire(i));
+        result.map_err(|e| from_core(py, e))
+    }
+
+    /// Whether ball ``i`` is in play (not taken out by :meth:`retire` since its last
+    /// update).
+    fn in_play(&self, i: &Bound<'_, PyAny>) -> PyResult<bool> {
+        let i = read::ball_index("i", None, i, self.__len__(), "an int (a ball index)")?;
+        Ok(each_dim!(&self.inner, s => s.in_play(i)))
     }
 
     /// Gives balls ``indices`` new paths, all starting at one time ``t ≥`` :attr:`time`,
@@ -569,20 +655,36 @@ impl CollisionSchedule {
     }
 }
 
+/// A calendar's options from its keyword arguments: the box, the horizon, the table's
+/// objects (`segments`, `segment_sides`, `circles`, `targets`, `planes`, read by
+/// [`table_of`]) and whether transitions are reported.
+fn options_of<const D: usize>(
+    py: Python<'_>,
+    r#box: Option<&Bound<'_, PyAny>>,
+    t_max: f64,
+    [segments, segment_sides, circles, targets, planes]: [Option<&Bound<'_, PyAny>>; 5],
+    transitions: Option<&Bound<'_, PyAny>>,
+) -> PyResult<ScheduleOptions<D>> {
+    let transitions = match transitions {
+        Some(flag) => read::flag("transitions", flag)?,
+        None => false,
+    };
+    Ok(ScheduleOptions {
+        walls: walls_of::<D>(py, r#box)?,
+        table: table_of::<D>(py, segments, segment_sides, circles, targets, planes)?,
+        transitions,
+        t_max,
+    })
+}
+
 /// The calendar of `paths` in dimension `D`.
 fn build<const D: usize>(
     py: Python<'_>,
     paths: &Side<'_>,
     radii: &[f64],
-    walls: Option<Walls<D>>,
-    t_max: f64,
+    options: ScheduleOptions<D>,
 ) -> PyResult<Core<D>> {
     let paths = paths_of::<D>(paths).map_err(|e| from_core(py, e))?;
-    let options = ScheduleOptions {
-        walls,
-        t_max,
-        ..Default::default()
-    };
     run(py, calendar_kernel(paths.len()), || {
         Core::new(paths, radii, options)
     })
@@ -663,14 +765,18 @@ fn progress_bar(
     Ok(Some(ProgressBar(progress.clone().unbind())))
 }
 
-/// An event-driven simulation of smooth hard friction balls in a box, run in Rust on the
-/// calendar: a :class:`Simulation` ``(times, i, j, pos, vel)``.
+/// An event-driven simulation of smooth hard friction balls in a box, and on a table if
+/// given, run in Rust on the calendar: a :class:`Simulation` ``(times, i, j, pos, vel, kind,
+/// index, captured)``.
 ///
 /// Each ball moves as in :func:`collision_time` (slowed by its friction along its velocity
 /// until it stops; ``0`` for none). At each event, in :class:`CollisionSchedule`'s order,
 /// two touching balls exchange momentum along their line of centres with the given
 /// restitution and masses (the tangential components are kept), and a ball touching a wall
-/// has its velocity's normal component reflected; the balls involved go on from there. It
+/// has its velocity's normal component reflected, a ball touching a segment, a circle or a
+/// plane of the table has its velocity's component along the object's normal reflected with
+/// ``table_restitution``, and a ball whose centre enters a target is captured (at rest there,
+/// out of play); the balls involved go on from there. It
 /// runs until ``t_end``, ``max_events``, or until no event is left (every ball at rest).
 /// Balls pressed together part at a least speed (bounces ``2⁻²¹`` of their contact
 /// distance high) and a ball's later events at one instant are elastic, so that every run
@@ -697,14 +803,22 @@ fn progress_bar(
 ///     ``True`` for a progress bar (``tqdm``, which must be installed: the ``progress``
 ///     extra), or a tqdm-like bar of your own (``update``, ``set_postfix``, ``close``);
 ///     ``False`` or ``None`` (the default) for none. Moved on every 0.05 s.
+/// segments, segment_sides, circles, targets, planes
+///     The table's objects, as for :func:`path_geometry_times` (2-D); :func:`pool_table`
+///     gives a pool table's.
+/// table_restitution
+///     The coefficient of restitution of ball–object contacts, a number in ``[0, 1]``.
 ///
 /// Returns
 /// -------
 /// Simulation
 ///     A named tuple: ``times`` (float64, shape ``(E,)``), ``i`` and ``j`` (int64: the
-///     balls, ``j = -1`` for a wall), and ``pos``, ``vel`` (shape ``(N, 2)``): the state at
-///     ``t_end`` if finite and reached, else at the last event (``max_events``) or when
-///     every ball is at rest.
+///     balls, ``j = -1`` for a wall or an object), ``pos``, ``vel`` (shape ``(N, 2)``): the
+///     state at ``t_end`` if finite and reached, else at the last event (``max_events``) or
+///     when every ball is at rest (a captured ball at rest where it entered its target);
+///     ``kind`` and ``index`` (int64, shape ``(E,)``): what ball ``i`` met, as in
+///     :class:`Event`; ``captured`` (int64, shape ``(N,)``): each ball's target, ``-1`` for
+///     none.
 ///
 /// Raises
 /// ------
@@ -713,6 +827,8 @@ fn progress_bar(
 ///     ``[0, 1]``, a negative ``max_events``; no ``t_end``, no ``max_events`` and a ball
 ///     without friction (it would never end); a ball overlapping another or a wall, or
 ///     outside the box, at the start (``pos[i]``), or as wide as the box (``radius[i]``);
+///     a ball overlapping an object of the table or inside a target (``pos[i]``, kind
+///     ``overlaps_object``); a bad object (as :func:`path_geometry_times`);
 ///     more than ``1000 + 64·N`` events at one instant (``pos[i]``, naming the balls that
 ///     keep colliding).
 /// TypeError
@@ -729,8 +845,8 @@ fn progress_bar(
 /// --------
 /// >>> import ballcollide as bc
 /// >>> # A ball at 1 m/s towards a resting one in a 4 m × 1 m box: they swap velocities.
-/// >>> times, i, j, pos, vel = bc.simulate([[0.5, 0.5], [2, 0.5]], [[1, 0], [0, 0]], 0.0, 0.25,
-/// ...                                     box=([0, 0], [4, 1]), t_end=3.0)
+/// >>> times, i, j, pos, vel, *_ = bc.simulate([[0.5, 0.5], [2, 0.5]], [[1, 0], [0, 0]], 0.0,
+/// ...                                         0.25, box=([0, 0], [4, 1]), t_end=3.0)
 /// >>> times, i, j
 /// (array([1.  , 2.75]), array([0, 1]), array([ 1, -1]))
 /// >>> pos
@@ -739,12 +855,21 @@ fn progress_bar(
 /// >>> run = bc.simulate([[0.5, 0.5]], [[1, 0]], 0.0, 0.25, box=([0, 0], [2, 1]), t_end=2.0)
 /// >>> run.times, run.j  # one wall contact
 /// (array([1.25]), array([-1]))
+/// >>> # On a table: a pocket (a target of radius 0.05 at (1.5, 0.5)) captures the ball.
+/// >>> run = bc.simulate([[0.5, 0.5]], [[1, 0]], 0.0, 0.25, box=([0, 0], [2, 1]), t_end=2.0,
+/// ...                   targets=[[1.5, 0.5, 0.05]])
+/// >>> run.kind.tolist() == [bc.TARGET], round(float(run.times[0]), 12), run.captured
+/// (True, 0.95, array([0]))
 #[pyfunction]
 #[pyo3(
     signature = (pos, vel, friction, radius, *, r#box, mass=Given(None),
-                 restitution=Given(None), t_end=Given(None), max_events=None, progress=None),
+                 restitution=Given(None), t_end=Given(None), max_events=None, progress=None,
+                 segments=None, segment_sides=None, circles=None, targets=None, planes=None,
+                 table_restitution=Given(None)),
     text_signature = "(pos, vel, friction, radius, *, box, mass=1.0, restitution=1.0, \
-                      t_end=1e999, max_events=None, progress=False)"
+                      t_end=1e999, max_events=None, progress=False, segments=None, \
+                      segment_sides=None, circles=None, targets=None, planes=None, \
+                      table_restitution=1.0)"
 )]
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 pub(super) fn simulate<'py>(
@@ -759,6 +884,12 @@ pub(super) fn simulate<'py>(
     t_end: Given<'py>,
     max_events: Option<&Bound<'py, PyAny>>,
     progress: Option<&Bound<'py, PyAny>>,
+    segments: Option<&Bound<'py, PyAny>>,
+    segment_sides: Option<&Bound<'py, PyAny>>,
+    circles: Option<&Bound<'py, PyAny>>,
+    targets: Option<&Bound<'py, PyAny>>,
+    planes: Option<&Bound<'py, PyAny>>,
+    table_restitution: Given<'py>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let balls = balls(py, pos, vel, friction)?;
     let n = balls.len();
@@ -774,7 +905,8 @@ pub(super) fn simulate<'py>(
         restitution: restitution.number_or("restitution", 1.0)?,
         t_end: t_end.number_or("t_end", f64::INFINITY)?,
         max_events: read::count("max_events", max_events)?,
-        ..Default::default()
+        table: table_of::<2>(py, segments, segment_sides, circles, targets, planes)?,
+        table_restitution: table_restitution.number_or("table_restitution", 1.0)?,
     };
     let bar = progress_bar(py, progress, options.max_events)?;
     // Ctrl-C and the progress bar: the run looks for Python's signals, and moves the bar on,
@@ -824,6 +956,12 @@ pub(super) fn simulate<'py>(
         .iter()
         .map(|e| e.j.map_or(-1, index_i64))
         .collect();
+    let (kinds, indices): (Vec<i64>, Vec<i64>) = run.events.iter().map(logged_kind).unzip();
+    let captured: Vec<i64> = run
+        .captured
+        .iter()
+        .map(|c| c.map_or(-1, index_i64))
+        .collect();
     let state = |f: fn(&crate::Ball) -> [f64; 2]| -> PyResult<Bound<'py, PyArray2<f64>>> {
         let rows: Vec<Vec<f64>> = run.balls.iter().map(|b| f(b).to_vec()).collect();
         if rows.is_empty() {
@@ -837,5 +975,8 @@ pub(super) fn simulate<'py>(
         PyArray1::from_vec(py, j),
         state(|b| b.position().into())?,
         state(|b| b.velocity().into())?,
+        PyArray1::from_vec(py, kinds),
+        PyArray1::from_vec(py, indices),
+        PyArray1::from_vec(py, captured),
     ))
 }

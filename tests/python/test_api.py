@@ -661,8 +661,9 @@ def test_version_and_public_api() -> None:
 def test_simulate_returns_a_named_result() -> None:
     run = bc.simulate([[0.5, 0.5]], [[1, 0]], 0.0, 0.25, box=([0, 0], [2, 1]), t_end=2.0)
     assert isinstance(run, bc.Simulation)
-    assert run._fields == ("times", "i", "j", "pos", "vel")
-    times, i, j, pos, vel = run  # still a tuple
+    assert run._fields == ("times", "i", "j", "pos", "vel", "kind", "index", "captured")
+    times, i, j, pos, vel, kind, index, captured = run  # still a tuple
+    assert (kind.tolist(), index.tolist(), captured.tolist()) == ([bc.WALL], [1], [-1])
     assert pos is run.pos
     assert times is run.times and vel is run.vel
     assert (times.tolist(), i.tolist(), j.tolist()) == ([1.25], [0], [-1])

@@ -88,6 +88,21 @@ PATHS_AB = {
     "radius": 0.5,
 }
 BOX = ([-4.0, -4.0], [4.0, 4.0])
+# The objects of the calendar and simulate (2-D): as OBJECTS, clear of SCENE's balls and
+# inside BOX, and what each argument accepts among BAD.
+OBJECTS_2D = {
+    "segments": [[[-1.0, -1.0], [-1.0, 1.0]]],
+    "segment_sides": 1,
+    "circles": [[3.0, 2.0, 0.1]],
+    "targets": [[3.0, -2.0, 0.5]],
+    "planes": [[[3.9, 0.0], [-1.0, 0.0]]],
+}
+TABLE_ACCEPTS = {
+    **dict.fromkeys(["segments", "circles", "targets", "planes"], OPTIONAL),
+    "segment_sides": SIDES,
+}
+TRANSITIONS = {"bool", "numpy bool", "None"}  # transitions=: True, False or None (off)
+
 # One object of each kind, none of them in ONE_PATH's way but the plane.
 OBJECTS = {
     "segments": [[[-1.0, -1.0], [-1.0, 1.0]]],
@@ -211,7 +226,9 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
             "t_end": math.inf,
             "max_events": 5,
             "progress": False,
-        },
+            "table_restitution": 1.0,
+        }
+        | OBJECTS_2D,
         {
             "pos": NOTHING,
             "vel": NOTHING,
@@ -223,21 +240,27 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
             "t_end": NUMBER,
             "max_events": COUNT,
             "progress": FLAG,
+            "table_restitution": NOTHING,
+            **TABLE_ACCEPTS,
         },
     ),
     "CollisionSchedule": (
         bc.CollisionSchedule,
-        TWO_PATHS | {"radius": 0.25, "box": BOX, "t_max": math.inf},
+        TWO_PATHS
+        | {"radius": 0.25, "box": BOX, "t_max": math.inf, "transitions": False}
+        | OBJECTS_2D,
         {
             **dict.fromkeys(TWO_PATHS, NOTHING),
             "radius": NUMBER,
             "box": OPTIONAL,
             "t_max": NUMBER,
+            "transitions": TRANSITIONS,
+            **TABLE_ACCEPTS,
         },
     ),
     "CollisionSchedule.from_balls": (
         bc.CollisionSchedule.from_balls,
-        SCENE | {"t": 0.0, "box": BOX, "t_max": math.inf},
+        SCENE | {"t": 0.0, "box": BOX, "t_max": math.inf, "transitions": False} | OBJECTS_2D,
         {
             "pos": NOTHING,
             "vel": NOTHING,
@@ -246,6 +269,43 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
             "t": ANY_NUMBER,  # the calendar's time, any finite number
             "box": OPTIONAL,
             "t_max": NUMBER,
+            "transitions": TRANSITIONS,
+            **TABLE_ACCEPTS,
+        },
+    ),
+    **{
+        f"CollisionSchedule.{name}": (
+            lambda name=name, **kw: getattr(schedule(), name)(**kw),
+            {"i": 1},
+            {"i": NOTHING},
+        )
+        for name in ("retire", "in_play")
+    },
+    "pool_table": (
+        bc.pool_table,
+        {
+            "width": 1.27,
+            "length": 2.54,
+            "corner_mouth": 0.1168,
+            "side_mouth": 0.1295,
+            "jaw_length": 0.04,
+            "jaw_radius": 0.005,
+            "corner_jaw_angle": 7.0,
+            "side_jaw_angle": 14.0,
+            "pocket_radius": 0.045,
+        },
+        {
+            # A wider or longer table (not 2**64 m: its mouths round away), longer jaws,
+            # bigger pockets: fine.
+            "width": {"float"},
+            "length": {"float"},
+            **dict.fromkeys(["jaw_length", "pocket_radius"], NUMBER),
+            # Mouths or tips of 1.5 m (or 2**64) leave no rail; angles below 45 degrees.
+            "corner_mouth": NOTHING,
+            "side_mouth": {"float"},
+            "jaw_radius": NOTHING,
+            "corner_jaw_angle": {"float"},
+            "side_jaw_angle": {"float"},
         },
     ),
     "CollisionSchedule.update": (
@@ -299,7 +359,7 @@ def test_every_public_call_and_argument_is_walked() -> None:
         target: Any = bc
         for part in name.split("."):
             target = getattr(target, part)
-        if name.startswith("CollisionSchedule.update"):
+        if name.startswith("CollisionSchedule.") and name != "CollisionSchedule.from_balls":
             target = getattr(schedule(), name.split(".")[1])
         parameters = set(inspect.signature(target).parameters)
         assert set(valid) == parameters == set(accepts), name
@@ -423,7 +483,7 @@ def test_mass_ratios_beyond_the_float_range_give_finite_velocities(
     # wall, or is sent off by it, the heavy one barely changes; every velocity stays finite,
     # and the run goes on.
     pos, vel = [[0.0, 0.0], [1.0, 0.0]], [[2.0, 0.0], [0.0, 0.0]]
-    times, i, j, _, v = bc.simulate(
+    times, i, j, _, v, *_ = bc.simulate(
         pos, vel, 0.0, 0.25, box=BOX, mass=list(masses), restitution=1.0, max_events=1
     )
     assert (times.tolist(), i.tolist(), j.tolist()) == ([0.25], [0], [1])
