@@ -122,6 +122,8 @@ pub enum InputErrorKind {
     ZeroNormal,
     /// A segment's side that is not −1, 0 or 1.
     InvalidSide(i64),
+    /// An acceleration of gravity that is zero or negative.
+    NonPositiveGravity(f64),
 }
 
 impl InputErrorKind {
@@ -163,6 +165,7 @@ impl InputErrorKind {
             Self::NonPositiveTargetRadius(_) => "non_positive_target_radius",
             Self::ZeroNormal => "zero_normal",
             Self::InvalidSide(_) => "invalid_side",
+            Self::NonPositiveGravity(_) => "non_positive_gravity",
         }
     }
 
@@ -184,7 +187,8 @@ impl InputErrorKind {
             | Self::NotInUnitInterval(x)
             | Self::NonPositiveMass(x)
             | Self::NegativeCircleRadius(x)
-            | Self::NonPositiveTargetRadius(x) => Some(x),
+            | Self::NonPositiveTargetRadius(x)
+            | Self::NonPositiveGravity(x) => Some(x),
             Self::InvalidSide(side) => Some(side as f64),
             Self::DecreasingStart { start, .. } | Self::StartsDiffer { start, .. } => Some(start),
             Self::BeforeCurrentTime { time, .. } => Some(time),
@@ -453,6 +457,7 @@ impl fmt::Display for InputErrorKind {
             Self::InvalidSide(side) => {
                 write!(f, "a segment's side must be -1, 0 or 1, got {side}")
             }
+            Self::NonPositiveGravity(x) => write!(f, "gravity must be > 0, got {}", Brief(x)),
         }
     }
 }
