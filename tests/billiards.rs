@@ -15,7 +15,8 @@
 mod rng;
 
 use ballcollide::billiards::{
-    BallParams, BallPath, BallState, MotionState, ball_path, evolve, slip_velocity,
+    BallBallResolver, BallParams, BallPath, BallState, FrictionalInelastic, KISS_SPACER,
+    MotionState, ball_path, evolve, make_kiss, slip_velocity,
 };
 use ballcollide::geometry::{ObjectKind, PoolTable};
 use ballcollide::schedule::{CollisionSchedule, Event, ScheduleOptions};
@@ -387,4 +388,30 @@ fn a_shots_events_in_the_calendar() {
         (motions[0].path().position_at(hit.time) - motions[1].path().position_at(hit.time)).norm();
     assert!((gap - 2.0 * r).abs() < 1e-12, "{gap}");
     assert!(roll.time < rail.time && rail.time < hit.time);
+}
+
+/// Where pooltool's `make_kiss` fails (balls with the same velocity: its quadratic has no
+/// root, and it takes the argmin of nothing), the balls are pushed apart along the line of
+/// centres; a collision of them is resolved all the same, momentum kept.
+#[test]
+fn balls_moving_together_are_pushed_apart() {
+    let params = BallParams::default();
+    let r = params.radius;
+    let v = Vector2::new(0.3, 0.4);
+    let w = Vector3::new(-0.4 / r, 0.3 / r, 0.0);
+    let a = BallState::new(Vector2::new(0.5, 0.5), v, w, MotionState::Rolling);
+    let b = BallState {
+        position: Vector2::new(0.5 + 2.0 * r - 1e-7, 0.5),
+        ..a
+    };
+    let [ka, kb] = make_kiss([&a, &b], r);
+    let gap = (kb.position - ka.position).norm();
+    assert!((gap - (2.0 * r + KISS_SPACER)).abs() < 1e-15, "{gap}");
+    assert_eq!((ka.position.y, kb.position.y), (0.5, 0.5));
+    let [ra, rb] = FrictionalInelastic::default().resolve([&a, &b], [&params, &params]);
+    let momentum = (ra.velocity + rb.velocity - 2.0 * v).norm();
+    assert!(momentum < 1e-15, "{momentum}");
+    // Along the line they had one speed: pooltool's tie-break makes the second ball the
+    // "chaser", which gives a tenth of its speed along the line to the first.
+    assert!((ra.velocity.x - 0.33).abs() < 1e-15 && (rb.velocity.x - 0.27).abs() < 1e-15);
 }

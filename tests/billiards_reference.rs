@@ -1,18 +1,23 @@
 //! `ballcollide::billiards` against pooltool 0.6.0's own functions.
 //!
 //! `tests/data/billiards_cases.txt` is written by `tools/billiards_reference.py`, which calls
-//! pooltool's functions (never this library) on seeded random balls: 2,000 cases of each kind.
+//! pooltool's functions (never this library) on seeded random balls: 2,000 cases of each kind
+//! (14,000).
 //! Each output is compared with ours two ways: equal as numbers (pooltool's arithmetic
 //! reproduced), and the difference against the scale of the terms it is made of (the position,
 //! the speeds and the spins that enter it, over the time it covers). The bar:
 //!
 //! - equal, every case: the slip (`rel_velocity`), the three transition times, the next
-//!   transition and its delay, the spin decay, the roll (`_evolve_roll_state`), and the motion
-//!   state `evolve` ends in and the kinds of a lone ball's transitions;
+//!   transition and its delay, the spin decay, the roll (`_evolve_roll_state`), the motion
+//!   state `evolve` ends in (but at a transition's time to a few roundings) and the kinds of a
+//!   lone ball's transitions, and for two balls at contact `make_kiss`'s positions and the
+//!   Alciatore friction at them;
 //! - within `1e-12` of the scale: the slide (pooltool turns into the velocity's frame and back,
 //!   with `arctan2`, `cos`, `sin` and BLAS; we stay in the table's), `evolve` through its
-//!   chain, a lone ball's transition times and states against [`ball_path`]'s, and
-//!   [`ball_path`]'s positions and velocities against pooltool's evolution.
+//!   chain, a lone ball's transition times and states against [`ball_path`]'s,
+//!   [`ball_path`]'s positions and velocities against pooltool's evolution, and the states
+//!   after a ball–ball collision (`FrictionalInelastic.resolve`, in the line of centres' frame
+//!   turned by its angle there, built from its unit vector here).
 //!
 //! Run with `--nocapture` for the counts and the worst differences.
 
@@ -20,8 +25,9 @@
 mod fields;
 
 use ballcollide::billiards::{
-    BallParams, BallState, MotionState, TransitionKind, ball_path, evolve, evolve_roll,
-    evolve_slide, evolve_spin, next_transition, roll_time, slide_time, slip_velocity, spin_time,
+    AlciatoreFriction, BallBallResolver, BallParams, BallState, FrictionalInelastic, MotionState,
+    TransitionKind, ball_path, evolve, evolve_roll, evolve_slide, evolve_spin, make_kiss,
+    next_transition, roll_time, slide_time, slip_velocity, spin_time,
 };
 use fields::Fields;
 use nalgebra::{Vector2, Vector3};
@@ -70,6 +76,7 @@ impl Tally {
 struct Case<'a> {
     line: usize,
     kind: &'a str,
+    category: &'a str,
     inputs: Vec<&'a str>,
     outputs: Vec<&'a str>,
 }
@@ -84,10 +91,11 @@ fn cases() -> impl Iterator<Item = Case<'static>> {
             .expect("a ':' between inputs and outputs");
         let mut words = head.split_whitespace();
         let kind = words.next().expect("a kind");
-        let _category = words.next().expect("a category");
+        let category = words.next().expect("a category");
         Some(Case {
             line: k + 1,
             kind,
+            category,
             inputs: words.collect(),
             outputs: tail.split_whitespace().collect(),
         })
@@ -194,7 +202,18 @@ fn the_table_holds_every_kind() {
         *counts.entry(case.kind).or_insert(0) += 1;
     }
     let kinds: Vec<_> = counts.keys().copied().collect();
-    assert_eq!(kinds, ["evolve", "path", "roll", "slide", "spin", "times"]);
+    assert_eq!(
+        kinds,
+        [
+            "ball_ball",
+            "evolve",
+            "path",
+            "roll",
+            "slide",
+            "spin",
+            "times"
+        ]
+    );
     assert!(counts.values().all(|&n| n >= 2000), "{counts:?}");
 }
 
@@ -409,4 +428,72 @@ fn a_rolling_spin_as_pooltool_turns_it() {
         std::f64::consts::FRAC_PI_2.cos() * w
     );
     assert_eq!(later.angular_velocity.y, w);
+}
+
+/// Two balls at contact through pooltool's default ball–ball model: `make_kiss`'s positions
+/// and the friction at them equal pooltool's; the states after `resolve` within a few
+/// roundings of the speeds and spins involved (pooltool turns into the line of centres' frame
+/// by its angle, we by its unit vector).
+#[test]
+fn ball_ball_collisions_are_pooltools() {
+    let model = FrictionalInelastic::default();
+    let (mut kiss, mut friction, mut after) =
+        (Tally::default(), Tally::default(), Tally::default());
+    let mut categories = std::collections::BTreeMap::new();
+    let mut separated = 0;
+    for case in cases().filter(|c| c.kind == "ball_ball") {
+        let line = case.line;
+        *categories.entry(case.category).or_insert(0) += 1;
+        let mut f = fields(line, &case.inputs);
+        let read_ball_params = |f: &mut Fields<'_>| BallParams {
+            e_b: 0.0,
+            ..read_params(f)
+        };
+        let mut params = [read_ball_params(&mut f), BallParams::default()];
+        params[0].e_b = f.number();
+        params[1] = read_ball_params(&mut f);
+        params[1].e_b = f.number();
+        let balls = [read_state(&mut f), read_state(&mut f)];
+        let mut out = fields(line, &case.outputs);
+        let kissed = make_kiss([&balls[0], &balls[1]], params[0].radius);
+        let magnitude = balls[0].position.amax().max(balls[1].position.amax());
+        for ball in &kissed {
+            for k in 0..2 {
+                assert!(
+                    kiss.add(ball.position[k], out.number(), magnitude, line),
+                    "line {line}"
+                );
+            }
+        }
+        let u_b = AlciatoreFriction::default()
+            .between([&kissed[0], &kissed[1]], [&params[0], &params[1]]);
+        assert!(friction.add(u_b, out.number(), u_b, line), "line {line}");
+        let resolved = model.resolve([&balls[0], &balls[1]], [&params[0], &params[1]]);
+        let solved = model.solve([&kissed[0], &kissed[1]], [&params[0], &params[1]]);
+        separated += usize::from(solved != resolved);
+        let speed: f64 = balls
+            .iter()
+            .map(|b| b.velocity.norm() + b.angular_velocity.norm() * params[0].radius)
+            .sum();
+        let scales = Scales {
+            position: magnitude,
+            velocity: speed.max(f64::MIN_POSITIVE),
+            spin: (speed / params[0].radius).max(f64::MIN_POSITIVE),
+        };
+        for ours in &resolved {
+            assert_eq!(read_motion(&mut out), ours.motion, "line {line}");
+            assert!(
+                compare_state(&mut out, ours, &scales, &mut after),
+                "line {line}: {ours:?}"
+            );
+        }
+    }
+    kiss.report("ball-ball: make_kiss");
+    friction.report("ball-ball: friction");
+    after.report("ball-ball: states after");
+    println!("ball-ball categories: {categories:?}; {separated} moving on together (separated)");
+    assert!(
+        separated >= 50,
+        "separate_touching's case seen: {separated}"
+    );
 }

@@ -33,7 +33,11 @@ wx wy wz``, ``motion`` pooltool's state number; a state's ``rvw`` on the table h
 * ``spin CAT P wz t : wz'``;
 * ``slide CAT P S t : rx ry vx vy wx wy wz`` (and ``roll``, ``evolve`` likewise; ``evolve``
   writes the returned motion before the vectors);
-* ``path CAT P S start : n`` then ``n`` transitions ``time type motion rx ry vx vy wx wy wz``.
+* ``path CAT P S start : n`` then ``n`` transitions ``time type motion rx ry vx vy wx wy wz``;
+* ``ball_ball CAT P e_b P e_b S S : kx1 ky1 kx2 ky2 u_b S' S'``: two balls at contact
+  resolved by pooltool's default ball–ball model (``FrictionalInelastic`` with
+  ``AlciatoreBallBallFriction``): the positions ``make_kiss`` gives them, the friction at
+  those positions, and both states after ``resolve``.
 """
 
 from __future__ import annotations
@@ -44,6 +48,7 @@ import sys
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
+import attrs
 import numpy as np
 import pooltool.constants as const
 import pooltool.ptmath as ptmath
@@ -57,6 +62,7 @@ from pooltool.physics.evolve import (
     _evolve_slide_state,
     evolve_ball_motion,
 )
+from pooltool.physics.resolve.ball_ball.frictional_inelastic import FrictionalInelastic
 from pooltool.physics.resolve.transition import CanonicalTransition
 
 SEED = 20261240
@@ -323,6 +329,74 @@ def path_cases(rng: np.random.Generator) -> Iterator[str]:
         yield f"{head} : {len(records)} " + " ".join(records)
 
 
+GAPS = ["touching", "rounding", "spacer", "overlap", "apart"]
+
+
+def contact_gap(rng: np.random.Generator, kind: str, R: float) -> float:
+    """How far from 2R two balls' centres are at a collision of ``kind``: exactly 2R, a few
+    roundings off, within pooltool's 1e-6 spacer, overlapping (its collisions of overlapping
+    balls), or further apart than the spacer."""
+    if kind == "touching":
+        return 0.0
+    if kind == "rounding":
+        return float(rng.integers(-8, 9)) * 2 * R * 2.0**-53
+    if kind == "spacer":
+        return float(rng.uniform(0.0, 1e-6))
+    if kind == "overlap":
+        return -log_uniform(rng, 1e-12, 1e-3 * R)
+    return log_uniform(rng, 1e-6, 1e-3)
+
+
+def ball_ball_cases(rng: np.random.Generator) -> Iterator[str]:
+    """Two balls at contact, resolved by pooltool's default model (``FrictionalInelastic``
+    with ``AlciatoreBallBallFriction``): the kissed positions, the friction, the states."""
+    model = FrictionalInelastic()
+    while True:
+        p1 = random_params(rng)
+        p1 = attrs.evolve(p1, e_b=float(rng.uniform(0.5, 1.0))) if rng.random() < 0.3 else p1
+        p2 = attrs.evolve(p1, e_b=float(rng.uniform(0.5, 1.0))) if rng.random() < 0.3 else p1
+        s1 = int(rng.choice(MOTIONS[:4], p=[0.5, 0.3, 0.1, 0.1]))
+        s2 = int(rng.choice(MOTIONS[:4], p=[0.3, 0.2, 0.1, 0.4]))
+        rvw1, rvw2 = random_state(rng, p1, s1), random_state(rng, p2, s2)
+        angle = rng.uniform(0.0, 2.0 * math.pi)
+        normal = np.array([math.cos(angle), math.sin(angle)])
+        if s1 in (const.sliding, const.rolling) and rng.random() < 0.7:
+            # aimed at the other ball, at any cut up to 80 degrees
+            speed = math.hypot(*rvw1[1, :2])
+            cut = angle + rng.uniform(-1.4, 1.4)
+            rvw1[1, :2] = [speed * math.cos(cut), speed * math.sin(cut)]
+            if s1 == const.rolling:
+                rvw1[2, :2] = [-rvw1[1, 1] / p1.R, rvw1[1, 0] / p1.R]
+        together = s1 in (const.sliding, const.rolling) and rng.random() < 0.1
+        if together:  # moving on nearly together (pooltool's resolve_continually_touching)
+            s2 = s1
+            rvw2[1, :2] = rvw1[1, :2] * (1 + rng.uniform(-2e-3, 2e-3))
+            rvw2[2] = rvw1[2]
+        gap = GAPS[int(rng.integers(len(GAPS)))]
+        distance = 2 * p1.R + contact_gap(rng, gap, p1.R)
+        rvw2[0, :2] = rvw1[0, :2] + distance * normal
+        b1, b2 = make_ball(p1, rvw1, s1, 0.0), make_ball(p2, rvw2, s2, 0.0)
+        try:
+            k1, k2 = model.make_kiss(b1.copy(), b2.copy())
+        except ValueError:
+            continue  # no root kept: pooltool's make_kiss fails (argmin of nothing)
+        u_b = model.friction.calculate_friction(k1, k2)
+        f1, f2 = model.resolve(b1, b2, inplace=False)
+        for before, after in ((b1, f1), (b2, f2)):
+            assert after.state.rvw[0, 2] == before.state.rvw[0, 2]
+            assert after.state.rvw[1, 2] == 0.0
+        category = gap + ("_together" if together else "")
+        inputs = f"{fmt_ball_params(p1)} {fmt_ball_params(p2)} {fmt_state(s1, rvw1)} "
+        inputs += fmt_state(s2, rvw2)
+        kissed = fmt(*k1.state.rvw[0, :2], *k2.state.rvw[0, :2], u_b)
+        after = f"{fmt_state(f1.state.s, f1.state.rvw)} {fmt_state(f2.state.s, f2.state.rvw)}"
+        yield f"ball_ball {category} {inputs} : {kissed} {after}"
+
+
+def fmt_ball_params(p: BallParams) -> str:
+    return f"{fmt_params(p)} {fmt(p.e_b)}"
+
+
 KINDS: list[tuple[str, Callable[[np.random.Generator], Iterator[str]]]] = [
     ("times", times_cases),
     ("spin", spin_cases),
@@ -330,6 +404,7 @@ KINDS: list[tuple[str, Callable[[np.random.Generator], Iterator[str]]]] = [
     ("roll", roll_cases),
     ("evolve", evolve_cases),
     ("path", path_cases),
+    ("ball_ball", ball_ball_cases),
 ]
 
 HEADER = """\
@@ -344,6 +419,8 @@ HEADER = """\
 # path CAT P S start : n, then n times: time type motion rx ry vx vy wx wy wz
 #   (a lone ball's transitions as simulate chains them: _next_transition, evolve_ball_motion
 #   over event.time - t, CanonicalTransition.resolve)
+# ball_ball CAT P1 e_b1 P2 e_b2 S1 S2 : kx1 ky1 kx2 ky2 u_b S1' S2'
+#   (FrictionalInelastic: make_kiss's positions, AlciatoreBallBallFriction at them, resolve)
 """
 
 

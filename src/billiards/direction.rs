@@ -1,8 +1,8 @@
-//! Lengths and directions of vectors in the plane, computed as pooltool computes them (its
-//! `norm3d` and `unit_vector` on vectors whose third component is 0), so that the times and
-//! states built from them have its bits.
+//! Lengths, directions and cross products of vectors, computed as pooltool computes them (its
+//! `norm3d`, `unit_vector` and `cross`; in the plane, on vectors whose third component is 0),
+//! so that what is built from them has its bits.
 
-use nalgebra::Vector2;
+use nalgebra::{Vector2, Vector3};
 
 /// `|v|` as pooltool's `norm3d`: `sqrt(x·x + y·y)`, without the scaling of `hypot` (its
 /// third term, `0·0`, changes no bit).
@@ -16,6 +16,26 @@ pub(super) fn norm(v: Vector2<f64>) -> f64 {
 pub(super) fn unit(v: Vector2<f64>) -> Vector2<f64> {
     let n = norm(v);
     if n == 0.0 { Vector2::zeros() } else { v / n }
+}
+
+/// `|v|` in space, as pooltool's `norm3d`: `sqrt(x·x + y·y + z·z)`, left to right.
+pub(super) fn norm3(v: Vector3<f64>) -> f64 {
+    (v.x * v.x + v.y * v.y + v.z * v.z).sqrt()
+}
+
+/// `v / |v|` in space, as pooltool's `unit_vector` (NaN for `v = 0`, as pooltool's: callers
+/// check first).
+pub(super) fn unit3(v: Vector3<f64>) -> Vector3<f64> {
+    v / norm3(v)
+}
+
+/// `a × b`, component by component as pooltool's `cross`.
+pub(super) fn cross(a: Vector3<f64>, b: Vector3<f64>) -> Vector3<f64> {
+    Vector3::new(
+        a.y * b.z - a.z * b.y,
+        a.z * b.x - a.x * b.z,
+        a.x * b.y - a.y * b.x,
+    )
 }
 
 #[cfg(test)]

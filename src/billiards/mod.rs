@@ -5,11 +5,13 @@
 //! A billiard ball on the cloth is in one of pooltool's motion states ([`MotionState`]):
 //! sliding (its contact point slips, and the cloth's friction acts against the slip), rolling,
 //! spinning in place about the vertical, stationary, or pocketed. Each state ends at a time
-//! known in closed form, and the next one follows ([`next_transition`]). The functions here
-//! compute what pooltool's do, to the bit where the arithmetic can be the same (the times,
-//! the roll, the spin), and to a few roundings where pooltool's goes through rotations and
-//! BLAS (the slide); `tests/billiards_pooltool.rs` checks them against pooltool's own
-//! functions on thousands of cases (`tools/billiards_reference.py`).
+//! known in closed form, and the next one follows ([`next_transition`]). Two balls that meet
+//! are resolved by a [`BallBallResolver`] ([`FrictionalInelastic`], pooltool's default). The
+//! functions here compute what pooltool's do, to the bit where the arithmetic can be the same
+//! (the times, the roll, the spin, the placing of colliding balls and their friction), and to
+//! a few roundings where pooltool's goes through rotations and BLAS (the slide, the
+//! collision); `tests/billiards_reference.rs` checks them against pooltool's own functions on
+//! thousands of cases (`tools/billiards_reference.py`).
 //!
 //! ## The map
 //!
@@ -17,7 +19,7 @@
 //! |---|---|
 //! | `params.rs` | [`BallParams`]: mass, radius, the frictions and restitutions, `g`, with pooltool's defaults |
 //! | `state.rs` | [`BallState`] (position, velocity, angular velocity, motion state) and [`MotionState`] |
-//! | `direction.rs` | lengths and unit vectors in the plane, with pooltool's arithmetic |
+//! | `direction.rs` | lengths, unit vectors and cross products, with pooltool's arithmetic |
 //! | `slip_velocity.rs` | [`slip_velocity`]: the contact point's velocity on the cloth (pooltool's `rel_velocity`) |
 //! | `transition_time.rs` | [`slide_time`], [`roll_time`], [`spin_time`]: how long each state lasts |
 //! | `transition.rs` | [`TransitionKind`], [`NextTransition`], [`next_transition`]: which state comes next, and when; [`TransitionKind::apply`] (pooltool's `CanonicalTransition`) |
@@ -25,6 +27,8 @@
 //! | `evolve_slide.rs` | [`evolve_slide`]: a sliding ball `t` later |
 //! | `evolve_roll.rs` | [`evolve_roll`]: a rolling ball `t` later |
 //! | `evolve.rs` | [`evolve`]: any state `t` later, through its transitions (pooltool's `evolve_ball_motion`) |
+//! | `ball_ball.rs` | [`BallBallResolver`], the trait of ball–ball collision models, and the steps pooltool runs around each: [`make_kiss`], [`separate_touching`] |
+//! | `frictional_inelastic.rs` | [`FrictionalInelastic`], pooltool's default ball–ball model, and its friction [`AlciatoreFriction`] |
 //! | `ball_path.rs` | [`ball_path`], [`BallPath`]: the motion until the ball stops as constant-acceleration segments, with the state at each segment's start |
 //!
 //! ```
@@ -43,23 +47,27 @@
 //! # Ok::<(), ballcollide::InputError>(())
 //! ```
 
+mod ball_ball;
 mod ball_path;
 mod direction;
 mod evolve;
 mod evolve_roll;
 mod evolve_slide;
 mod evolve_spin;
+mod frictional_inelastic;
 mod params;
 mod slip_velocity;
 mod state;
 mod transition;
 mod transition_time;
 
+pub use ball_ball::{BallBallResolver, KISS_SPACER, make_kiss, separate_touching};
 pub use ball_path::{BallPath, ball_path};
 pub use evolve::evolve;
 pub use evolve_roll::evolve_roll;
 pub use evolve_slide::evolve_slide;
 pub use evolve_spin::evolve_spin;
+pub use frictional_inelastic::{AlciatoreFriction, FrictionalInelastic};
 pub use params::BallParams;
 pub use slip_velocity::slip_velocity;
 pub use state::{BallState, MotionState};
