@@ -129,6 +129,8 @@ pub enum InputErrorKind {
         /// What it must be, e.g. `"must be > 0"`.
         rule: &'static str,
     },
+    /// An acceleration of gravity that is zero or negative.
+    NonPositiveGravity(f64),
 }
 
 impl InputErrorKind {
@@ -171,6 +173,7 @@ impl InputErrorKind {
             Self::ZeroNormal => "zero_normal",
             Self::InvalidSide(_) => "invalid_side",
             Self::TableDimension { .. } => "table_dimension",
+            Self::NonPositiveGravity(_) => "non_positive_gravity",
         }
     }
 
@@ -192,7 +195,8 @@ impl InputErrorKind {
             | Self::NotInUnitInterval(x)
             | Self::NonPositiveMass(x)
             | Self::NegativeCircleRadius(x)
-            | Self::NonPositiveTargetRadius(x) => Some(x),
+            | Self::NonPositiveTargetRadius(x)
+            | Self::NonPositiveGravity(x) => Some(x),
             Self::InvalidSide(side) => Some(side as f64),
             Self::TableDimension { value, .. } => Some(value),
             Self::DecreasingStart { start, .. } | Self::StartsDiffer { start, .. } => Some(start),
@@ -463,6 +467,7 @@ impl fmt::Display for InputErrorKind {
             Self::InvalidSide(side) => {
                 write!(f, "a segment's side must be -1, 0 or 1, got {side}")
             }
+            Self::NonPositiveGravity(x) => write!(f, "gravity must be > 0, got {}", Brief(x)),
         }
     }
 }

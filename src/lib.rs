@@ -13,6 +13,8 @@
 //! - [`geometry`]: static objects (segments, circles, targets, planes) and when a ball on a
 //!   path first touches one;
 //! - [`poly`]: real-root solvers for polynomials of degree ≤ 4;
+//! - [`billiards`]: billiard balls with pooltool's physics: sliding, rolling and spinning, as
+//!   paths;
 //! - [`scene`]: many balls at once: earliest collisions, with a broad phase;
 //! - [`schedule`]: an event calendar: the next collision among N balls, kept up to date.
 //!
@@ -28,6 +30,7 @@
 #![warn(missing_docs)]
 
 pub mod batch;
+pub mod billiards;
 pub mod coefficients;
 pub mod collision;
 pub mod error;

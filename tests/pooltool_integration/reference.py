@@ -26,15 +26,20 @@ SAME_TIME = 1e-9  # s: two detectors' times of one event
 POCKETED = 4
 
 
-def benchmark() -> Any:
-    """``benchmarks/pooltool_dropin.py`` as a module (its :func:`break_shot`)."""
-    path = ROOT / "benchmarks" / "pooltool_dropin.py"
-    spec = importlib.util.spec_from_file_location("pooltool_dropin", path)
+def script(relative: str) -> Any:
+    """The repository's script at ``relative`` (a path from its root) as a module."""
+    path = ROOT / relative
+    spec = importlib.util.spec_from_file_location(path.stem, path)
     assert spec and spec.loader
     module = importlib.util.module_from_spec(spec)
     sys.modules[spec.name] = module
     spec.loader.exec_module(module)
     return module
+
+
+def benchmark() -> Any:
+    """``benchmarks/pooltool_dropin.py`` as a module (its :func:`break_shot`)."""
+    return script("benchmarks/pooltool_dropin.py")
 
 
 def rvw_after(ball: Any, dt: float) -> np.ndarray:

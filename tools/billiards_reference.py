@@ -1,0 +1,451 @@
+"""pooltool 0.6.0's own answers for ``ballcollide.billiards`` (the motion of a billiard ball).
+
+This script draws seeded random balls and asks pooltool's own functions what they do: the
+transition times (``ptmath.get_slide_time``, ``get_roll_time``, ``get_spin_time``), the slip
+(``ptmath.rel_velocity``), the next transition (``_next_transition`` of its event loop), the
+spin decay (``_evolve_perpendicular_spin_component``), the slide and the roll
+(``_evolve_slide_state``, ``_evolve_roll_state``), the chained evolution
+(``evolve_ball_motion``), and a lone ball's transitions until it stops, chained as its
+``simulate`` loop chains them (``_next_transition``, ``evolve_ball_motion`` over the time to
+the event, ``CanonicalTransition.resolve``).  It writes inputs and outputs to
+``tests/data/billiards_cases.txt``, which ``tests/billiards_reference.rs`` reads.  It does not
+import ballcollide.  It needs pooltool (run it in ``.venv-pooltool``, made by
+``scripts/install-pooltool``).
+
+Every number is written as Python's ``repr`` of a float64, which reads back to the same
+float: the inputs are exact, and outputs can be compared to the bit.
+
+Usage::
+
+    .venv-pooltool/bin/python tools/billiards_reference.py            # the whole table
+    .venv-pooltool/bin/python tools/billiards_reference.py --count 50  # the first 50 of each
+
+Each kind of case has its own random stream, so a smaller ``--count`` gives the first lines
+of each kind of the whole table (``tests/pooltool_integration/test_billiards_reference.py``
+regenerates a few hundred and compares them with the committed file).
+
+Line formats (``P`` = ``m R u_s u_r u_sp_proportionality g``; ``S`` = ``motion rx ry vx vy
+wx wy wz``, ``motion`` pooltool's state number; a state's ``rvw`` on the table has
+``r_z = R`` and ``v_z = 0``, which pooltool's functions keep exactly, and this script checks):
+
+* ``times CAT P S : ux uy slide roll spin next delay`` (``next`` the transition's event type
+  or ``none``; ``delay`` its time from the state's, 0);
+* ``spin CAT P wz t : wz'``;
+* ``slide CAT P S t : rx ry vx vy wx wy wz`` (and ``roll``, ``evolve`` likewise; ``evolve``
+  writes the returned motion before the vectors);
+* ``path CAT P S start : n`` then ``n`` transitions ``time type motion rx ry vx vy wx wy wz``;
+* ``ball_ball CAT P e_b P e_b S S : kx1 ky1 kx2 ky2 u_b S' S'``: two balls at contact
+  resolved by pooltool's default ball–ball model (``FrictionalInelastic`` with
+  ``AlciatoreBallBallFriction``): the positions ``make_kiss`` gives them, the friction at
+  those positions, and both states after ``resolve``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import attrs
+import numpy as np
+import pooltool.constants as const
+import pooltool.ptmath as ptmath
+from pooltool.events.datatypes import EventType
+from pooltool.evolution.event_based.cache import _next_transition
+from pooltool.objects.ball.datatypes import Ball, BallState
+from pooltool.objects.ball.params import BallParams
+from pooltool.physics.evolve import (
+    _evolve_perpendicular_spin_component,
+    _evolve_roll_state,
+    _evolve_slide_state,
+    evolve_ball_motion,
+)
+from pooltool.physics.resolve.ball_ball.frictional_inelastic import FrictionalInelastic
+from pooltool.physics.resolve.transition import CanonicalTransition
+
+SEED = 20261240
+COUNT = 2000  # cases of each kind
+OUT = Path(__file__).resolve().parents[1] / "tests" / "data" / "billiards_cases.txt"
+
+PARAMS_PREBUILT = [
+    BallParams(),
+    BallParams(m=0.140, R=0.02619375, u_s=0.5, f_c=0.5),  # pooltool's SNOOKER_GENERIC
+    BallParams(m=0.210, R=0.0615 / 2, f_c=0.15),  # pooltool's BILLIARD_GENERIC
+]
+
+
+def log_uniform(rng: np.random.Generator, lo: float, hi: float) -> float:
+    return float(math.exp(rng.uniform(math.log(lo), math.log(hi))))
+
+
+def random_params(rng: np.random.Generator) -> BallParams:
+    """pooltool's default half of the time, its other prebuilt sets, or random values."""
+    x = rng.random()
+    if x < 0.5:
+        return PARAMS_PREBUILT[0]
+    if x < 0.7:
+        return PARAMS_PREBUILT[1 + int(rng.integers(2))]
+    return BallParams(
+        m=float(rng.uniform(0.1, 0.3)),
+        R=float(rng.uniform(0.02, 0.035)),
+        u_s=log_uniform(rng, 0.05, 0.8),
+        u_r=log_uniform(rng, 0.002, 0.05),
+        u_sp_proportionality=float(rng.uniform(0.05, 2.0)),
+        g=float(rng.uniform(1.0, 20.0)),
+    )
+
+
+def random_velocity(rng: np.random.Generator) -> tuple[float, float]:
+    """A speed from 0.1 mm/s to 12 m/s, in any direction (a tenth along an axis)."""
+    speed = log_uniform(rng, 1e-4, 12.0)
+    if rng.random() < 0.1:
+        vx, vy = [(speed, 0.0), (-speed, 0.0), (0.0, speed), (0.0, -speed)][int(rng.integers(4))]
+        return vx, vy
+    angle = rng.uniform(0.0, 2.0 * math.pi)
+    return float(speed * math.cos(angle)), float(speed * math.sin(angle))
+
+
+def random_spin(rng: np.random.Generator) -> float:
+    """A spin about the vertical: none, below pooltool's EPS, or up to 300 rad/s."""
+    x = rng.random()
+    if x < 0.15:
+        return 0.0
+    if x < 0.25:
+        return float(rng.choice([-1.0, 1.0]) * log_uniform(rng, 1e-17, 2e-14))
+    return float(rng.choice([-1.0, 1.0]) * log_uniform(rng, 1e-3, 300.0))
+
+
+def random_state(rng: np.random.Generator, params: BallParams, motion: int) -> np.ndarray:
+    """An ``rvw`` for a ball in ``motion`` (sliding: spins of every kind; rolling: the rolling
+    spin of its velocity; spinning and at rest: no velocity)."""
+    x, y = float(rng.uniform(0.0, 2.54)), float(rng.uniform(0.0, 1.27))
+    if rng.random() < 0.05:  # far from the origin: rounding relative to large coordinates
+        x, y = x + float(rng.uniform(-1e4, 1e4)), y + float(rng.uniform(-1e4, 1e4))
+    R = params.R
+    vx, vy = random_velocity(rng)
+    wz = random_spin(rng)
+    if motion in (const.spinning, const.stationary, const.pocketed):
+        vx = vy = wx = wy = 0.0
+        if motion != const.spinning:
+            wz = 0.0
+    elif motion == const.rolling:
+        wx, wy = -vy / R, vx / R
+    else:
+        mode = rng.random()
+        scale = math.hypot(vx, vy) / R
+        if mode < 0.35:  # any spin
+            wx, wy = (float(w) for w in rng.normal(0.0, 1.5 * scale, 2))
+        elif mode < 0.5:  # stun: no spin about a horizontal axis
+            wx = wy = 0.0
+        elif mode < 0.65:  # top or back spin along the velocity
+            k = float(rng.uniform(-3.0, 3.0))
+            wx, wy = -k * vy / R, k * vx / R
+        elif mode < 0.75:  # spinning without moving (a masse's first instant)
+            vx = vy = 0.0
+            wx, wy = (float(w) for w in rng.normal(0.0, 50.0, 2))
+        elif mode < 0.85:  # nearly rolling: a slip of a few roundings
+            wx, wy = -vy / R, vx / R
+        else:  # nearly rolling, with a small slip
+            eps = log_uniform(rng, 1e-9, 1e-2)
+            wx, wy = (-vy / R) * (1 + eps), (vx / R) * (1 - eps)
+    return np.array([[x, y, R], [vx, vy, 0.0], [wx, wy, wz]], dtype=np.float64)
+
+
+def random_time(rng: np.random.Generator, span: float) -> float:
+    """A time within a state's span: inside it, exactly at its end, 0, tiny, or beyond."""
+    x = rng.random()
+    if not math.isfinite(span) or span == 0.0:
+        return float(rng.uniform(0.0, 2.0))
+    if x < 0.6:
+        return float(rng.uniform(0.0, 1.0) * span)
+    if x < 0.75:
+        return float(span)
+    if x < 0.8:
+        return 0.0
+    if x < 0.9:
+        return float(span * log_uniform(rng, 1e-12, 1e-3))
+    return float(span * rng.uniform(1.0, 3.0))
+
+
+def fmt(*xs: float) -> str:
+    return " ".join(repr(float(x)) for x in xs)
+
+
+def fmt_params(p: BallParams) -> str:
+    return fmt(p.m, p.R, p.u_s, p.u_r, p.u_sp_proportionality, p.g)
+
+
+def fmt_state(s: int, rvw: np.ndarray) -> str:
+    return f"{s} " + fmt(*rvw[0, :2], *rvw[1, :2], *rvw[2])
+
+
+def fmt_rvw(rvw: np.ndarray) -> str:
+    return fmt(*rvw[0, :2], *rvw[1, :2], *rvw[2])
+
+
+def check_on_table(rvw_in: np.ndarray, rvw_out: np.ndarray) -> None:
+    """pooltool keeps a ball's height and leaves its velocity horizontal (bit for bit)."""
+    assert rvw_out[0, 2] == rvw_in[0, 2], (rvw_in, rvw_out)
+    assert rvw_out[1, 2] == 0.0, (rvw_in, rvw_out)
+
+
+def make_ball(params: BallParams, rvw: np.ndarray, s: int, t: float) -> Ball:
+    return Ball(id="ball", params=params, state=BallState(rvw.copy(), s, t))
+
+
+MOTIONS = [const.sliding, const.rolling, const.spinning, const.stationary, const.pocketed]
+
+
+def random_ball(
+    rng: np.random.Generator, weights: list[float], slipping: bool = True
+) -> tuple[BallParams, int, np.ndarray]:
+    """Parameters, a motion state drawn with ``weights`` (in the order of ``MOTIONS``) and a
+    state in it; a sliding ball slips unless ``slipping`` is false (pooltool's slide divides
+    by the slip, and gives NaN without one)."""
+    while True:
+        p = random_params(rng)
+        s = int(rng.choice(MOTIONS, p=weights))
+        rvw = random_state(rng, p, s)
+        if not slipping or s != const.sliding or ptmath.norm3d(ptmath.rel_velocity(rvw, p.R)) > 0:
+            return p, s, rvw
+
+
+def times_cases(rng: np.random.Generator) -> Iterator[str]:
+    while True:
+        p, s, rvw = random_ball(rng, [0.5, 0.3, 0.1, 0.05, 0.05], slipping=False)
+        u = ptmath.rel_velocity(rvw, p.R)
+        assert u[2] == 0.0
+        slide = ptmath.get_slide_time(rvw, p.R, p.u_s, p.g)
+        roll = ptmath.get_roll_time(rvw, p.u_r, p.g)
+        spin = ptmath.get_spin_time(rvw, p.R, p.u_sp, p.g)
+        event = _next_transition(make_ball(p, rvw, s, 0.0))
+        kind = "none" if event.event_type == EventType.NONE else str(event.event_type)
+        delay = 0.0 if kind == "none" else event.time
+        out = f"{fmt(u[0], u[1], slide, roll, spin)} {kind} {fmt(delay)}"
+        yield f"times {state_name(s)} {fmt_params(p)} {fmt_state(s, rvw)} : {out}"
+
+
+def spin_cases(rng: np.random.Generator) -> Iterator[str]:
+    while True:
+        p = random_params(rng)
+        wz = random_spin(rng)
+        alpha = 5 * p.u_sp * p.g / (2 * p.R)
+        t = random_time(rng, abs(wz) / alpha)
+        out = _evolve_perpendicular_spin_component(wz, p.R, p.u_sp, p.g, t)
+        yield f"spin decay {fmt_params(p)} {fmt(wz, t)} : {fmt(out)}"
+
+
+def slide_cases(rng: np.random.Generator) -> Iterator[str]:
+    while True:
+        p, _, rvw = random_ball(rng, [1.0, 0.0, 0.0, 0.0, 0.0])
+        span = ptmath.get_slide_time(rvw, p.R, p.u_s, p.g)
+        t = min(random_time(rng, span), span)  # the slide formula holds until the slide ends
+        out = _evolve_slide_state(rvw.copy(), p.R, p.m, p.u_s, p.u_sp, p.g, t)
+        check_on_table(rvw, out)
+        s = const.sliding
+        yield f"slide sliding {fmt_params(p)} {fmt_state(s, rvw)} {fmt(t)} : {fmt_rvw(out)}"
+
+
+def roll_cases(rng: np.random.Generator) -> Iterator[str]:
+    while True:
+        p = random_params(rng)
+        rvw = random_state(rng, p, const.rolling)
+        span = ptmath.get_roll_time(rvw, p.u_r, p.g)
+        t = min(random_time(rng, span), span)
+        out = _evolve_roll_state(rvw.copy(), p.R, p.u_r, p.u_sp, p.g, t)
+        check_on_table(rvw, out)
+        s = const.rolling
+        yield f"roll rolling {fmt_params(p)} {fmt_state(s, rvw)} {fmt(t)} : {fmt_rvw(out)}"
+
+
+def total_time(p: BallParams, rvw: np.ndarray, s: int) -> float:
+    """The time until the ball stops, by pooltool's evolution (for drawing times)."""
+    total, state = 0.0, s
+    rvw = rvw.copy()
+    for _ in range(4):
+        event = _next_transition(make_ball(p, rvw, state, 0.0))
+        if event.event_type == EventType.NONE or not math.isfinite(event.time):
+            break
+        rvw, _ = evolve_ball_motion(state, rvw, p.R, p.m, p.u_s, p.u_sp, p.u_r, p.g, event.time)
+        total += event.time
+        state = transition_target(event.event_type)
+    return total
+
+
+def transition_target(event_type: EventType) -> int:
+    return {
+        EventType.SLIDING_ROLLING: const.rolling,
+        EventType.ROLLING_SPINNING: const.spinning,
+        EventType.ROLLING_STATIONARY: const.stationary,
+        EventType.SPINNING_STATIONARY: const.stationary,
+    }[event_type]
+
+
+def state_name(s: int) -> str:
+    return const.state_dict[s]
+
+
+def evolve_cases(rng: np.random.Generator) -> Iterator[str]:
+    while True:
+        p, s, rvw = random_ball(rng, [0.6, 0.25, 0.09, 0.03, 0.03])
+        span = total_time(p, rvw, s)
+        if span > 0.0 and rng.random() < 0.3:
+            # exactly at a transition (the chaining's `t >= time` edge)
+            t = float(ptmath.get_slide_time(rvw, p.R, p.u_s, p.g))
+            if s != const.sliding or not t < span:
+                t = span
+        else:
+            t = random_time(rng, span)
+        out, s_out = evolve_ball_motion(s, rvw.copy(), p.R, p.m, p.u_s, p.u_sp, p.u_r, p.g, t)
+        check_on_table(rvw, out)
+        line = f"{fmt_params(p)} {fmt_state(s, rvw)} {fmt(t)} : {s_out} {fmt_rvw(out)}"
+        yield f"evolve {state_name(s)} {line}"
+
+
+def path_cases(rng: np.random.Generator) -> Iterator[str]:
+    transition = CanonicalTransition()
+    while True:
+        p, s, rvw = random_ball(rng, [0.7, 0.2, 0.07, 0.03, 0.0])
+        start = 0.0 if rng.random() < 0.5 else float(rng.uniform(0.0, 100.0))
+        ball = make_ball(p, rvw, s, start)
+        records = []
+        for _ in range(4):
+            event = _next_transition(ball)
+            if event.event_type == EventType.NONE or not math.isfinite(event.time):
+                break
+            # simulate's step: every ball evolved to the event's time, then resolved.
+            dt = event.time - ball.state.t
+            state = ball.state
+            out, _ = evolve_ball_motion(state.s, state.rvw, p.R, p.m, p.u_s, p.u_sp, p.u_r, p.g, dt)
+            check_on_table(state.rvw, out)
+            ball.state = BallState(out, state.s, event.time)
+            ball = transition.resolve(ball, event.event_type, inplace=True)
+            records.append(
+                f"{fmt(event.time)} {event.event_type} {ball.state.s} {fmt_rvw(ball.state.rvw)}"
+            )
+        head = f"path {state_name(s)} {fmt_params(p)} {fmt_state(s, rvw)} {fmt(start)}"
+        yield f"{head} : {len(records)} " + " ".join(records)
+
+
+GAPS = ["touching", "rounding", "spacer", "overlap", "apart"]
+
+
+def contact_gap(rng: np.random.Generator, kind: str, R: float) -> float:
+    """How far from 2R two balls' centres are at a collision of ``kind``: exactly 2R, a few
+    roundings off, within pooltool's 1e-6 spacer, overlapping (its collisions of overlapping
+    balls), or further apart than the spacer."""
+    if kind == "touching":
+        return 0.0
+    if kind == "rounding":
+        return float(rng.integers(-8, 9)) * 2 * R * 2.0**-53
+    if kind == "spacer":
+        return float(rng.uniform(0.0, 1e-6))
+    if kind == "overlap":
+        return -log_uniform(rng, 1e-12, 1e-3 * R)
+    return log_uniform(rng, 1e-6, 1e-3)
+
+
+def ball_ball_cases(rng: np.random.Generator) -> Iterator[str]:
+    """Two balls at contact, resolved by pooltool's default model (``FrictionalInelastic``
+    with ``AlciatoreBallBallFriction``): the kissed positions, the friction, the states."""
+    model = FrictionalInelastic()
+    while True:
+        p1 = random_params(rng)
+        p1 = attrs.evolve(p1, e_b=float(rng.uniform(0.5, 1.0))) if rng.random() < 0.3 else p1
+        p2 = attrs.evolve(p1, e_b=float(rng.uniform(0.5, 1.0))) if rng.random() < 0.3 else p1
+        s1 = int(rng.choice(MOTIONS[:4], p=[0.5, 0.3, 0.1, 0.1]))
+        s2 = int(rng.choice(MOTIONS[:4], p=[0.3, 0.2, 0.1, 0.4]))
+        rvw1, rvw2 = random_state(rng, p1, s1), random_state(rng, p2, s2)
+        angle = rng.uniform(0.0, 2.0 * math.pi)
+        normal = np.array([math.cos(angle), math.sin(angle)])
+        if s1 in (const.sliding, const.rolling) and rng.random() < 0.7:
+            # aimed at the other ball, at any cut up to 80 degrees
+            speed = math.hypot(*rvw1[1, :2])
+            cut = angle + rng.uniform(-1.4, 1.4)
+            rvw1[1, :2] = [speed * math.cos(cut), speed * math.sin(cut)]
+            if s1 == const.rolling:
+                rvw1[2, :2] = [-rvw1[1, 1] / p1.R, rvw1[1, 0] / p1.R]
+        together = s1 in (const.sliding, const.rolling) and rng.random() < 0.1
+        if together:  # moving on nearly together (pooltool's resolve_continually_touching)
+            s2 = s1
+            rvw2[1, :2] = rvw1[1, :2] * (1 + rng.uniform(-2e-3, 2e-3))
+            rvw2[2] = rvw1[2]
+        gap = GAPS[int(rng.integers(len(GAPS)))]
+        distance = 2 * p1.R + contact_gap(rng, gap, p1.R)
+        rvw2[0, :2] = rvw1[0, :2] + distance * normal
+        b1, b2 = make_ball(p1, rvw1, s1, 0.0), make_ball(p2, rvw2, s2, 0.0)
+        try:
+            k1, k2 = model.make_kiss(b1.copy(), b2.copy())
+        except ValueError:
+            continue  # no root kept: pooltool's make_kiss fails (argmin of nothing)
+        u_b = model.friction.calculate_friction(k1, k2)
+        f1, f2 = model.resolve(b1, b2, inplace=False)
+        for before, after in ((b1, f1), (b2, f2)):
+            assert after.state.rvw[0, 2] == before.state.rvw[0, 2]
+            assert after.state.rvw[1, 2] == 0.0
+        category = gap + ("_together" if together else "")
+        inputs = f"{fmt_ball_params(p1)} {fmt_ball_params(p2)} {fmt_state(s1, rvw1)} "
+        inputs += fmt_state(s2, rvw2)
+        kissed = fmt(*k1.state.rvw[0, :2], *k2.state.rvw[0, :2], u_b)
+        after = f"{fmt_state(f1.state.s, f1.state.rvw)} {fmt_state(f2.state.s, f2.state.rvw)}"
+        yield f"ball_ball {category} {inputs} : {kissed} {after}"
+
+
+def fmt_ball_params(p: BallParams) -> str:
+    return f"{fmt_params(p)} {fmt(p.e_b)}"
+
+
+KINDS: list[tuple[str, Callable[[np.random.Generator], Iterator[str]]]] = [
+    ("times", times_cases),
+    ("spin", spin_cases),
+    ("slide", slide_cases),
+    ("roll", roll_cases),
+    ("evolve", evolve_cases),
+    ("path", path_cases),
+    ("ball_ball", ball_ball_cases),
+]
+
+HEADER = """\
+# ballcollide billiards cases: pooltool {version}'s own functions on seeded random balls
+# (tools/billiards_reference.py), {count} of each kind, seed {seed}. Numbers are float64 reprs.
+# P = m R u_s u_r u_sp_proportionality g; S = motion rx ry vx vy wx wy wz (pooltool's
+# motion numbers; r_z = R and v_z = 0 on the table, kept by pooltool to the bit).
+# times CAT P S : ux uy slide roll spin next delay   (rel_velocity, get_*_time, _next_transition)
+# spin CAT P wz t : wz'                              (_evolve_perpendicular_spin_component)
+# slide|roll CAT P S t : rx ry vx vy wx wy wz        (_evolve_slide_state, _evolve_roll_state)
+# evolve CAT P S t : motion rx ry vx vy wx wy wz     (evolve_ball_motion)
+# path CAT P S start : n, then n times: time type motion rx ry vx vy wx wy wz
+#   (a lone ball's transitions as simulate chains them: _next_transition, evolve_ball_motion
+#   over event.time - t, CanonicalTransition.resolve)
+# ball_ball CAT P1 e_b1 P2 e_b2 S1 S2 : kx1 ky1 kx2 ky2 u_b S1' S2'
+#   (FrictionalInelastic: make_kiss's positions, AlciatoreBallBallFriction at them, resolve)
+"""
+
+
+def cases(count: int, seed: int = SEED) -> Iterator[str]:
+    """The table's lines: ``count`` of each kind, each kind from its own seeded stream."""
+    for k, (_, generate) in enumerate(KINDS):
+        rng = np.random.default_rng([seed, k])
+        stream = generate(rng)
+        for _ in range(count):
+            yield next(stream)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--count", type=int, default=COUNT, help="cases of each kind")
+    parser.add_argument("--out", type=Path, default=OUT)
+    args = parser.parse_args(argv)
+    import pooltool
+
+    lines = list(cases(args.count))
+    header = HEADER.format(version=pooltool.__version__, count=args.count, seed=SEED)
+    args.out.write_text(header + "\n".join(lines) + "\n")
+    print(f"{len(lines)} cases -> {args.out}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
