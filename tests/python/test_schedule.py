@@ -352,3 +352,97 @@ def test_the_first_events_are_python_billiards_ones() -> None:
         _, ours = event_calendar.time_simulate(n, 200, 1)
         _, theirs = event_calendar.time_billiards(python, n, 50, 1)
         assert event_calendar.same_first_events(ours, theirs) == 50
+
+
+@st.composite
+def tables(draw, dim: int) -> dict[str, object]:
+    """A few objects of every kind in the scenes' square ``[0, 2]^dim`` (dyadic numbers:
+    exact contacts and ties are common)."""
+    eighth = st.integers(0, 16).map(lambda k: k / 8)
+    m = draw(st.integers(0, 3))
+    segments = [[[draw(eighth), draw(eighth)], [draw(eighth), draw(eighth)]] for _ in range(m)]
+    segments = [s for s in segments if s[0] != s[1]]
+    sides = [draw(st.sampled_from([-1, 0, 1])) for _ in segments]
+    circles = [
+        [draw(eighth) for _ in range(dim)] + [draw(st.sampled_from([0.0, 0.125, 0.25]))]
+        for _ in range(draw(st.integers(0, 2)))
+    ]
+    targets = [
+        [draw(eighth) for _ in range(dim)] + [draw(st.sampled_from([0.125, 0.25]))]
+        for _ in range(draw(st.integers(0, 2)))
+    ]
+    planes = [
+        [[draw(eighth) for _ in range(dim)], [draw(small) for _ in range(dim)]]
+        for _ in range(draw(st.integers(0, 1)))
+    ]
+    planes = [p for p in planes if any(p[1])]
+    table: dict[str, object] = {}
+    if segments:
+        table |= {"segments": segments, "segment_sides": sides}
+    for name, rows in (("circles", circles), ("targets", targets), ("planes", planes)):
+        if rows:
+            table[name] = rows
+    return table
+
+
+def brute_object(paths, radii, dim: int, now: float, t_max: float, table: dict) -> tuple:
+    """The earliest object event ``(t, ball, kind, index)`` with ``t ≥ now``: each object
+    alone through path_geometry_times (its first contact from each path's start), in the
+    calendar's order (time, ball, kind, index)."""
+    best = (math.inf, -1, -1, -1)
+    if not paths:
+        return best
+    start, pos, vel, acc = arrays(paths, dim)
+    objects = [("segments", bc.SEGMENT), ("circles", bc.CIRCLE)]
+    objects += [("targets", bc.TARGET), ("planes", bc.PLANE)]
+    for name, kind in objects:
+        for index, row in enumerate(table.get(name, [])):
+            one: dict[str, object] = {name: [row]}
+            if name == "segments":
+                one["segment_sides"] = [table["segment_sides"][index]]
+            times, _, _ = bc.path_geometry_times(start, pos, vel, acc, radii, t_max=t_max, **one)
+            for ball, t in enumerate(times):
+                if now <= t and (t, ball, kind, index) < best:
+                    best = (float(t), ball, kind, index)
+    return best
+
+
+@given(scenarios(), st.data())
+def test_the_calendar_with_a_table_is_brute_force_after_any_updates(scenario, data) -> None:
+    # The next event over balls and objects, after updates that resolve events (of either
+    # kind) or skip ahead: bit for bit the earliest of path_collision_times over the pairs
+    # and of path_geometry_times over each object alone.
+    dim, paths, radii, t_max, steps = scenario
+    table = data.draw(tables(dim))
+    n = len(paths)
+    s = bc.CollisionSchedule(*arrays(paths, dim), radii if n else 0.5, t_max=t_max, **table)
+    for step in [*steps, None]:
+        collision = brute(paths, radii, dim, s.time, t_max)
+        hit = brute_object(paths, radii, dim, s.time, t_max, table)
+        ball = (collision[0], collision[1], 1, collision[2], -1)
+        obj = (hit[0], hit[1], 0, hit[2], hit[3])
+        first = min(ball, obj) if math.isfinite(min(ball, obj)[0]) else None
+        e = s.next_event()
+        if first is None:
+            assert e.time == math.inf and e.kind == -1
+        elif first[2] == 1:
+            assert (bits(e.time), e.i, e.j, e.kind) == (bits(first[0]), first[1], first[3], bc.BALL)
+        else:
+            assert (bits(e.time), e.i, e.j, e.kind, e.index) == (
+                bits(first[0]),
+                first[1],
+                -1,
+                first[3],
+                first[4],
+            )
+        if n == 0 or step is None:
+            return
+        resolve, chosen, dt, new = step
+        t = s.time + dt
+        indices = chosen
+        if resolve and e.i >= 0:
+            t, indices = e.time, [e.i] if e.j < 0 else [e.i, e.j]
+        new = [shifted(p, t) for p in (new * 2)[: len(indices)]]
+        s.update(indices, *arrays(new, dim))
+        for i, p in zip(indices, new):
+            paths[i] = p
