@@ -7,8 +7,12 @@ Usage: python3 fuzz/raw_input.py TARGET OUT VALUE...
          friction_a, friction_b, radius, t_max
   scene  N  then N times (x y vx vy friction radius)  then t_max k
   poly   N  then N coefficients (highest degree first)  then k m
+  geometry  3D (0 or 1)  P  then P paths, each K and K times (start, pos xyz, vel xyz,
+         acc xyz)  then S and S times (px py qx qy side)  then C and C times (cx cy cz rho)
+         then T and T targets likewise  then Q and Q times (point xyz, normal xyz)
+         then radius t_max k j
 k and m are the exponents of the invariants' power-of-two scalings (lengths or coefficients
-by 2^k; time by 2^m, or the variable by 2^m). Floats as Python reads them ("inf" included);
+by 2^k; time by 2^m, or the variable by 2^m); j that of geometry's translation (by 2^j). Floats as Python reads them ("inf" included);
 a Rust Debug print of a case gives them exactly.
 """
 
@@ -44,6 +48,18 @@ def encode(target, values):
         i()
     elif target == "poly":
         f(count())
+        i(2)
+    elif target == "geometry":
+        out.extend(bytes([int(next(it)) != 0]) * 4)
+        for _ in range(count()):
+            f(10 * count())
+        for _ in range(count()):
+            f(4)
+            i()
+        f(4 * count())
+        f(4 * count())
+        f(6 * count())
+        f(2)
         i(2)
     else:
         sys.exit(f"unknown target {target!r}")

@@ -736,7 +736,8 @@ fn index_i64(i: usize) -> i64 {
 }
 
 /// ballcollide's compiled core: collision times of balls slowing under friction and of balls
-/// on paths of constant-acceleration segments, and real roots of polynomials of degree ≤ 4. The ``ballcollide`` package re-exports it.
+/// on paths of constant-acceleration segments, their contacts with static geometry, and real
+/// roots of polynomials of degree ≤ 4. The ``ballcollide`` package re-exports it.
 #[pymodule(name = "_core")]
 fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();

@@ -11,6 +11,8 @@ use ballcollide::poly::scaling::scale;
 
 #[path = "../../tests/support/exact.rs"]
 mod exact;
+#[path = "../../tests/support/geometry_invariants.rs"]
+pub mod geometry_invariants;
 #[path = "../../tests/support/invariants.rs"]
 pub mod invariants;
 #[path = "../../tests/support/narrow_pairs.rs"]
@@ -22,6 +24,7 @@ mod path_table;
 #[path = "../../tests/support/simulation_invariants.rs"]
 pub mod simulation_invariants;
 
+use geometry_invariants::{DiscObject, GeometryCase, PlaneObject, SegmentObject};
 use invariants::{BallInput, PairCase, SceneCase, Shared};
 use narrow_pairs::NarrowDraw;
 use path_invariants::{PathCase, SegmentInput};
@@ -141,6 +144,44 @@ impl<'a> Raw<'a> {
             three_d,
         };
         Some((case, self.i32()?))
+    }
+
+    fn floats<const N: usize>(&mut self) -> Option<[f64; N]> {
+        let mut x = [0.0; N];
+        for v in &mut x {
+            *v = self.f64()?;
+        }
+        Some(x)
+    }
+
+    fn objects<T>(&mut self, mut one: impl FnMut(&mut Self) -> Option<T>) -> Option<Vec<T>> {
+        let n = self.count(64)?;
+        (0..n).map(|_| one(self)).collect()
+    }
+
+    /// Balls against static geometry: four bytes (non-zero: 3-D); the number of paths, each
+    /// as in [`Raw::path_case`]; the number of segments, each as `P`, `Q` (`x, y` each) and
+    /// its side (an `i32`); the number of circles, each as its centre (`x, y, z`) and `ρ`;
+    /// the targets likewise; the number of planes, each as its point and normal (`x, y, z`
+    /// each); the radius, t_max; k, j.
+    pub fn geometry_case(mut self) -> Option<(GeometryCase, i32, i32)> {
+        let three_d = self.take::<4>()? != [0; 4];
+        let paths = self.objects(Self::path)?;
+        let segments = self.objects(|r| Some((r.floats::<4>()?, i64::from(r.i32()?))))?;
+        let circles = self.objects(Self::floats::<4>)?;
+        let targets = self.objects(Self::floats::<4>)?;
+        let planes = self.objects(Self::floats::<6>)?;
+        let case = GeometryCase {
+            paths,
+            segments,
+            circles,
+            targets,
+            planes,
+            radius: self.f64()?,
+            t_max: self.f64()?,
+            three_d,
+        };
+        Some((case, self.i32()?, self.i32()?))
     }
 
     /// A polynomial: the number of coefficients, the coefficients, k, m.
@@ -400,6 +441,104 @@ pub fn path_case(u: &mut Unstructured) -> Result<(PathCase, i32)> {
         three_d,
     };
     Ok((case, u.int_in_range(-1100..=1100)?))
+}
+
+/// Now and then (one in `n`) a value no object may hold in place of one of `x`'s: NaN or ±∞.
+fn now_and_then_bad(u: &mut Unstructured, x: &mut [f64], n: u32) -> Result<()> {
+    if u.ratio(1, n)? {
+        let bad = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY][u.int_in_range(0..=2)?];
+        x[u.int_in_range(0..=x.len() - 1)?] = bad;
+    }
+    Ok(())
+}
+
+/// A segment whose numbers are scaled by `2^s`: its ends like a ball's position (now and
+/// then the same point), a side of −1, 0 or 1 (now and then any number).
+fn segment_object(u: &mut Unstructured, s: i32) -> Result<SegmentObject> {
+    let mut e = [length(u, s)?, length(u, s)?, length(u, s)?, length(u, s)?];
+    if u.ratio(1, 16)? {
+        e[2] = e[0];
+        e[3] = e[1];
+    }
+    now_and_then_bad(u, &mut e, 16)?;
+    let side = match u.arbitrary::<u8>()? % 16 {
+        0 => i64::from(u.arbitrary::<i32>()?),
+        k => i64::from(k % 3) - 1,
+    };
+    Ok((e, side))
+}
+
+/// A circle or a target whose numbers are scaled by `2^s`: its centre like a ball's
+/// position, its radius like a ball's (a circle's now and then 0), now and then ≤ 0.
+fn disc_object(u: &mut Unstructured, s: i32) -> Result<DiscObject> {
+    let mut c = [length(u, s)?, length(u, s)?, length(u, s)?, radius(u, s)?];
+    match u.arbitrary::<u8>()? % 16 {
+        0 => c[3] = 0.0,
+        1 => c[3] = -c[3],
+        2 => c[3] = -0.0,
+        _ => {}
+    }
+    now_and_then_bad(u, &mut c, 16)?;
+    Ok(c)
+}
+
+/// A plane whose point is scaled by `2^s`: its normal a small integer vector (now and then
+/// 0), or any numbers.
+fn plane_object(u: &mut Unstructured, s: i32) -> Result<PlaneObject> {
+    let mut p = [length(u, s)?, length(u, s)?, length(u, s)?, 0.0, 0.0, 0.0];
+    let any = u.ratio(1, 8)?;
+    for n in &mut p[3..] {
+        *n = if any {
+            wide(u)?
+        } else {
+            f64::from(u.int_in_range(-2i8..=2)?)
+        };
+    }
+    now_and_then_bad(u, &mut p, 16)?;
+    Ok(p)
+}
+
+/// 0 to 3 objects made by `make` at scale `s`.
+fn up_to_three<T>(
+    u: &mut Unstructured,
+    s: i32,
+    make: fn(&mut Unstructured, i32) -> Result<T>,
+) -> Result<Vec<T>> {
+    let n = u.int_in_range(0..=3)?;
+    (0..n).map(|_| make(u, s)).collect()
+}
+
+/// Balls against static geometry: 1 to 3 paths (as [`path_case`]'s) and 0 to 3 objects of
+/// each kind (half the time no plane, else 1 or 2), sharing one scale, 2-D or 3-D, with the
+/// exponents of a length scaling (any) and of a translation (about the case's scale).
+pub fn geometry_case(u: &mut Unstructured) -> Result<(GeometryCase, i32, i32)> {
+    let s = case_scale(u)?;
+    let three_d = u.arbitrary()?;
+    let n = u.int_in_range(1..=3)?;
+    let paths = (0..n).map(|_| path(u, s)).collect::<Result<_>>()?;
+    let segments = up_to_three(u, s, segment_object)?;
+    let circles = up_to_three(u, s, disc_object)?;
+    let targets = up_to_three(u, s, disc_object)?;
+    // (Half the cases without a plane: a path that runs for ever meets most.)
+    let planes = match u.arbitrary::<bool>()? {
+        true => Vec::new(),
+        false => (0..u.int_in_range(1..=2)?)
+            .map(|_| plane_object(u, s))
+            .collect::<Result<_>>()?,
+    };
+    let case = GeometryCase {
+        paths,
+        segments,
+        circles,
+        targets,
+        planes,
+        radius: radius(u, s)?,
+        t_max: t_max(u)?,
+        three_d,
+    };
+    let k = u.int_in_range(-1100..=1100)?;
+    let j = s.saturating_add(u.int_in_range(-8..=8)?);
+    Ok((case, k, j))
 }
 
 /// A simulation: 1 to 8 balls of radius `2^s·(1/64 … 1/4)` in a box `2^s·[0, 2]²`, each

@@ -17,6 +17,9 @@ and any real number ``float()`` accepts, but not a bool, where a number goes):
 - :func:`path_collision_times`, :func:`path_collision_time`, :func:`path_positions_at`: balls
   on paths of constant-acceleration segments in 2-D or 3-D (a billiard ball sliding on a
   curve, then rolling, then at rest; a ball in the air), the same questions;
+- :func:`path_geometry_times`: balls on paths against a table's static objects (cushions and
+  jaws as segments, jaw tips as circles, pockets as targets, the bed as a plane), their kinds
+  :data:`SEGMENT`, :data:`CIRCLE`, :data:`TARGET`, :data:`PLANE`;
 - :func:`real_roots`: real roots of N polynomials of degree 1 to 4, like ``numpy.roots``;
 - :func:`pairwise_collision_times`, :func:`earliest_collision`, :func:`first_contacts`: a
   scene of N balls (which pairs touch, which touch first), with a broad phase that prunes

@@ -16,9 +16,11 @@ use crate::geometry::{ObjectContact, Table, first_table_contact};
 use crate::path::Segment;
 
 /// Where a batch of geometry queries writes its answers: for path `i`, `time[i]` (absolute;
-/// `∞` for no contact), `kind[i]` (the object's [`ObjectKind::code`](crate::geometry::ObjectKind::code),
-/// `−1` for none) and `index[i]` (its index among the table's objects of its kind, `−1` for
-/// none). The three columns must have the same length, the number of queries.
+/// `∞` for no contact), `kind[i]` (the object's kind, [`ObjectKind::code`], `−1` for none)
+/// and `index[i]` (its index among the table's objects of its kind, `−1` for none). The three
+/// columns must have the same length, the number of queries.
+///
+/// [`ObjectKind::code`]: crate::geometry::ObjectKind::code
 ///
 /// ```
 /// use ballcollide::batch::ContactColumns;

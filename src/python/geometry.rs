@@ -79,7 +79,7 @@ type Answers<'py> = (
 ///     ``None``, or a tuple ``(time, kind, index)`` of three arrays of shape ``(N,)`` and
 ///     dtypes float64, int8 and int64, each writeable, C-contiguous and sharing no memory
 ///     with another or with the paths, ``radius`` or ``t_max``: the answers are written into
-///     them and the tuple is returned. (The objects are copied before anything is written.)
+///     them, and they are returned. (The objects are copied before anything is written.)
 ///
 /// An object argument left out (or ``None``, or ``[]``) is no object of its kind. Every array
 /// is read as in :func:`collision_times` (lists, any real dtype, any layout).

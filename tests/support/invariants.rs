@@ -106,7 +106,7 @@ fn same(x: Option<f64>, y: Option<f64>) -> bool {
 
 /// Whether the non-zero magnitudes among `values` are within 2^±400 of each other: the range
 /// in which the contract promises exact answers (docs/contract.md §5).
-fn within_contract_range(values: impl Iterator<Item = f64>) -> bool {
+pub fn within_contract_range(values: impl Iterator<Item = f64>) -> bool {
     let (lo, hi) = values
         .map(f64::abs)
         .filter(|&x| x > 0.0)

@@ -47,7 +47,7 @@ pub struct PathCase {
 pub type Check = Result<(), String>;
 
 /// One path's rows as a table of one path (the batch layout), whatever their values.
-fn table<const D: usize>(segments: &[SegmentInput]) -> PathTable<D> {
+pub fn table<const D: usize>(segments: &[SegmentInput]) -> PathTable<D> {
     let part = |s: &SegmentInput, at: usize| -> [f64; D] { std::array::from_fn(|i| s[at + i]) };
     PathTable {
         start: segments.iter().map(|s| s[0]).collect(),
@@ -59,7 +59,7 @@ fn table<const D: usize>(segments: &[SegmentInput]) -> PathTable<D> {
 }
 
 /// The path of a table of one path.
-fn path_of<const D: usize>(t: &PathTable<D>) -> Result<Path<D>, ballcollide::InputError> {
+pub fn path_of<const D: usize>(t: &PathTable<D>) -> Result<Path<D>, ballcollide::InputError> {
     Path::from_rows(&t.start, &t.pos, &t.vel, &t.acc)
 }
 
@@ -67,7 +67,7 @@ fn path_of<const D: usize>(t: &PathTable<D>) -> Result<Path<D>, ballcollide::Inp
 /// first `+∞` start, and every row after it must be padding (start `+∞`, other values
 /// ignored); at least one used row, every used value finite, used starts that do not
 /// decrease.
-fn valid_path<const D: usize>(segments: &[SegmentInput]) -> bool {
+pub fn valid_path<const D: usize>(segments: &[SegmentInput]) -> bool {
     let used = segments
         .iter()
         .position(|s| s[0] == f64::INFINITY)
@@ -85,12 +85,12 @@ fn valid_path<const D: usize>(segments: &[SegmentInput]) -> bool {
         && segments[..used].windows(2).all(|w| w[0][0] <= w[1][0])
 }
 
-fn same(x: Option<f64>, y: Option<f64>) -> bool {
+pub fn same(x: Option<f64>, y: Option<f64>) -> bool {
     x.map(f64::to_bits) == y.map(f64::to_bits)
 }
 
 /// `x·2^k` if that is exact (finite, and back to `x` when scaled back), else `None`.
-fn scaled_exactly(x: f64, k: i32) -> Option<f64> {
+pub fn scaled_exactly(x: f64, k: i32) -> Option<f64> {
     let y = x * 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
     let back = y * 2f64.powi(-(k / 2)) * 2f64.powi(-(k - k / 2));
     (y.is_finite() && back.to_bits() == x.to_bits()).then_some(y)
