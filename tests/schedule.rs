@@ -612,8 +612,8 @@ fn ray<const D: usize>(rng: &mut Rng, t: f64, p: SVector<f64, D>) -> Path<D> {
 /// Rays side by side, each pair of neighbours across them at the contact distance to within
 /// a few ulps (times a scale), passing each other at other speeds from far apart along them:
 /// the pair search decides these grazes to its rounding, and the boxes, which run for ever
-/// along the rays and are bounded across them by their margins alone, must never prune a pair
-/// it reports. Then the rays change (from later and later times, so from farther along) and
+/// along the rays (from where each ball is, or turns back) and are bounded across them by
+/// their margins alone, must never prune a pair it reports. Then the rays change (from later and later times, so from farther along) and
 /// the events are resolved, brute force throughout.
 fn rays_at_the_edge<const D: usize>(
     seed: u64,
@@ -683,6 +683,51 @@ fn rays_passing_at_the_edge_of_their_boxes_are_brute_force() {
     }
     // Grazes that touch occur (and the others miss by construction).
     assert!(contacts > 20, "{contacts}");
+}
+
+/// A ball thrown at another from far away, slowed along its line until it turns back for
+/// ever just short of it or just beyond contact (within a few ulps of the turning point's
+/// magnitudes), with balls around so that the grid has cells or not: its box runs to
+/// infinity behind it, and its finite end, the turning point, is computed from magnitudes
+/// far larger than the gap. Brute force throughout.
+#[test]
+fn a_ball_turning_back_at_the_edge_of_its_box_is_brute_force() {
+    let mut cases = 0;
+    let mut contacts = 0;
+    for (speed, deceleration) in [(1e3, 1.0), (3.0, 1e-3), (1e4, 7.0)] {
+        // From y = 0 at `speed` downwards, turning at y = −speed²/(2·deceleration).
+        let turn: f64 = -0.5 * speed * (speed / deceleration);
+        let ulp = f64::from_bits(turn.abs().to_bits() + 1) - turn.abs();
+        for ulps in [-64.0, -8.0, -2.0, -1.0, 0.0, 1.0, 2.0, 8.0, 64.0] {
+            for others in [0usize, 20] {
+                let r = 0.25;
+                let target = turn - 2.0 * r + ulps * ulp;
+                let mut paths = vec![
+                    Path::new(vec![Segment::new(
+                        0.0,
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, -speed),
+                        Vector2::new(0.0, deceleration),
+                    )])
+                    .expect("valid"),
+                    Path::new(vec![Segment::at_rest(0.0, Vector2::new(0.0, target))])
+                        .expect("valid"),
+                ];
+                // Balls at rest far to the side, across the whole run.
+                for k in 0..others {
+                    let y = turn * k as f64 / others as f64;
+                    let p = Vector2::new(10.0 + (k % 3) as f64, y);
+                    paths.push(Path::new(vec![Segment::at_rest(0.0, p)]).expect("valid"));
+                }
+                let n = paths.len();
+                let mut s = CollisionSchedule::new(paths, &vec![r; n], ScheduleOptions::default())
+                    .expect("valid");
+                cases += 1;
+                contacts += usize::from(check(&mut s).is_some());
+            }
+        }
+    }
+    assert!(contacts > 0 && contacts < cases, "{contacts} of {cases}");
 }
 
 /// 400 balls moving side by side in open space for ever, with no horizon: each box is the

@@ -4,16 +4,15 @@
 //! On each segment a coordinate is a quadratic in the time since the segment's start, so its
 //! range over a span lies between its values at the span's ends and at its vertex (if inside);
 //! a span that runs for ever is unbounded on every axis where the acceleration, or else the
-//! velocity, is not zero, and bounded on the others (a ball moving for ever along `y` keeps
-//! its `x`). A box that is unbounded on an axis is the whole of that axis: it prunes nothing
-//! there, and on its bounded axes as much as any box.
+//! velocity, is not zero, on the side it points to, and bounded on the others (a ball moving
+//! for ever along `+y` keeps its `x`, and never comes below where it is now).
 //!
 //! ## The rounding margin
 //!
 //! Two balls whose boxes are disjoint on some axis never touch on the span; but the pair
 //! search works in float64 and may report a contact for a pair whose exact closest approach
-//! exceeds the contact distance by its rounding error. The margin covers that error on each
-//! axis where the box is bounded, so that pruning never changes an answer.
+//! exceeds the contact distance by its rounding error. The margin covers that error at each
+//! finite end of the box, so that pruning never changes an answer.
 //!
 //! *The search's error, seen on one axis `k`.* The search decides that two balls touch from
 //! their separation `d = x_A − x_B`: by the sign of `|d|² − r²` at some time (an entry's
@@ -33,21 +32,34 @@
 //! of order `ε·(S_k + E_k + r)`, `E_k` the two boxes' extents on axis `k`, whatever the other
 //! axes do (the earlier bound, `ε·(S + D²/r)` with `S` and `D` over all axes, is larger).
 //!
-//! *The margin.* Each box is grown, on every bounded axis, by [`MARGIN`]` · (S + E·(E/r))`
-//! with its own radius `r`, `S` the magnitudes that formed its numbers on every axis (the
-//! unbounded ones too, up to the span's start: they also set the search's units) and `E` its
-//! largest extent with the radius over the bounded axes. For two boxes that come close on
-//! axis `k`, the pair's `S_k`, `E_k` and `r` are at most the sums of the two boxes' `S`, `E`
-//! and `E` (`E ≥ 2r`), and `E·(E/r) ≥ 2E`, so the two margins together stay more than `2⁹`
-//! times above the search's error there: pruning never changes an answer. A box bounded on
-//! every axis gets the margin it always had.
+//! *The margin.* Each box is grown, at every finite end, by [`MARGIN`]` · (S + E·(E/r))` with
+//! its own radius `r`, `S` the magnitudes that formed its numbers on every axis (those of the
+//! axes where it runs for ever too, as below: they also set the search's units) and `E` its
+//! largest extent with the radius over the axes where both ends are finite. For two boxes
+//! that come close on axis `k`, the pair's `S_k`, `E_k` and `r` are at most the sums of the
+//! two boxes' `S`, `E` and `E` (`E ≥ 2r`), and `E·(E/r) ≥ 2E`, so the two margins together
+//! stay more than `2⁹` times above the search's error there: pruning never changes an
+//! answer. A box bounded on every axis gets the margin it always had.
 //!
-//! An unbounded axis is `±∞` on both sides: the side the ball moves away from is finite in
-//! exact arithmetic, but the magnitudes that form the separation there grow without bound, so
-//! no finite margin covers it for ever. A margin that overflows (magnitudes beyond the float
-//! range) makes the whole box unbounded, as before: it prunes nothing. Caveat, as for the
-//! search itself: its units are exact unless a field underflows in them, more than about
-//! `2¹⁰⁰⁰` times below the window's largest, beyond the range where the search is exact.
+//! *An end at infinity.* On an axis where the ball drifts for ever, towards `+∞` say, its
+//! coordinate `x(s) = p + v·s + ½·a·s²` never comes below the range's low end `L`, which is
+//! finite; but the magnitudes `M(s) = |p| + |v|·s + |a|·s²` that form it (and the separation,
+//! and a window's offset and velocity) at a later time grow without bound. They grow at most
+//! in proportion to the distance gone beyond `L`: `M(s) ≤ 6·(x(s) − L) + 7·F`, with `F` the
+//! magnitudes at the span's start, or at the turn if the motion turns back inside the span,
+//! which `S` counts. (At a constant speed `M` grows by the distance itself; driven on by the
+//! acceleration, by at most twice the distance; turning back, at the turn `t = |v/a|`, beyond
+//! three times its time by at most six times the distance from the turn, which is the
+//! distance beyond `L` plus at most `F`, and before that it is at most `M(3t) ≤ 6·M(t)`.) So
+//! at a time when a pruned pair might touch, the search's error on that axis is a few
+//! roundings of `7·F` (and the other ball's part) plus `6·c·ε` times the distance gone beyond
+//! `L`, while the separation gains that whole distance: it exceeds its error by what the
+//! margin covers at `L` alone, as on a bounded axis, with 7 times less room (more than `2⁶`).
+//! Two boxes pruned on such an axis are moving apart on it (the one's finite end faces the
+//! other's). A margin that overflows (magnitudes beyond the float range) makes the whole box
+//! unbounded, as before: it prunes nothing. Caveat, as for the search itself: its units are
+//! exact unless a field underflows in them, more than about `2¹⁰⁰⁰` times below the window's
+//! largest, beyond the range where the search is exact.
 
 use crate::path::{Segment, spans};
 
@@ -144,18 +156,23 @@ fn straight_reach<const D: usize>(
 }
 
 /// The box from `lo` to `hi` grown by the radius and the margin, `size` the sum of the
-/// magnitudes that formed it so far: on the axes where it is bounded, see the module's notes;
-/// on the others (an end at `−∞` or `+∞`), the whole axis.
+/// magnitudes that formed it so far; an end at `−∞` or `+∞` (a ball that drifts that way for
+/// ever) stays there. See the module's notes.
 fn grown<const D: usize>(lo: [f64; D], hi: [f64; D], mut size: f64, radius: f64) -> Reach<D> {
-    // (A span before the path's first start leaves `lo = +∞`, `hi = −∞` on every axis:
-    // "bounded", its size infinite, so the box is NaN, which overlaps nothing, as it always
-    // was.)
-    let bounded: [bool; D] =
-        std::array::from_fn(|k| lo[k] != f64::NEG_INFINITY && hi[k] != f64::INFINITY);
+    // (A span before the path's first start leaves `lo = +∞`, `hi = −∞` on every axis: both
+    // ends "finite" here, its size infinite, so the box is NaN, which overlaps nothing, as it
+    // always was.)
     let mut extent = 0.0_f64;
-    for k in (0..D).filter(|&k| bounded[k]) {
-        size += lo[k].abs().max(hi[k].abs());
-        extent = extent.max(hi[k] - lo[k]);
+    for k in 0..D {
+        match (lo[k] == f64::NEG_INFINITY, hi[k] == f64::INFINITY) {
+            (false, false) => {
+                size += lo[k].abs().max(hi[k].abs());
+                extent = extent.max(hi[k] - lo[k]);
+            }
+            (false, true) => size += lo[k].abs(),
+            (true, false) => size += hi[k].abs(),
+            (true, true) => {}
+        }
     }
     let extent = extent + 2.0 * radius;
     // `D·(D/r)`, not `D²/r`: no square that overflows or underflows on its own. A NaN or an
@@ -166,21 +183,10 @@ fn grown<const D: usize>(lo: [f64; D], hi: [f64; D], mut size: f64, radius: f64)
     } else {
         f64::INFINITY
     };
+    // (`±∞ ∓ grow` is `±∞`: a drifting end stays where it is.)
     Reach {
-        lo: std::array::from_fn(|k| {
-            if bounded[k] {
-                lo[k] - grow
-            } else {
-                f64::NEG_INFINITY
-            }
-        }),
-        hi: std::array::from_fn(|k| {
-            if bounded[k] {
-                hi[k] + grow
-            } else {
-                f64::INFINITY
-            }
-        }),
+        lo: lo.map(|x| x - grow),
+        hi: hi.map(|x| x + grow),
     }
 }
 
@@ -206,14 +212,18 @@ fn range_on(p: f64, v: f64, a: f64, from: f64, to: f64) -> (f64, f64, f64) {
         hi = hi.max(end);
         return (lo, hi, p.abs() + (v.abs() + a.abs() * to) * to);
     }
-    // For ever: towards wherever the acceleration, or else the velocity, points.
+    // For ever: towards wherever the acceleration, or else the velocity, points. The
+    // magnitudes at the start of the span, or at the turn if the motion turns back inside it
+    // (later ones grow with the distance from the range's finite end: see the module's
+    // notes).
     let drift = if a != 0.0 { a } else { v };
     if drift < 0.0 {
         lo = f64::NEG_INFINITY;
     } else if drift > 0.0 {
         hi = f64::INFINITY;
     }
-    (lo, hi, p.abs() + (v.abs() + a.abs() * from) * from)
+    let last = if vertex_inside { -v / a } else { from };
+    (lo, hi, p.abs() + (v.abs() + a.abs() * last) * last)
 }
 
 #[cfg(test)]
@@ -246,26 +256,29 @@ mod tests {
         let r = reach(&up, 0.1, 0.0, 3.0);
         assert!((r.hi[1] - 0.6).abs() < 1e-8); // the top, y = ½
         assert!((r.lo[1] - (-1.5 - 0.1)).abs() < 1e-8); // y(3) = 3 − 4.5
-        // For ever: the whole of y (both sides), x still bounded.
+        // For ever: y below its top, x still bounded.
         let r = reach(&up, 0.1, 0.0, f64::INFINITY);
-        assert_eq!((r.lo[1], r.hi[1]), (f64::NEG_INFINITY, f64::INFINITY));
+        assert_eq!(r.lo[1], f64::NEG_INFINITY);
+        assert!((r.hi[1] - 0.6).abs() < 1e-8);
         assert!((r.lo[0] + 0.1).abs() < 1e-9 && (r.hi[0] - 0.1).abs() < 1e-9);
     }
 
     #[test]
-    fn a_ray_along_one_axis_keeps_the_others_bounded() {
-        // Frictionless along y for ever from (2, 3): x stays within the radius and a margin
-        // of about 2⁻³⁶ of the magnitudes (which include y at the span's start), from any
-        // time on.
+    fn a_ray_along_one_axis_keeps_the_others_bounded_and_its_start() {
+        // Frictionless along +y for ever from (2, 3): x stays within the radius and a margin
+        // of about 2⁻³⁶ of the magnitudes (which include y at the span's start), and y above
+        // where it is at the span's start, from any time on.
         let ray = [segment(0.0, [2.0, 3.0], [0.0, 1.0], [0.0, 0.0])];
         for t0 in [0.0, 10.0, 1e6] {
             let r = reach(&ray, 0.5, t0, f64::INFINITY);
             let most = 1e-9 * (1.0 + t0);
-            assert_eq!((r.lo[1], r.hi[1]), (f64::NEG_INFINITY, f64::INFINITY));
             assert!(r.lo[0] < 1.5 && r.lo[0] > 1.5 - most, "{t0}: {r:?}");
             assert!(r.hi[0] > 2.5 && r.hi[0] < 2.5 + most, "{t0}: {r:?}");
+            let y = 3.0 + t0 - 0.5;
+            assert!(r.lo[1] < y && r.lo[1] > y - most, "{t0}: {r:?}");
+            assert_eq!(r.hi[1], f64::INFINITY);
         }
-        // A roll along x to rest, then on along y for ever: x covers the roll.
+        // A roll along x to rest, then on along −y for ever: x covers the roll.
         let turn = [
             segment(0.0, [0.0, 0.0], [1.0, 0.0], [-0.5, 0.0]),
             segment(2.0, [1.0, 0.0], [0.0, -2.0], [0.0, 0.0]),
@@ -273,8 +286,10 @@ mod tests {
         let r = reach(&turn, 0.25, 0.0, f64::INFINITY);
         assert!(r.lo[0] < -0.25 && r.lo[0] > -0.25 - 1e-9);
         assert!(r.hi[0] > 1.25 && r.hi[0] < 1.25 + 1e-9);
-        assert_eq!((r.lo[1], r.hi[1]), (f64::NEG_INFINITY, f64::INFINITY));
-        // In space, a ball in the air thrown along x: y alone bounded.
+        assert_eq!(r.lo[1], f64::NEG_INFINITY);
+        assert!(r.hi[1] > 0.25 && r.hi[1] < 0.25 + 1e-9);
+        // In space, a ball in the air thrown along x from height 1 at 2 up: y bounded, x from
+        // where it is on, z below the top of its flight (1 + 2²/(2·9.81)).
         let throw = [Segment::new(
             0.0,
             Vector3::new(0.0, 4.0, 1.0),
@@ -283,9 +298,9 @@ mod tests {
         )];
         let r = reach(&throw, 0.1, 0.0, f64::INFINITY);
         assert!(r.lo[1] < 3.9 && r.lo[1] > 3.9 - 1e-9 && r.hi[1] > 4.1 && r.hi[1] < 4.1 + 1e-9);
-        for k in [0, 2] {
-            assert_eq!((r.lo[k], r.hi[k]), (f64::NEG_INFINITY, f64::INFINITY));
-        }
+        assert!(r.lo[0] < -0.1 && r.lo[0] > -0.1 - 1e-9 && r.hi[0] == f64::INFINITY);
+        let top = 1.0 + 4.0 / (2.0 * 9.81) + 0.1;
+        assert!(r.hi[2] > top && r.hi[2] < top + 1e-9 && r.lo[2] == f64::NEG_INFINITY);
     }
 
     #[test]
