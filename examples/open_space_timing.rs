@@ -14,6 +14,10 @@
 //! - `gas_open`: a dilute gas without walls: N = 400 frictionless balls on a grid in the unit
 //!   square, radius `0.1/√N`, normal(0, 1) velocities; events resolved elastically (equal
 //!   masses) until none is left: µs per event, the build left out.
+//! - `corner_open`: N = 1,000 balls in the unit square (radius 1e-7) moving side by side at
+//!   (1, 1 + U(0, 1e-3)) for ever, and one at rest at (10, 10) that widens the grid: each
+//!   moving ball's box runs to the far corner of the grid. The calendar's build and its first
+//!   `next_collision()`, `t_max = ∞`.
 //! - `parallel_box`: `simulate` in the unit box, N = 1, 4 or 200 balls on a grid, radius
 //!   `¼/√N`, all at velocity (0.3, 0.7), 2,000 events: µs per event (the build included),
 //!   `t_end = ∞` against `100` (the scene of `benchmarks/calendar_scaling.py`).
@@ -34,11 +38,16 @@ use rng::Rng;
 
 /// The median of `repeats` runs of `f` (each returning seconds, or what it measured).
 fn median(repeats: usize, mut f: impl FnMut() -> Result<f64, String>) -> Result<f64, String> {
-    let mut times = (0..repeats.max(1))
+    let times = (0..repeats.max(1))
         .map(|_| f())
         .collect::<Result<Vec<_>, _>>()?;
-    times.sort_by(f64::total_cmp);
-    Ok(times[times.len() / 2])
+    Ok(median_of(times))
+}
+
+/// The median of some values (at least one).
+fn median_of(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
 }
 
 /// A path of one segment without acceleration from time `t`.
@@ -110,6 +119,29 @@ fn gas_open(n: usize, t_max: f64) -> Result<(f64, usize), String> {
     Ok((begin.elapsed().as_secs_f64() / events.max(1) as f64, events))
 }
 
+/// `corner_open`: (build seconds, first `next_collision` seconds).
+fn corner_open(n: usize) -> Result<(f64, f64), String> {
+    let mut rng = Rng(3);
+    let mut paths = (0..n)
+        .map(|_| {
+            let p = Vector2::new(rng.uniform(0.0, 1.0), rng.uniform(0.0, 1.0));
+            line(0.0, p, Vector2::new(1.0, 1.0 + rng.uniform(0.0, 1e-3)))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    paths.push(
+        Path2::new(vec![Segment2::at_rest(0.0, Vector2::new(10.0, 10.0))])
+            .map_err(|e| e.to_string())?,
+    );
+    let radii = vec![1e-7; paths.len()];
+    let begin = Instant::now();
+    let mut s = CollisionSchedule::new(paths, &radii, ScheduleOptions::default())
+        .map_err(|e| e.to_string())?;
+    let build = begin.elapsed().as_secs_f64();
+    let begin = Instant::now();
+    std::hint::black_box(s.next_collision());
+    Ok((build, begin.elapsed().as_secs_f64()))
+}
+
 /// `parallel_box`: (seconds per event, events).
 fn parallel_box(n: usize, t_end: f64) -> Result<(f64, usize), String> {
     let side = (n as f64).sqrt().ceil() as usize;
@@ -160,6 +192,20 @@ fn run(args: &[String]) -> Result<Vec<String>, String> {
         lines.push(format!(
             "case=gas_open n={n} t_max={t_max} events={events} us_per_event={:.2}",
             per * 1e6
+        ));
+    }
+    {
+        let n = 1000;
+        // Both times from the same runs (each takes a while).
+        let runs = (0..repeats.max(1))
+            .map(|_| corner_open(n))
+            .collect::<Result<Vec<_>, _>>()?;
+        let build = median_of(runs.iter().map(|r| r.0).collect());
+        let first = median_of(runs.iter().map(|r| r.1).collect());
+        lines.push(format!(
+            "case=corner_open n={n} t_max=inf build_ms={:.3} first_ms={:.3}",
+            build * 1e3,
+            first * 1e3
         ));
     }
     for n in [1, 4, 200] {
