@@ -25,13 +25,6 @@ use nalgebra::Vector2;
 mod rng;
 use rng::Rng;
 
-/// A normal(0, 1) draw (Box–Muller).
-fn normal(rng: &mut Rng) -> f64 {
-    let u = rng.uniform(f64::MIN_POSITIVE, 1.0);
-    let v = rng.uniform(0.0, 1.0);
-    (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
-}
-
 /// The scene: `side²` balls.
 fn scene(side: usize, seed: u64) -> Result<(Vec<Ball>, f64), String> {
     let mut rng = Rng(seed);
@@ -39,7 +32,7 @@ fn scene(side: usize, seed: u64) -> Result<(Vec<Ball>, f64), String> {
     let balls = (0..side * side)
         .map(|k| {
             let p = Vector2::new((k % side) as f64 + 0.5, (k / side) as f64 + 0.5) * spacing;
-            let v = Vector2::new(normal(&mut rng), normal(&mut rng));
+            let v = Vector2::new(rng.normal(), rng.normal());
             Ball::new(p, v, 0.0).map_err(|e| e.to_string())
         })
         .collect::<Result<_, _>>()?;

@@ -784,6 +784,180 @@ fn grazing_passes_at_the_edge_of_the_boxes_are_brute_force() {
     assert!(contacts > 0 && contacts < cases, "{contacts} of {cases}");
 }
 
+/// A path from `p` at time `t` that moves along the last axis for ever (a *ray*): at rest,
+/// at a constant speed, accelerating, or after a roll to rest at `p` across the rays.
+fn ray<const D: usize>(rng: &mut Rng, t: f64, p: SVector<f64, D>) -> Path<D> {
+    let along = |x: f64| SVector::<f64, D>::from_fn(|k, _| if k == D - 1 { x } else { 0.0 });
+    let across = |x: f64| SVector::<f64, D>::from_fn(|k, _| if k == 0 { x } else { 0.0 });
+    let v = along(rng.uniform(-2.0, 2.0));
+    let segments = match rng.below(5) {
+        0 => vec![Segment::at_rest(t, p)],
+        1 => vec![Segment::new(t, p, v, along(rng.uniform(-0.5, 0.5)))],
+        2 => {
+            // Rolls to rest at `p` at speed `u` slowed at `mu`, then goes on along the ray.
+            let (u, mu) = (rng.uniform(-1.0, 1.0), rng.uniform(0.25, 1.0));
+            let tau = u.abs() / mu;
+            let roll = Segment::new(
+                t,
+                p - across(0.5 * u * tau),
+                across(u),
+                across(-u.signum() * mu),
+            );
+            vec![roll, Segment::new(t + tau, p, v, SVector::zeros())]
+        }
+        _ => vec![Segment::new(t, p, v, SVector::zeros())],
+    };
+    Path::new(segments).expect("finite numbers")
+}
+
+/// Rays side by side, each pair of neighbours across them at the contact distance to within
+/// a few ulps (times a scale), passing each other at other speeds from far apart along them:
+/// the pair search decides these grazes to its rounding, and the boxes, which run for ever
+/// along the rays (from where each ball is, or turns back) and are bounded across them by
+/// their margins alone, must never prune a pair it reports. Then the rays change (from later and later times, so from farther along) and
+/// the events are resolved, brute force throughout.
+fn rays_at_the_edge<const D: usize>(
+    seed: u64,
+    n: usize,
+    (x0, spread): (f64, f64),
+    rounds: usize,
+) -> usize {
+    let mut rng = Rng(seed);
+    let radii: Vec<f64> = (0..n).map(|_| rng.uniform(0.25, 0.5)).collect();
+    // The rays from `x0` on: the gaps in ulps of the coordinates.
+    let ulp = f64::from_bits(x0.to_bits() + 1) - x0;
+    let mut x = x0;
+    let mut starts = Vec::new();
+    for k in 0..n {
+        if k > 0 {
+            let reach: f64 = radii[k - 1] + radii[k];
+            let ulps = [0.0, 1.0, 2.0, 3.0, 6.0, 64.0][rng.below(6) as usize];
+            x += reach + ulps * ulp * (rng.below(3) as f64 - 1.0);
+        }
+        let p = SVector::<f64, D>::from_fn(|i, _| match i {
+            0 => x,
+            i if i == D - 1 => rng.uniform(-spread, spread),
+            _ => 0.0,
+        });
+        starts.push(p);
+    }
+    let paths = starts.iter().map(|&p| ray(&mut rng, 0.0, p)).collect();
+    let mut s = CollisionSchedule::new(paths, &radii, ScheduleOptions::default()).expect("valid");
+    let mut contacts = 0;
+    for _ in 0..rounds {
+        let now = s.time();
+        let (indices, t) = match check(&mut s) {
+            Some(Event::Collision(c)) => {
+                contacts += 1;
+                (vec![c.i, c.j], c.time)
+            }
+            _ => {
+                let i = rng.below(n as u64) as usize;
+                (vec![i], now + rng.uniform(0.0, spread))
+            }
+        };
+        // From where each ball is (across the rays, where it rests).
+        let paths = indices
+            .iter()
+            .map(|&i| ray(&mut rng, t, s.path(i).position_at(t)))
+            .collect();
+        s.update(&indices, paths).expect("a valid update");
+    }
+    contacts
+}
+
+#[test]
+fn rays_passing_at_the_edge_of_their_boxes_are_brute_force() {
+    let mut contacts = 0;
+    for seed in 1..=6u64 {
+        for (n, x0, spread) in [
+            (12, 0.0, 4.0),
+            (40, 0.0, 4.0),
+            (12, 1e3, 1e3),
+            (40, 1e6, 4.0),
+            (40, 1e6, 1e6),
+            (40, 3e9, 1e3),
+        ] {
+            contacts += rays_at_the_edge::<2>(seed, n, (x0, spread), 30);
+            contacts += rays_at_the_edge::<3>(seed, n, (x0, spread), 15);
+        }
+    }
+    // Grazes that touch occur (and the others miss by construction).
+    assert!(contacts > 20, "{contacts}");
+}
+
+/// A ball thrown at another from far away, slowed along its line until it turns back for
+/// ever just short of it or just beyond contact (within a few ulps of the turning point's
+/// magnitudes), with balls around so that the grid has cells or not: its box runs to
+/// infinity behind it, and its finite end, the turning point, is computed from magnitudes
+/// far larger than the gap. Brute force throughout.
+#[test]
+fn a_ball_turning_back_at_the_edge_of_its_box_is_brute_force() {
+    let mut cases = 0;
+    let mut contacts = 0;
+    for (speed, deceleration) in [(1e3, 1.0), (3.0, 1e-3), (1e4, 7.0)] {
+        // From y = 0 at `speed` downwards, turning at y = −speed²/(2·deceleration).
+        let turn: f64 = -0.5 * speed * (speed / deceleration);
+        let ulp = f64::from_bits(turn.abs().to_bits() + 1) - turn.abs();
+        for ulps in [-64.0, -8.0, -2.0, -1.0, 0.0, 1.0, 2.0, 8.0, 64.0] {
+            for others in [0usize, 20] {
+                let r = 0.25;
+                let target = turn - 2.0 * r + ulps * ulp;
+                let mut paths = vec![
+                    Path::new(vec![Segment::new(
+                        0.0,
+                        Vector2::new(0.0, 0.0),
+                        Vector2::new(0.0, -speed),
+                        Vector2::new(0.0, deceleration),
+                    )])
+                    .expect("valid"),
+                    Path::new(vec![Segment::at_rest(0.0, Vector2::new(0.0, target))])
+                        .expect("valid"),
+                ];
+                // Balls at rest far to the side, across the whole run.
+                for k in 0..others {
+                    let y = turn * k as f64 / others as f64;
+                    let p = Vector2::new(10.0 + (k % 3) as f64, y);
+                    paths.push(Path::new(vec![Segment::at_rest(0.0, p)]).expect("valid"));
+                }
+                let n = paths.len();
+                let mut s = CollisionSchedule::new(paths, &vec![r; n], ScheduleOptions::default())
+                    .expect("valid");
+                cases += 1;
+                contacts += usize::from(check(&mut s).is_some());
+            }
+        }
+    }
+    assert!(contacts > 0 && contacts < cases, "{contacts} of {cases}");
+}
+
+/// 400 balls moving side by side in open space for ever, with no horizon: each box is the
+/// whole line of its ray and a margin across it, listed in the few grid cells of its column
+/// (an unbounded margin on every axis listed each ball in every cell: 400 × 800 entries, and
+/// the first `next_collision` searched every pair). No collision, as brute force says.
+#[test]
+fn parallel_balls_in_open_space_are_listed_in_a_few_cells() {
+    let n = 400;
+    let paths = (0..n)
+        .map(|k| {
+            let p = Vector2::new(3.0 * k as f64, 0.0);
+            Path::new(vec![Segment::new(
+                0.0,
+                p,
+                Vector2::new(0.0, 1.0),
+                Vector2::zeros(),
+            )])
+        })
+        .collect::<Result<Vec<_>, _>>()
+        .expect("valid");
+    let mut s =
+        CollisionSchedule::new(paths, &vec![0.5; n], ScheduleOptions::default()).expect("valid");
+    assert_eq!(s.next_collision(), None);
+    assert_eq!(brute_collision(&s), None);
+    let grid = s.heap_bytes().grid as f64 / n as f64;
+    assert!(grid < 100.0, "{grid} grid bytes per ball");
+}
+
 /// Kinetic energy and momentum of a state.
 fn energy_momentum(balls: &[Ball], masses: &[f64]) -> (f64, Vector2<f64>) {
     let mut e = 0.0;

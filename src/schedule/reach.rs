@@ -3,22 +3,63 @@
 //!
 //! On each segment a coordinate is a quadratic in the time since the segment's start, so its
 //! range over a span lies between its values at the span's ends and at its vertex (if inside);
-//! a span that runs for ever is unbounded wherever the acceleration, or else the velocity,
-//! points.
+//! a span that runs for ever is unbounded on every axis where the acceleration, or else the
+//! velocity, is not zero, on the side it points to, and bounded on the others (a ball moving
+//! for ever along `+y` keeps its `x`, and never comes below where it is now).
 //!
 //! ## The rounding margin
 //!
-//! Two balls whose boxes are disjoint never touch on the span; but the pair search works in
-//! float64 and may report a contact for a pair whose exact closest approach exceeds the
-//! contact distance by its rounding error, of order `ε·(S + D²/r)` for coordinates (and
-//! times × speeds) of magnitude `S`, separations of size `D` and a contact distance `r` (the
-//! gap `|d|² − r²` is formed to `ε·|d|²`, and near its minimum it grows by `2r` per unit of
-//! distance). Each box is grown by [`MARGIN`]` · (S + D·(D/r))` with its own `S`, `D` (its
-//! extent with the radius) and radius `r`: for two boxes that come close, the pair's
-//! separations are at most `D_a + D_b` and `(D_a + D_b)²/(r_a + r_b) ≤ 2·(D_a²/r_a +
-//! D_b²/r_b)`, so the two margins together stay more than `2⁹` times above the search's error,
-//! and pruning never changes an answer. An unbounded box gets an unbounded margin (it prunes
-//! nothing).
+//! Two balls whose boxes are disjoint on some axis never touch on the span; but the pair
+//! search works in float64 and may report a contact for a pair whose exact closest approach
+//! exceeds the contact distance by its rounding error. The margin covers that error at each
+//! finite end of the box, so that pruning never changes an answer.
+//!
+//! *The search's error, seen on one axis `k`.* The search decides that two balls touch from
+//! their separation `d = x_A − x_B`: by the sign of `|d|² − r²` at some time (an entry's
+//! bracket, a dip's lowest point, a window's start), or, for a straight relative motion, from
+//! the closest approach `|d × v|/|v|` in closed form (straight windows, narrow dips). Each
+//! component `d_k` is formed on its own axis from that axis's numbers alone (positions,
+//! velocities and accelerations on axis `k`, times the time since a window's start; the units
+//! of length and time that scale them are powers of two, exact), so it is off by a few
+//! roundings of the magnitudes `S_k` that form it, and a time off by `δt` moves it by
+//! `|v_k|·δt`. A sum of squares is at least each of its terms, so `|d|² − r² ≤ 0` (to a few
+//! roundings of `r²`) needs `|d_k|` within about `r`, up to the error of `d_k` alone. In a
+//! cross product, a term `d_k·v_m` is off by `ε·|d_k·v_m|`, at most `ε·|d_k|` over `|v|`; a
+//! term `d_m·v_k` by `ε·|d_m·v_k|`, and where the closest approach comes within about `r` a
+//! time `s` after the window's start, `|d_m(0)| ≤ r + |v_m|·s`, so over `|v|` that is at most
+//! `ε·(r + |v_k|·s)`: `|v_k|·s` is the motion along `k` itself, within the two boxes' extents
+//! on `k` (before the span's start, within the magnitudes). So the error seen on axis `k` is
+//! of order `ε·(S_k + E_k + r)`, `E_k` the two boxes' extents on axis `k`, whatever the other
+//! axes do (the earlier bound, `ε·(S + D²/r)` with `S` and `D` over all axes, is larger).
+//!
+//! *The margin.* Each box is grown, at every finite end, by [`MARGIN`]` · (S + E·(E/r))` with
+//! its own radius `r`, `S` the magnitudes that formed its numbers on every axis (those of the
+//! axes where it runs for ever too, as below: they also set the search's units) and `E` its
+//! largest extent with the radius over the axes where both ends are finite. For two boxes
+//! that come close on axis `k`, the pair's `S_k`, `E_k` and `r` are at most the sums of the
+//! two boxes' `S`, `E` and `E` (`E ≥ 2r`), and `E·(E/r) ≥ 2E`, so the two margins together
+//! stay more than `2⁹` times above the search's error there: pruning never changes an
+//! answer. A box bounded on every axis gets the margin it always had.
+//!
+//! *An end at infinity.* On an axis where the ball drifts for ever, towards `+∞` say, its
+//! coordinate `x(s) = p + v·s + ½·a·s²` never comes below the range's low end `L`, which is
+//! finite; but the magnitudes `M(s) = |p| + |v|·s + |a|·s²` that form it (and the separation,
+//! and a window's offset and velocity) at a later time grow without bound. They grow at most
+//! in proportion to the distance gone beyond `L`: `M(s) ≤ 6·(x(s) − L) + 7·F`, with `F` the
+//! magnitudes at the span's start, or at the turn if the motion turns back inside the span,
+//! which `S` counts. (At a constant speed `M` grows by the distance itself; driven on by the
+//! acceleration, by at most twice the distance; turning back, at the turn `t = |v/a|`, beyond
+//! three times its time by at most six times the distance from the turn, which is the
+//! distance beyond `L` plus at most `F`, and before that it is at most `M(3t) ≤ 6·M(t)`.) So
+//! at a time when a pruned pair might touch, the search's error on that axis is a few
+//! roundings of `7·F` (and the other ball's part) plus `6·c·ε` times the distance gone beyond
+//! `L`, while the separation gains that whole distance: it exceeds its error by what the
+//! margin covers at `L` alone, as on a bounded axis, with 7 times less room (more than `2⁶`).
+//! Two boxes pruned on such an axis are moving apart on it (the one's finite end faces the
+//! other's). A margin that overflows (magnitudes beyond the float range) makes the whole box
+//! unbounded, as before: it prunes nothing. Caveat, as for the search itself: its units are
+//! exact unless a field underflows in them, more than about `2¹⁰⁰⁰` times below the window's
+//! largest, beyond the range where the search is exact.
 
 use crate::path::{Segment, spans};
 
@@ -115,22 +156,34 @@ fn straight_reach<const D: usize>(
 }
 
 /// The box from `lo` to `hi` grown by the radius and the margin, `size` the sum of the
-/// magnitudes that formed it so far.
+/// magnitudes that formed it so far; an end at `−∞` or `+∞` (a ball that drifts that way for
+/// ever) stays there. See the module's notes.
 fn grown<const D: usize>(lo: [f64; D], hi: [f64; D], mut size: f64, radius: f64) -> Reach<D> {
+    // (A span before the path's first start leaves `lo = +∞`, `hi = −∞` on every axis: both
+    // ends "finite" here, its size infinite, so the box is NaN, which overlaps nothing, as it
+    // always was.)
     let mut extent = 0.0_f64;
     for k in 0..D {
-        size += lo[k].abs().max(hi[k].abs());
-        extent = extent.max(hi[k] - lo[k]);
+        match (lo[k] == f64::NEG_INFINITY, hi[k] == f64::INFINITY) {
+            (false, false) => {
+                size += lo[k].abs().max(hi[k].abs());
+                extent = extent.max(hi[k] - lo[k]);
+            }
+            (false, true) => size += lo[k].abs(),
+            (true, false) => size += hi[k].abs(),
+            (true, true) => {}
+        }
     }
     let extent = extent + 2.0 * radius;
-    // `D·(D/r)`, not `D²/r`: no square that overflows or underflows on its own. A NaN (an
-    // unbounded box) or an infinite margin prunes nothing.
+    // `D·(D/r)`, not `D²/r`: no square that overflows or underflows on its own. A NaN or an
+    // infinite margin (magnitudes beyond the float range) prunes nothing, on any axis.
     let margin = MARGIN * (size + extent * (extent / radius));
     let grow = if margin.is_finite() {
         radius + margin
     } else {
         f64::INFINITY
     };
+    // (`±∞ ∓ grow` is `±∞`: a drifting end stays where it is.)
     Reach {
         lo: lo.map(|x| x - grow),
         hi: hi.map(|x| x + grow),
@@ -159,20 +212,24 @@ fn range_on(p: f64, v: f64, a: f64, from: f64, to: f64) -> (f64, f64, f64) {
         hi = hi.max(end);
         return (lo, hi, p.abs() + (v.abs() + a.abs() * to) * to);
     }
-    // For ever: towards wherever the acceleration, or else the velocity, points.
+    // For ever: towards wherever the acceleration, or else the velocity, points. The
+    // magnitudes at the start of the span, or at the turn if the motion turns back inside it
+    // (later ones grow with the distance from the range's finite end: see the module's
+    // notes).
     let drift = if a != 0.0 { a } else { v };
     if drift < 0.0 {
         lo = f64::NEG_INFINITY;
     } else if drift > 0.0 {
         hi = f64::INFINITY;
     }
-    (lo, hi, p.abs() + (v.abs() + a.abs() * from) * from)
+    let last = if vertex_inside { -v / a } else { from };
+    (lo, hi, p.abs() + (v.abs() + a.abs() * last) * last)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Vector2;
+    use nalgebra::{Vector2, Vector3};
 
     fn segment(s: f64, p: [f64; 2], v: [f64; 2], a: [f64; 2]) -> Segment<2> {
         Segment::new(s, Vector2::from(p), Vector2::from(v), Vector2::from(a))
@@ -199,9 +256,69 @@ mod tests {
         let r = reach(&up, 0.1, 0.0, 3.0);
         assert!((r.hi[1] - 0.6).abs() < 1e-8); // the top, y = ½
         assert!((r.lo[1] - (-1.5 - 0.1)).abs() < 1e-8); // y(3) = 3 − 4.5
+        // For ever: y below its top, x still bounded.
         let r = reach(&up, 0.1, 0.0, f64::INFINITY);
         assert_eq!(r.lo[1], f64::NEG_INFINITY);
-        assert_eq!(r.lo[0], f64::NEG_INFINITY); // an unbounded box prunes nothing
+        assert!((r.hi[1] - 0.6).abs() < 1e-8);
+        assert!((r.lo[0] + 0.1).abs() < 1e-9 && (r.hi[0] - 0.1).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_ray_along_one_axis_keeps_the_others_bounded_and_its_start() {
+        // Frictionless along +y for ever from (2, 3): x stays within the radius and a margin
+        // of about 2⁻³⁶ of the magnitudes (which include y at the span's start), and y above
+        // where it is at the span's start, from any time on.
+        let ray = [segment(0.0, [2.0, 3.0], [0.0, 1.0], [0.0, 0.0])];
+        for t0 in [0.0, 10.0, 1e6] {
+            let r = reach(&ray, 0.5, t0, f64::INFINITY);
+            let most = 1e-9 * (1.0 + t0);
+            assert!(r.lo[0] < 1.5 && r.lo[0] > 1.5 - most, "{t0}: {r:?}");
+            assert!(r.hi[0] > 2.5 && r.hi[0] < 2.5 + most, "{t0}: {r:?}");
+            let y = 3.0 + t0 - 0.5;
+            assert!(r.lo[1] < y && r.lo[1] > y - most, "{t0}: {r:?}");
+            assert_eq!(r.hi[1], f64::INFINITY);
+        }
+        // A roll along x to rest, then on along −y for ever: x covers the roll.
+        let turn = [
+            segment(0.0, [0.0, 0.0], [1.0, 0.0], [-0.5, 0.0]),
+            segment(2.0, [1.0, 0.0], [0.0, -2.0], [0.0, 0.0]),
+        ];
+        let r = reach(&turn, 0.25, 0.0, f64::INFINITY);
+        assert!(r.lo[0] < -0.25 && r.lo[0] > -0.25 - 1e-9);
+        assert!(r.hi[0] > 1.25 && r.hi[0] < 1.25 + 1e-9);
+        assert_eq!(r.lo[1], f64::NEG_INFINITY);
+        assert!(r.hi[1] > 0.25 && r.hi[1] < 0.25 + 1e-9);
+        // In space, a ball in the air thrown along x from height 1 at 2 up: y bounded, x from
+        // where it is on, z below the top of its flight (1 + 2²/(2·9.81)).
+        let throw = [Segment::new(
+            0.0,
+            Vector3::new(0.0, 4.0, 1.0),
+            Vector3::new(1.0, 0.0, 2.0),
+            Vector3::new(0.0, 0.0, -9.81),
+        )];
+        let r = reach(&throw, 0.1, 0.0, f64::INFINITY);
+        assert!(r.lo[1] < 3.9 && r.lo[1] > 3.9 - 1e-9 && r.hi[1] > 4.1 && r.hi[1] < 4.1 + 1e-9);
+        assert!(r.lo[0] < -0.1 && r.lo[0] > -0.1 - 1e-9 && r.hi[0] == f64::INFINITY);
+        let top = 1.0 + 4.0 / (2.0 * 9.81) + 0.1;
+        assert!(r.hi[2] > top && r.hi[2] < top + 1e-9 && r.lo[2] == f64::NEG_INFINITY);
+    }
+
+    #[test]
+    fn boxes_beyond_the_float_range_or_before_the_path_are_as_they_were() {
+        // Magnitudes that overflow: the whole plane, the bounded axis too.
+        let far = [segment(0.0, [1.5e308, 0.0], [0.0, 1.0], [0.0, 0.0])];
+        let r = reach(&far, 0.5, 0.0, f64::INFINITY);
+        assert_eq!(r.lo, [f64::NEG_INFINITY; 2]);
+        assert_eq!(r.hi, [f64::INFINITY; 2]);
+        // A span before the path's first start: a NaN box, which overlaps nothing.
+        let later = [segment(5.0, [0.0, 0.0], [1.0, 0.0], [0.0, 0.0])];
+        let r = reach(&later, 0.5, 0.0, 1.0);
+        assert!(r.lo.iter().chain(&r.hi).all(|x| x.is_nan()), "{r:?}");
+        let everything = Reach {
+            lo: [f64::NEG_INFINITY; 2],
+            hi: [f64::INFINITY; 2],
+        };
+        assert!(!r.overlaps(&everything) && !everything.overlaps(&r));
     }
 
     #[test]

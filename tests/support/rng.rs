@@ -22,6 +22,13 @@ impl Rng {
         lo + (hi - lo) * ((self.next_u64() >> 11) as f64 / (1u64 << 53) as f64)
     }
 
+    /// A normal(0, 1) draw (Box–Muller, from two uniform draws).
+    pub fn normal(&mut self) -> f64 {
+        let u = self.uniform(f64::MIN_POSITIVE, 1.0);
+        let v = self.uniform(0.0, 1.0);
+        (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
+    }
+
     /// Uniform in `0..n` (`n > 0`; the modulo bias is irrelevant for test inputs).
     pub fn below(&mut self, n: u64) -> u64 {
         self.next_u64() % n
