@@ -32,7 +32,7 @@
 //! | `cushion_linear.rs` | [`LinearCushion`], [`BallLinearCushionResolver`], the trait of straight-cushion models, and [`StrongeCompliantLinear`], pooltool's default |
 //! | `cushion_circular.rs` | [`CircularCushion`], [`BallCircularCushionResolver`] and [`StrongeCompliantCircular`], the same for rounded cushions |
 //! | `stronge.rs` | [`compliant_collinear_collision`]: Stronge's compliant frictional collision, in closed-form stick and slip phases, as pooltool solves it |
-//! | `root.rs` | Brent's bracketing root finder, for the two Stronge regimes where pooltool calls TOMS748 |
+//! | `root.rs` | TOMS748 (Alefeld–Potra–Shi) ported from scipy step for step, for the two Stronge regimes where pooltool calls it |
 //! | `ball_path.rs` | [`ball_path`], [`BallPath`]: the motion until the ball stops as constant-acceleration segments, with the state at each segment's start |
 //!
 //! ```

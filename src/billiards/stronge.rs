@@ -2,7 +2,7 @@
 //! it (`physics/resolve/stronge_compliant.py`, and `_solve` in its `ball_cushion`
 //! `stronge_compliant` model): the normal and tangential compliances are springs of
 //! frequencies `ω_n` and `ω_t = ω_n·omega_ratio`; the contact sticks or slips in closed-form
-//! phases, and where a phase ends is a root found by [`brent`](super::root::brent) in two
+//! phases, and where a phase ends is a root found by TOMS748 (`root.rs`, scipy's steps) in two
 //! of the three regimes (pooltool calls `scipy.optimize.toms748`).
 
 use std::f64::consts::PI;
@@ -10,7 +10,7 @@ use std::f64::consts::PI;
 use nalgebra::Vector3;
 
 use super::direction::{cross, norm3};
-use super::root::brent;
+use super::root::toms748;
 use super::{BallParams, BallState, MotionState};
 
 /// The tangential and normal velocities of the contact point at the end of a collinear
@@ -128,10 +128,10 @@ fn is_close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-8 + 1e-5 * b.abs()
 }
 
-/// A root in `[t_c, t_f]` to a few roundings (pooltool's `toms748` stops at `2e-12`; we go on,
-/// so the root is the equation's, not one point of a bracket).
+/// A root in `[t_c, t_f]` as pooltool finds it: `toms748` with scipy's defaults (`k = 1`,
+/// `xtol = 2e-12`, `rtol = 4ε`, 100 iterations), the same steps to the same bits.
 fn root(f: impl FnMut(f64) -> f64, t_c: f64, t_f: f64) -> Option<f64> {
-    brent(f, t_c, t_f, 0.0, 4.0 * f64::EPSILON, 200).filter(|t| (t_c..=t_f).contains(t))
+    toms748(f, t_c, t_f, 1, 2e-12, 4.0 * f64::EPSILON, 100).filter(|t| (t_c..=t_f).contains(t))
 }
 
 fn v_t_stick(time: f64, omega_t: f64, v_t_stick_0: f64, u_t_stick_0: f64, time_stick: f64) -> f64 {
