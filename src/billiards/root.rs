@@ -333,4 +333,78 @@ mod tests {
         assert_eq!(toms748(|_| f64::NAN, -1.0, 1.0, 1, 2e-12, RTOL, 100), None);
         assert_eq!(toms748(|x| x, 0.0, 1.0, 1, 2e-12, RTOL, 100), Some(0.0));
     }
+
+    /// The Stronge regimes' own equations (pooltool's `slip_time_for_initial_stick` and
+    /// `slip_time_for_stick` with the default ball and cushion, over their whole ranges of
+    /// `v_t/v_n`): with pooltool's tolerances the root is within `2e-12` of the full-accuracy
+    /// one, inside `[t_c, t_f]`, where the function changes sign.
+    #[test]
+    fn stronge_regime_equations() {
+        use std::f64::consts::PI;
+        let (mu, e_n, beta) = (0.2, 0.85, 3.5);
+        let eta_squared = beta / (1.8f64 * 1.8);
+        let omega_n = (1e3f64 / 0.170097).sqrt();
+        let omega_t = omega_n * (beta / eta_squared).sqrt();
+        let (t_c, t_f) = (PI / (2.0 * omega_n), (1.0 + e_n) * PI / (2.0 * omega_n));
+        let phase = |t: f64| omega_n * t / e_n + (PI / 2.0) * (1.0 - 1.0 / e_n);
+        let check = |f: &dyn Fn(f64) -> f64, what: &str| {
+            let coarse = toms748(f, t_c, t_f, 1, 2e-12, RTOL, 100).expect(what);
+            let (fine, _) = root(f, t_c, t_f);
+            assert!((t_c..=t_f).contains(&coarse), "{what}: {coarse}");
+            assert!(
+                (coarse - fine).abs() <= 2e-12 + RTOL * fine,
+                "{what}: {coarse} {fine}"
+            );
+            let h = 1e-12 * t_f;
+            assert!(
+                f(fine - h).signum() != f(fine + h).signum() || f(fine) == 0.0,
+                "{what}"
+            );
+        };
+        for k in 1..100 {
+            // Stick, then slip: 0 < v_t/v_n < mu·eta².
+            let ratio = mu * eta_squared * f64::from(k) / 100.0;
+            let f = |t: f64| {
+                (-ratio * (omega_t * t).sin()).abs()
+                    - mu * eta_squared * omega_t / omega_n * phase(t).sin()
+            };
+            check(&f, &format!("stick-slip {ratio}"));
+        }
+        let gross = mu * ((1.0 + e_n) * beta - eta_squared / e_n);
+        let v_n_0 = -1.0;
+        for k in 1..100 {
+            // Slip, stick, slip: mu·eta² < v_t/v_n < the gross-slip bound.
+            let ratio = mu * eta_squared + (gross - mu * eta_squared) * f64::from(k) / 100.0;
+            let v_t_0 = ratio * v_n_0;
+            let tau = super::super::stronge::nondimensional_stick_time(
+                ratio,
+                beta,
+                mu,
+                e_n,
+                eta_squared,
+                t_c,
+            )
+            .expect("a stick time");
+            let t_stick = t_c * tau;
+            let (u, v) = if t_stick <= t_c {
+                (
+                    -mu * v_n_0 * eta_squared / omega_n * (omega_n * t_stick).sin(),
+                    v_t_0 - mu * beta * v_n_0 * (1.0 - (omega_n * t_stick).cos()),
+                )
+            } else {
+                (
+                    -mu * v_n_0 * eta_squared / omega_n * phase(t_stick).sin(),
+                    v_t_0 - mu * beta * v_n_0 * (1.0 - e_n * phase(t_stick).cos()),
+                )
+            };
+            let f = |t: f64| {
+                (omega_n / (mu * v_n_0)
+                    * (u * (omega_t * (t - t_stick)).cos()
+                        - v / omega_t * (omega_t * (t - t_stick)).sin()))
+                .abs()
+                    - eta_squared * phase(t).sin()
+            };
+            check(&f, &format!("slip-stick-slip {ratio}"));
+        }
+    }
 }

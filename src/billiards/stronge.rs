@@ -140,7 +140,7 @@ fn v_t_stick(time: f64, omega_t: f64, v_t_stick_0: f64, u_t_stick_0: f64, time_s
 }
 
 /// pooltool's `nondimensional_stick_time_for_initial_slip`; `None` where its asserts fail.
-fn nondimensional_stick_time(
+pub(super) fn nondimensional_stick_time(
     ratio: f64,
     beta_t_by_beta_n: f64,
     mu: f64,
