@@ -456,8 +456,22 @@ def cushion_cases(rng: np.random.Generator, kind: str, model, place) -> Iterator
         if rvw_after is None or category != REGIMES[made % 3]:
             continue
         made += 1
-        inputs = f"{fmt_cushion_params(p)} {fmt_state(s, rvw)} {fmt(*numbers)}"
-        yield f"{kind} {category} {inputs} : {fmt_rvw(rvw_after)}"
+        # make_kiss on the ball moved off contact by up to 1e-5 (or not), then resolve
+        shift = float(rng.choice([0.0, 1.0])) * float(rng.uniform(-1e-5, 1e-5))
+        off = rvw.copy()
+        off[0, :2] += shift * normal
+        kissed = model.make_kiss(make_ball(p, off, s, 0.0), cushion).state.rvw[0, :2]
+        resolved = stronge_solve(model, make_ball(p, kissed_rvw(off, kissed), s, 0.0), cushion)
+        resolved_text = "none" if resolved is None else fmt_rvw(resolved)
+        inputs = f"{fmt_cushion_params(p)} {fmt_state(s, rvw)} {fmt(*numbers)} {fmt(shift)}"
+        outputs = f"{fmt_rvw(rvw_after)} {fmt(*kissed)} {resolved_text}"
+        yield f"{kind} {category} {inputs} : {outputs}"
+
+
+def kissed_rvw(rvw: np.ndarray, xy) -> np.ndarray:
+    out = rvw.copy()
+    out[0, :2] = xy
+    return out
 
 
 def place_linear(rng: np.random.Generator, p: BallParams, rvw, normal, height):
@@ -542,9 +556,11 @@ HEADER = """\
 #   over event.time - t, CanonicalTransition.resolve)
 # ball_ball CAT P1 e_b1 P2 e_b2 S1 S2 : kx1 ky1 kx2 ky2 u_b S1' S2'
 #   (FrictionalInelastic: make_kiss's positions, AlciatoreBallBallFriction at them, resolve)
-# linear_cushion CAT P e_c f_c S p1x p1y p2x p2y height : rx ry vx vy wx wy wz
-# circular_cushion CAT P e_c f_c S cx cy radius height : rx ry vx vy wx wy wz
-#   (StrongeCompliantLinear / StrongeCompliantCircular, omega_ratio 1.8: solve at contact;
+# linear_cushion CAT P e_c f_c S p1x p1y p2x p2y height shift : rvw' kx ky rvw''
+# circular_cushion CAT P e_c f_c S cx cy radius height shift : rvw' kx ky rvw''
+#   (StrongeCompliantLinear / StrongeCompliantCircular, omega_ratio 1.8: rvw' = solve at
+#   contact; then the ball moved by shift along the normal, make_kiss's position kx ky, and
+#   rvw'' = solve there, or "none" where pooltool fails;
 #   CAT is the Stronge regime: gross_slip, stick_slip or slip_stick_slip)
 """
 

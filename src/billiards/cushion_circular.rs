@@ -8,9 +8,10 @@
 
 use nalgebra::{Vector2, Vector3};
 
-use super::direction::unit3;
+use super::ball_ball::smallest_kept_root;
+use super::direction::{norm, unit, unit3};
 use super::stronge::solve_with_normal;
-use super::{BallParams, BallState};
+use super::{BallParams, BallState, KISS_SPACER};
 
 /// A rounded cushion as pooltool's `CircularCushionSegment`: a circle of `radius` about
 /// `center` at `height` above the cloth.
@@ -69,6 +70,59 @@ pub trait BallCircularCushionResolver {
         params: &BallParams,
         cushion: &CircularCushion,
     ) -> Option<BallState>;
+
+    /// The collision as pooltool resolves it: [`kiss_circular_cushion`], then
+    /// [`solve`](Self::solve); `None` also where pooltool's `make_kiss` fails.
+    fn resolve(
+        &self,
+        ball: &BallState,
+        params: &BallParams,
+        cushion: &CircularCushion,
+    ) -> Option<BallState> {
+        let kissed = kiss_circular_cushion(ball, params.radius, cushion)?;
+        self.solve(&kissed, params, cushion)
+    }
+}
+
+/// The ball moved so that its centre is `radius + cushion.radius + 1e-6` from the cushion's
+/// centre, as pooltool places it (`CoreBallCCushionCollision.make_kiss`): along its velocity by
+/// the root of smallest magnitude of pooltool's quadratic; if it does not move, or that would
+/// move it more than `5e-6`, straight out from the centre. `None` where pooltool's quadratic
+/// keeps no root (pooltool then fails). Only the position changes.
+///
+/// ```
+/// use ballcollide::billiards::{BallState, CircularCushion, MotionState, kiss_circular_cushion};
+/// use nalgebra::{Vector2, Vector3};
+/// let jaw = CircularCushion::new(Vector2::new(0.0, 0.0), 0.01, 0.03);
+/// let ball = BallState::new(Vector2::new(0.038, 0.0), Vector2::new(-1.0, 0.0), Vector3::zeros(), MotionState::Sliding);
+/// let kissed = kiss_circular_cushion(&ball, 0.028, &jaw).unwrap();
+/// assert!((kissed.position.x - (0.038 + 1e-6)).abs() < 1e-15);
+/// ```
+pub fn kiss_circular_cushion(
+    ball: &BallState,
+    radius: f64,
+    cushion: &CircularCushion,
+) -> Option<BallState> {
+    let spacer = KISS_SPACER;
+    let (r, v) = (ball.position, ball.velocity);
+    let target = radius + cushion.radius + spacer;
+    let fallback = || cushion.center + unit(r - cushion.center) * target;
+    let mut kissed = *ball;
+    if !ball.motion.translates() {
+        kissed.position = fallback();
+        return Some(kissed);
+    }
+    let diff = r - cushion.center;
+    let alpha = v.x * v.x + v.y * v.y;
+    let beta = 2.0 * (diff.x * v.x + diff.y * v.y);
+    let gamma = diff.x * diff.x + diff.y * diff.y - target * target;
+    let t = smallest_kept_root(alpha, beta, gamma)?;
+    kissed.position = if norm(v * t) > 5.0 * spacer {
+        fallback()
+    } else {
+        r + v * t
+    };
+    Some(kissed)
 }
 
 /// pooltool's `StrongeCompliantCircular` (its default for rounded cushions, `omega_ratio`

@@ -9,9 +9,9 @@
 
 use nalgebra::{Vector2, Vector3};
 
-use super::direction::{norm3, unit3};
+use super::direction::{norm, norm3, unit, unit3};
 use super::stronge::solve_with_normal;
-use super::{BallParams, BallState};
+use super::{BallParams, BallState, KISS_SPACER};
 
 /// A straight cushion as pooltool's `LinearCushionSegment`: the segment from `p1` to `p2` on the
 /// table, its nose at `height` above the cloth.
@@ -75,6 +75,71 @@ pub trait BallLinearCushionResolver {
         params: &BallParams,
         cushion: &LinearCushion,
     ) -> Option<BallState>;
+
+    /// The collision as pooltool resolves it: [`kiss_linear_cushion`], then
+    /// [`solve`](Self::solve).
+    fn resolve(
+        &self,
+        ball: &BallState,
+        params: &BallParams,
+        cushion: &LinearCushion,
+    ) -> Option<BallState> {
+        self.solve(
+            &kiss_linear_cushion(ball, params.radius, cushion),
+            params,
+            cushion,
+        )
+    }
+}
+
+/// The ball moved so that its centre is `radius + 1e-6` from the cushion's line, as pooltool
+/// places it before solving (`CoreBallLCushionCollision.make_kiss`): back or on along its
+/// velocity by the time of smallest magnitude at which it is that far, in the plane; if it does
+/// not move (spinning, stationary, pocketed), or that would move it more than `5e-6`, straight
+/// out from the line instead. Only the position changes.
+///
+/// ```
+/// use ballcollide::billiards::{BallState, LinearCushion, MotionState, kiss_linear_cushion};
+/// use nalgebra::{Vector2, Vector3};
+/// let rail = LinearCushion::new(Vector2::new(0.0, 0.0), Vector2::new(2.0, 0.0), 0.03);
+/// let ball = BallState::new(Vector2::new(1.0, 0.028), Vector2::new(0.0, -1.0), Vector3::zeros(), MotionState::Sliding);
+/// let kissed = kiss_linear_cushion(&ball, 0.028, &rail);
+/// assert!((kissed.position.y - (0.028 + 1e-6)).abs() < 1e-15);
+/// ```
+pub fn kiss_linear_cushion(ball: &BallState, radius: f64, cushion: &LinearCushion) -> BallState {
+    let spacer = KISS_SPACER;
+    let r = ball.position;
+    let v = ball.velocity;
+    let fallback = || {
+        let diff = cushion.p2 - cushion.p1;
+        let t = -((cushion.p1 - r).dot(&diff)) / diff.dot(&diff);
+        let c = cushion.p1 + diff * t;
+        c + unit(r - c) * (radius + spacer)
+    };
+    let mut kissed = *ball;
+    if !ball.motion.translates() {
+        kissed.position = fallback();
+        return kissed;
+    }
+    let (dx, dy) = (cushion.p2.x - cushion.p1.x, cushion.p2.y - cushion.p1.y);
+    let (lx, ly) = if dx == 0.0 {
+        (1.0, 0.0)
+    } else {
+        (-dy / dx, 1.0)
+    };
+    let n = unit(Vector2::new(lx, ly));
+    let n = if n.dot(&v) > 0.0 { n } else { -n };
+    let d0 = (r - cushion.p1).dot(&n);
+    let vn = v.dot(&n);
+    let t1 = (radius + spacer - d0) / vn;
+    let t2 = (-(radius + spacer) - d0) / vn;
+    let t = if t1.abs() < t2.abs() { t1 } else { t2 };
+    kissed.position = if norm(v * t) > 5.0 * spacer {
+        fallback()
+    } else {
+        r + v * t
+    };
+    kissed
 }
 
 /// pooltool's `StrongeCompliantLinear` (its default for straight cushions, with `omega_ratio`

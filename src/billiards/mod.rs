@@ -72,9 +72,11 @@ mod transition_time;
 pub use ball_ball::{BallBallResolver, KISS_SPACER, make_kiss, separate_touching};
 pub use ball_path::{BallPath, ball_path};
 pub use cushion_circular::{
-    BallCircularCushionResolver, CircularCushion, StrongeCompliantCircular,
+    BallCircularCushionResolver, CircularCushion, StrongeCompliantCircular, kiss_circular_cushion,
 };
-pub use cushion_linear::{BallLinearCushionResolver, LinearCushion, StrongeCompliantLinear};
+pub use cushion_linear::{
+    BallLinearCushionResolver, LinearCushion, StrongeCompliantLinear, kiss_linear_cushion,
+};
 pub use evolve::evolve;
 pub use evolve_roll::evolve_roll;
 pub use evolve_slide::evolve_slide;
