@@ -56,6 +56,7 @@ from pooltool.events.datatypes import EventType
 from pooltool.evolution.event_based.cache import _next_transition
 from pooltool.objects.ball.datatypes import Ball, BallState
 from pooltool.objects.ball.params import BallParams
+from pooltool.objects.table.components import CircularCushionSegment, LinearCushionSegment
 from pooltool.physics.evolve import (
     _evolve_perpendicular_spin_component,
     _evolve_roll_state,
@@ -63,6 +64,11 @@ from pooltool.physics.evolve import (
     evolve_ball_motion,
 )
 from pooltool.physics.resolve.ball_ball.frictional_inelastic import FrictionalInelastic
+from pooltool.physics.resolve.ball_cushion.stronge_compliant import (
+    StrongeCompliantCircular,
+    StrongeCompliantLinear,
+)
+from pooltool.physics.resolve.stronge_compliant import is_gross_slip, is_initial_stick
 from pooltool.physics.resolve.transition import CanonicalTransition
 
 SEED = 20261240
@@ -393,6 +399,133 @@ def ball_ball_cases(rng: np.random.Generator) -> Iterator[str]:
         yield f"ball_ball {category} {inputs} : {kissed} {after}"
 
 
+def cushion_ball(rng: np.random.Generator) -> tuple[BallParams, int, np.ndarray, float]:
+    """A ball aimed into a cushion along ``normal`` (the unit vector from the contact to the
+    ball's centre, in the plane), at any angle up to 89 degrees from head on, with any spin,
+    its restitution and friction with the cushion random a third of the time; and the
+    cushion's height (pooltool's default nose, 0.64 of the diameter, or from 0.5R to 1.5R)."""
+    while True:
+        p = random_params(rng)
+        if rng.random() < 0.35:
+            p = attrs.evolve(p, e_c=float(rng.uniform(0.5, 1.0)), f_c=log_uniform(rng, 0.01, 0.8))
+        s = int(rng.choice(MOTIONS[:2], p=[0.6, 0.4]))
+        rvw = random_state(rng, p, s)
+        if s == const.sliding and rng.random() < 0.5:  # little spin: sticking is possible
+            rvw[2] *= log_uniform(rng, 1e-4, 1.0)
+        height = 2 * 0.64 * p.R if rng.random() < 0.5 else float(rng.uniform(0.5, 1.5)) * p.R
+        return p, s, rvw, height
+
+
+def aim(rng: np.random.Generator, rvw: np.ndarray, normal: np.ndarray, p: BallParams, s: int):
+    """Turn the ball's velocity (and a rolling ball's spin) to meet the cushion."""
+    speed = math.hypot(*rvw[1, :2])
+    if speed == 0.0:
+        speed = log_uniform(rng, 1e-3, 10.0)
+    if rng.random() < 0.3:
+        off = rng.uniform(-1.55, 1.55)
+    else:  # near head on, where the contact sticks
+        off = rng.choice([-1.0, 1.0]) * log_uniform(rng, 1e-6, 0.5)
+    heading = math.atan2(-normal[1], -normal[0]) + off
+    rvw[1, :2] = [speed * math.cos(heading), speed * math.sin(heading)]
+    if s == const.rolling:
+        rvw[2, :2] = [-rvw[1, 1] / p.R, rvw[1, 0] / p.R]
+
+
+def stronge_solve(model, ball: Ball, cushion) -> np.ndarray | None:
+    """pooltool's ``solve``, or None where it fails (an assertion, or no bracket)."""
+    try:
+        out, _ = model.solve(ball, cushion)
+    except (AssertionError, ValueError):
+        return None
+    return out.state.rvw
+
+
+def cushion_cases(rng: np.random.Generator, kind: str, model, place) -> Iterator[str]:
+    """A ball at contact with a cushion that ``place(rng, p, rvw, normal, height)`` puts
+    against it (returning the cushion and its numbers), resolved by ``model.solve``; the
+    regimes in turn."""
+    made = 0
+    while True:
+        p, s, rvw, height = cushion_ball(rng)
+        angle = rng.uniform(0.0, 2.0 * math.pi)
+        normal = np.array([math.cos(angle), math.sin(angle)])
+        cushion, numbers = place(rng, p, rvw, normal, height)
+        aim(rng, rvw, normal, p, s)
+        rvw_after = stronge_solve(model, make_ball(p, rvw, s, 0.0), cushion)
+        category = regime(p, rvw, cushion)
+        if rvw_after is None or category != REGIMES[made % 3]:
+            continue
+        made += 1
+        # make_kiss on the ball moved off contact by up to 1e-5 (or not), then resolve
+        shift = float(rng.choice([0.0, 1.0])) * float(rng.uniform(-1e-5, 1e-5))
+        off = rvw.copy()
+        off[0, :2] += shift * normal
+        kissed = model.make_kiss(make_ball(p, off, s, 0.0), cushion).state.rvw[0, :2]
+        resolved = stronge_solve(model, make_ball(p, kissed_rvw(off, kissed), s, 0.0), cushion)
+        resolved_text = "none" if resolved is None else fmt_rvw(resolved)
+        inputs = f"{fmt_cushion_params(p)} {fmt_state(s, rvw)} {fmt(*numbers)} {fmt(shift)}"
+        outputs = f"{fmt_rvw(rvw_after)} {fmt(*kissed)} {resolved_text}"
+        yield f"{kind} {category} {inputs} : {outputs}"
+
+
+def kissed_rvw(rvw: np.ndarray, xy) -> np.ndarray:
+    out = rvw.copy()
+    out[0, :2] = xy
+    return out
+
+
+def place_linear(rng: np.random.Generator, p: BallParams, rvw, normal, height):
+    """A straight cushion touching the ball, of any length, the ball anywhere along it."""
+    along = np.array([-normal[1], normal[0]])
+    length = float(rng.uniform(0.05, 2.5))
+    a = rvw[0, :2] - p.R * normal - float(rng.uniform(0.0, 1.0)) * length * along
+    b = a + length * along
+    if rng.random() < 0.5:
+        a, b = b, a
+    cushion = LinearCushionSegment("c", p1=np.array([*a, height]), p2=np.array([*b, height]))
+    return cushion, (*a, *b, height)
+
+
+def place_circular(rng: np.random.Generator, p: BallParams, rvw, normal, height):
+    """A rounded cushion (radius 1 mm to 20 cm) touching the ball."""
+    radius = log_uniform(rng, 1e-3, 0.2)
+    center = rvw[0, :2] - (p.R + radius) * normal
+    cushion = CircularCushionSegment("c", center=np.array([*center, height]), radius=radius)
+    return cushion, (*center, radius, height)
+
+
+def linear_cushion_cases(rng: np.random.Generator) -> Iterator[str]:
+    """``StrongeCompliantLinear`` (omega_ratio 1.8, as in the default resolver) at contact."""
+    model = StrongeCompliantLinear(omega_ratio=1.8)
+    return cushion_cases(rng, "linear_cushion", model, place_linear)
+
+
+def circular_cushion_cases(rng: np.random.Generator) -> Iterator[str]:
+    """``StrongeCompliantCircular`` (omega_ratio 1.8) at contact."""
+    model = StrongeCompliantCircular(omega_ratio=1.8)
+    return cushion_cases(rng, "circular_cushion", model, place_circular)
+
+
+REGIMES = ["gross_slip", "stick_slip", "slip_stick_slip"]
+
+
+def regime(p: BallParams, rvw: np.ndarray, cushion) -> str:
+    """The Stronge regime pooltool's ``_solve`` takes for this ball (omega_ratio 1.8)."""
+    normal = cushion.get_normal_3d(rvw[0])
+    contact = ptmath.surface_velocity(rvw, -normal, p.R)
+    v_n_0, v_t_0, _ = ptmath.decompose_normal_tangent(contact, normal, True)
+    ratio, eta_squared = v_t_0 / v_n_0, 3.5 / 1.8**2
+    if is_gross_slip(ratio, p.f_c, p.e_c, eta_squared, 3.5):
+        return "gross_slip"
+    if is_initial_stick(ratio, p.f_c, eta_squared):
+        return "stick_slip"
+    return "slip_stick_slip"
+
+
+def fmt_cushion_params(p: BallParams) -> str:
+    return f"{fmt_params(p)} {fmt(p.e_c, p.f_c)}"
+
+
 def fmt_ball_params(p: BallParams) -> str:
     return f"{fmt_params(p)} {fmt(p.e_b)}"
 
@@ -405,6 +538,8 @@ KINDS: list[tuple[str, Callable[[np.random.Generator], Iterator[str]]]] = [
     ("evolve", evolve_cases),
     ("path", path_cases),
     ("ball_ball", ball_ball_cases),
+    ("linear_cushion", linear_cushion_cases),
+    ("circular_cushion", circular_cushion_cases),
 ]
 
 HEADER = """\
@@ -421,6 +556,12 @@ HEADER = """\
 #   over event.time - t, CanonicalTransition.resolve)
 # ball_ball CAT P1 e_b1 P2 e_b2 S1 S2 : kx1 ky1 kx2 ky2 u_b S1' S2'
 #   (FrictionalInelastic: make_kiss's positions, AlciatoreBallBallFriction at them, resolve)
+# linear_cushion CAT P e_c f_c S p1x p1y p2x p2y height shift : rvw' kx ky rvw''
+# circular_cushion CAT P e_c f_c S cx cy radius height shift : rvw' kx ky rvw''
+#   (StrongeCompliantLinear / StrongeCompliantCircular, omega_ratio 1.8: rvw' = solve at
+#   contact; then the ball moved by shift along the normal, make_kiss's position kx ky, and
+#   rvw'' = solve there, or "none" where pooltool fails;
+#   CAT is the Stronge regime: gross_slip, stick_slip or slip_stick_slip)
 """
 
 

@@ -110,6 +110,13 @@ fn kiss_time(a: &BallState, b: &BallState, radius: f64) -> Option<f64> {
     let alpha = dv.x * dv.x + dv.y * dv.y;
     let beta = 2.0 * dv.x * dr.x + 2.0 * dv.y * dr.y;
     let gamma = dr.x * dr.x + dr.y * dr.y - contact * contact;
+    smallest_kept_root(alpha, beta, gamma)
+}
+
+/// pooltool's choice among `solve_complex`'s roots of `alpha·t² + beta·t + gamma`: those
+/// whose imaginary part is below `1e-3` of their real part, then the first of smallest
+/// magnitude; `None` if none is kept (pooltool then fails).
+pub(super) fn smallest_kept_root(alpha: f64, beta: f64, gamma: f64) -> Option<f64> {
     let roots = quadratic_roots(alpha, beta, gamma);
     // Kept: |imaginary| / |real| < 1e-3 (a root of 0, 0/0, is not kept); then the first of
     // smallest magnitude.

@@ -29,6 +29,10 @@
 //! | `evolve.rs` | [`evolve`]: any state `t` later, through its transitions (pooltool's `evolve_ball_motion`) |
 //! | `ball_ball.rs` | [`BallBallResolver`], the trait of ball–ball collision models, and the steps pooltool runs around each: [`make_kiss`], [`separate_touching`] |
 //! | `frictional_inelastic.rs` | [`FrictionalInelastic`], pooltool's default ball–ball model, and its friction [`AlciatoreFriction`] |
+//! | `cushion_linear.rs` | [`LinearCushion`], [`BallLinearCushionResolver`], the trait of straight-cushion models, and [`StrongeCompliantLinear`], pooltool's default |
+//! | `cushion_circular.rs` | [`CircularCushion`], [`BallCircularCushionResolver`] and [`StrongeCompliantCircular`], the same for rounded cushions |
+//! | `stronge.rs` | [`compliant_collinear_collision`]: Stronge's compliant frictional collision, in closed-form stick and slip phases, as pooltool solves it |
+//! | `root.rs` | TOMS748 (Alefeld–Potra–Shi) ported from scipy step for step, for the two Stronge regimes where pooltool calls it |
 //! | `ball_path.rs` | [`ball_path`], [`BallPath`]: the motion until the ball stops as constant-acceleration segments, with the state at each segment's start |
 //!
 //! ```
@@ -49,6 +53,8 @@
 
 mod ball_ball;
 mod ball_path;
+mod cushion_circular;
+mod cushion_linear;
 mod direction;
 mod evolve;
 mod evolve_roll;
@@ -56,13 +62,21 @@ mod evolve_slide;
 mod evolve_spin;
 mod frictional_inelastic;
 mod params;
+mod root;
 mod slip_velocity;
 mod state;
+mod stronge;
 mod transition;
 mod transition_time;
 
 pub use ball_ball::{BallBallResolver, KISS_SPACER, make_kiss, separate_touching};
 pub use ball_path::{BallPath, ball_path};
+pub use cushion_circular::{
+    BallCircularCushionResolver, CircularCushion, StrongeCompliantCircular, kiss_circular_cushion,
+};
+pub use cushion_linear::{
+    BallLinearCushionResolver, LinearCushion, StrongeCompliantLinear, kiss_linear_cushion,
+};
 pub use evolve::evolve;
 pub use evolve_roll::evolve_roll;
 pub use evolve_slide::evolve_slide;
@@ -71,5 +85,6 @@ pub use frictional_inelastic::{AlciatoreFriction, FrictionalInelastic};
 pub use params::BallParams;
 pub use slip_velocity::slip_velocity;
 pub use state::{BallState, MotionState};
+pub use stronge::compliant_collinear_collision;
 pub use transition::{NextTransition, TransitionKind, next_transition};
 pub use transition_time::{roll_time, slide_time, spin_time};
