@@ -811,11 +811,12 @@ fn ray<const D: usize>(rng: &mut Rng, t: f64, p: SVector<f64, D>) -> Path<D> {
 }
 
 /// Rays side by side, each pair of neighbours across them at the contact distance to within
-/// a few ulps (times a scale), passing each other at other speeds from far apart along them:
-/// the pair search decides these grazes to its rounding, and the boxes, which run for ever
-/// along the rays (from where each ball is, or turns back) and are bounded across them by
-/// their margins alone, must never prune a pair it reports. Then the rays change (from later and later times, so from farther along) and
-/// the events are resolved, brute force throughout.
+/// a few ulps of the coordinates, passing each other at other speeds from far apart along
+/// them: the pair search decides these grazes to its rounding, and the boxes, which run for
+/// ever along the rays (from where each ball is, or turns back) and are bounded across them
+/// by their margins alone, must never prune a pair it reports. Then the rays change (from
+/// later and later times, so from farther along) and the events are resolved, brute force
+/// throughout.
 fn rays_at_the_edge<const D: usize>(
     seed: u64,
     n: usize,

@@ -49,14 +49,14 @@
 //! magnitudes at the span's start, or at the turn if the motion turns back inside the span,
 //! which `S` counts. (At a constant speed `M` grows by the distance itself; driven on by the
 //! acceleration, by at most twice the distance; turning back, at the turn `t = |v/a|`, beyond
-//! three times its time by at most six times the distance from the turn, which is the
-//! distance beyond `L` plus at most `F`, and before that it is at most `M(3t) ≤ 6·M(t)`.) So
-//! at a time when a pruned pair might touch, the search's error on that axis is a few
-//! roundings of `7·F` (and the other ball's part) plus `6·c·ε` times the distance gone beyond
-//! `L`, while the separation gains that whole distance: it exceeds its error by what the
-//! margin covers at `L` alone, as on a bounded axis, with 7 times less room (more than `2⁶`).
-//! Two boxes pruned on such an axis are moving apart on it (the one's finite end faces the
-//! other's). A margin that overflows (magnitudes beyond the float range) makes the whole box
+//! three times its time by at most six times the distance from the turn, which is the distance
+//! beyond `L` plus at most `F`, and before that it is at most `M(3t) ≤ 6·M(t)`.) So at a time
+//! when a pruned pair might touch, the search's error on that axis is a few roundings of `7·F`
+//! (and the other ball's part) plus `6·c·ε` times the distance gone beyond `L`, while the
+//! separation gains that whole distance: it exceeds its error by what the margin covers at `L`
+//! alone, as on a bounded axis, with 7 times less room (more than `2⁶`). (A box pruned against
+//! such a one on that axis lies beyond its finite end, and the ball only drifts farther from
+//! it.) A margin that overflows (magnitudes beyond the float range) makes the whole box
 //! unbounded, as before: it prunes nothing. Caveat, as for the search itself: its units are
 //! exact unless a field underflows in them, more than about `2¹⁰⁰⁰` times below the window's
 //! largest, beyond the range where the search is exact.
