@@ -3,11 +3,11 @@
 //! run, one thread.
 //!
 //! ```text
-//! cargo run --release --example open_space_timing -- [REPEATS]
+//! cargo run --release --example open_space_timing -- [REPEATS [CASE]]
 //! ```
 //!
-//! Prints one line of `key=value` fields per case, each time the median of REPEATS runs
-//! (default 5):
+//! Prints one line of `key=value` fields per case (only CASE's, if given), each time the
+//! median of REPEATS runs (default 5):
 //! - `parallel_open`: N = 400 frictionless balls in open space (no walls) on a row, 3 apart
 //!   (radius ½), all moving across the row at 1: they never meet. The calendar's build and
 //!   its first `next_collision()` (which is `None`), `t_max = ∞` against `1e3`.
@@ -169,11 +169,16 @@ fn run(args: &[String]) -> Result<Vec<String>, String> {
         Some(text) => text.parse::<usize>().map_err(|e| format!("REPEATS: {e}"))?,
         None => 5,
     };
+    let only = args.get(2).map(String::as_str);
+    let wanted = |case: &str| only.is_none_or(|c| c == case);
     let mut lines = vec![format!(
         "simd={} repeats={repeats} one_thread=true",
         simd::current().name()
     )];
-    for t_max in [f64::INFINITY, 1e3] {
+    for t_max in [f64::INFINITY, 1e3]
+        .into_iter()
+        .filter(|_| wanted("parallel_open"))
+    {
         let n = 400;
         let build = median(repeats, || parallel_open(n, t_max).map(|r| r.0))?;
         let first = median(repeats, || parallel_open(n, t_max).map(|r| r.1))?;
@@ -185,7 +190,10 @@ fn run(args: &[String]) -> Result<Vec<String>, String> {
             total * 1e3
         ));
     }
-    for t_max in [f64::INFINITY, 1e3] {
+    for t_max in [f64::INFINITY, 1e3]
+        .into_iter()
+        .filter(|_| wanted("gas_open"))
+    {
         let n = 400;
         let events = gas_open(n, t_max)?.1;
         let per = median(repeats, || gas_open(n, t_max).map(|r| r.0))?;
@@ -194,7 +202,7 @@ fn run(args: &[String]) -> Result<Vec<String>, String> {
             per * 1e6
         ));
     }
-    {
+    if wanted("corner_open") {
         let n = 1000;
         // Both times from the same runs (each takes a while).
         let runs = (0..repeats.max(1))
@@ -208,7 +216,7 @@ fn run(args: &[String]) -> Result<Vec<String>, String> {
             first * 1e3
         ));
     }
-    for n in [1, 4, 200] {
+    for n in [1, 4, 200].into_iter().filter(|_| wanted("parallel_box")) {
         for t_end in [f64::INFINITY, 100.0] {
             let events = parallel_box(n, t_end)?.1;
             let per = median(repeats, || parallel_box(n, t_end).map(|r| r.0))?;
