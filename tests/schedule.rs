@@ -14,9 +14,10 @@ mod cases;
 mod schedule_invariants;
 
 use ballcollide::Ball;
+use ballcollide::geometry::{LineSegment, SegmentSide, Table};
 use ballcollide::path::{Path, Segment};
 use ballcollide::schedule::{CollisionSchedule, Event, FrictionPath, ScheduleOptions, Side, Walls};
-use nalgebra::Vector2;
+use nalgebra::{SVector, Vector2};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 use schedule_invariants::{Choices, Draw, Numbers, Plan, Scene, Seen, brute_collision};
@@ -197,6 +198,67 @@ fn grids_of_one_cell_with_many_balls_are_brute_force() {
             CollisionSchedule::new(paths, &radii, ScheduleOptions::default()).expect("valid");
         play(&mut s, &mut draw, steps);
     }
+}
+
+/// A ball of radius 3/8 `beyond` the near end `Q = (1.25, 1.25)` of a segment whose far end is
+/// `2^k` away, within its radius of the line and moving towards it (its centre `(x, y)`, `z =
+/// 0` in 3-D): the calendar's next event against brute force; whether it is the segment.
+fn far_ended_segment<const D: usize>(k: i32, beyond: f64, side: SegmentSide) -> bool {
+    let q = Vector2::new(1.25, 1.25);
+    let along = Vector2::new(0.6, 0.8);
+    let across = Vector2::new(-0.8, 0.6);
+    let segment = LineSegment::new(q + along * 2f64.powi(k), q, side).expect("a segment");
+    let centre = q - along * beyond + across * 0.125;
+    let embed =
+        |v: Vector2<f64>| SVector::<f64, D>::from_fn(|i, _| v.get(i).copied().unwrap_or(0.0));
+    let line = |p: Vector2<f64>, v: Vector2<f64>| {
+        Path::new(vec![Segment::new(
+            0.0,
+            embed(p),
+            embed(v),
+            SVector::zeros(),
+        )])
+        .expect("a path")
+    };
+    // Two more balls, far from the segment, that collide at t = 3/4: the calendar does not
+    // move the first ball's box on past that.
+    let paths = vec![
+        line(centre, -across * 0.5),
+        line(Vector2::new(-50.0, -50.0), Vector2::new(1.0, 0.0)),
+        line(Vector2::new(-48.5, -50.0), Vector2::zeros()),
+    ];
+    let options = ScheduleOptions {
+        table: Table {
+            segments: vec![segment],
+            ..Table::default()
+        },
+        ..ScheduleOptions::default()
+    };
+    let mut s = CollisionSchedule::new(paths, &[0.375; 3], options).expect("valid");
+    matches!(check(&mut s), Some(Event::Object(_)))
+}
+
+/// Fuzz finding (target `schedule`): the foot test of a segment's contact is exact to a few
+/// roundings of its far end's magnitude, so that next to the near end a ball up to about
+/// `2⁻⁵³` of the segment's length beyond it counts as on it (docs/contract.md §4.7: a contact
+/// within about 1e-9 of the length of an end may be reported or not). The calendar pruned
+/// those contacts (the segment's box was its ends' box to the ulp), and so missed object
+/// events that asking every object gives.
+#[test]
+fn segments_with_a_far_end_are_brute_force_next_to_the_near_one() {
+    let mut reported = 0;
+    let mut cases = 0;
+    for k in [20, 53, 60, 80, 100, 107, 150, 300] {
+        for beyond in [0.0625, 0.5, 1.0, 1e3, 1e9, 1e15, 1e30] {
+            for side in [SegmentSide::Both, SegmentSide::Left] {
+                cases += 2;
+                reported += usize::from(far_ended_segment::<2>(k, beyond, side));
+                reported += usize::from(far_ended_segment::<3>(k, beyond, side));
+            }
+        }
+    }
+    // Both answers occur: the cases straddle the foot test's rounding.
+    assert!(reported > 0 && reported < cases, "{reported} of {cases}");
 }
 
 #[test]
