@@ -21,6 +21,10 @@ pub mod narrow_pairs;
 pub mod path_invariants;
 #[path = "../../tests/support/path_table.rs"]
 mod path_table;
+#[path = "../../tests/support/rng.rs"]
+mod rng;
+#[path = "../../tests/support/schedule_invariants.rs"]
+pub mod schedule_invariants;
 #[path = "../../tests/support/simulation_invariants.rs"]
 pub mod simulation_invariants;
 
@@ -28,6 +32,8 @@ use geometry_invariants::{DiscObject, GeometryCase, PlaneObject, SegmentObject};
 use invariants::{BallInput, PairCase, SceneCase, Shared};
 use narrow_pairs::NarrowDraw;
 use path_invariants::{PathCase, SegmentInput};
+use rng::Rng;
+use schedule_invariants::{Choices, Compare, Draw, Numbers, Plan, Scene};
 
 /// Inputs that start with this are read literally (see [`Raw`]) instead of decoded: the form of
 /// the regression corpus, which stays the same input whatever the decoders become.
@@ -603,4 +609,165 @@ pub fn narrow_draw(u: &mut Unstructured) -> Result<NarrowDraw> {
         b_kind: u.arbitrary()?,
         fractions,
     })
+}
+
+/// libFuzzer's bytes as the choices of a calendar's case, scene and operations
+/// (`tests/support/schedule_invariants.rs`), and once they run out, a generator seeded by a
+/// hash of the whole input: a short input still makes a whole scene and run (libFuzzer's
+/// inputs start at a few bytes and grow slowly), and any change of a byte changes the rest.
+pub struct Bytes<'a> {
+    bytes: Unstructured<'a>,
+    rest: Rng,
+}
+
+impl<'a> Bytes<'a> {
+    /// The choices in `data`, then those of a generator seeded by a hash of `data`.
+    pub fn new(data: &'a [u8]) -> Self {
+        // FNV-1a, made odd (the generator's state must not be 0).
+        let hash = data.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &b| {
+            (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+        });
+        Self {
+            bytes: Unstructured::new(data),
+            rest: Rng(hash | 1),
+        }
+    }
+}
+
+impl Choices for Bytes<'_> {
+    fn below(&mut self, n: u64) -> u64 {
+        if self.bytes.is_empty() {
+            self.rest.below(n)
+        } else {
+            self.bytes.int_in_range(0..=n - 1).unwrap_or(0)
+        }
+    }
+
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        if self.bytes.is_empty() {
+            return self.rest.uniform(lo, hi);
+        }
+        let bits = self.bytes.arbitrary::<u64>().unwrap_or(0) >> 11;
+        lo + (hi - lo) * (bits as f64 / (1u64 << 53) as f64)
+    }
+}
+
+/// A calendar's case: the scene's shape and scales, and the plan of its operations; the
+/// scene's numbers and the operations are drawn from the choices after it ([`Bytes`]).
+#[derive(Clone, Copy, Debug)]
+pub struct ScheduleCase {
+    pub three_d: bool,
+    pub numbers: Numbers,
+    pub scene: Scene,
+    /// Exponents of the length and time scalings (`Draw::length`, `Draw::time`).
+    pub length: i32,
+    pub time: i32,
+    pub spread: u32,
+    /// How many times as many objects as the tests' tables (`Draw::objects`).
+    pub objects: u64,
+    pub steps: usize,
+    pub plan: Plan,
+}
+
+impl Bytes<'_> {
+    fn flag(&mut self) -> bool {
+        self.below(2) == 1
+    }
+
+    /// Uniform in `lo..=hi`.
+    fn int(&mut self, lo: i32, hi: i32) -> i32 {
+        lo + self.below((hi - lo) as u64 + 1) as i32
+    }
+}
+
+/// A calendar's case, from the first choices: 0 to 24 balls in 2-D or 3-D; walls, a table
+/// and transitions each on or off; a horizon (none half of the time, else 0 or up to 16 time
+/// units); the first start at 0, a small dyadic time either side, or late (up to 2⁸⁰); the
+/// balls' first starts all at it or staggered; lengths scaled by `2^k` (`k = 0` half of the
+/// time, else up to `2^±64` or over the whole float range), times by `2^m` (`m = 0` half of
+/// the time, else up to `2^±100`), and half of the scenes with balls spread over up to
+/// `2^±200` in speed, radius and distance (objects too); half of the tables with 2 to 8 times
+/// as many objects at most as the tests' (up to 5 segments, 3 circles, 2 targets and a plane;
+/// past 16 objects their grid has more than one cell); 1 to 64 steps; refusals every 1 to 16
+/// steps and retirements every 1 to 24 (at a drawn phase).
+pub fn schedule_case(c: &mut Bytes) -> ScheduleCase {
+    let three_d = c.flag();
+    let n = c.below(25) as usize;
+    let numbers = if c.flag() {
+        Numbers::Dyadic
+    } else {
+        Numbers::Full
+    };
+    let length = match c.below(4) {
+        0 | 1 => 0,
+        2 => c.int(-64, 64),
+        _ => c.int(-1074, 1023),
+    };
+    let time = if c.flag() { 0 } else { c.int(-100, 100) };
+    let spread = if c.flag() { 0 } else { c.int(1, 200) as u32 };
+    let objects = if c.flag() { 1 } else { c.int(2, 8) as u64 };
+    let t_max = match c.below(4) {
+        0 | 1 => f64::INFINITY,
+        2 => c.below(1 << 16) as f64 / 4096.0,
+        _ => 0.0,
+    };
+    let start = match c.below(4) {
+        0 | 1 => 0.0,
+        2 => f64::from(c.int(-32768, 32767)) / 16.0,
+        _ => scale(1.0, c.int(0, 80)),
+    };
+    let scene = Scene {
+        n,
+        walls: c.flag(),
+        table: c.flag(),
+        transitions: c.flag(),
+        t_max,
+        start,
+        stagger: c.flag(),
+    };
+    let steps = c.int(1, 64) as usize;
+    let refuse = c.int(1, 16) as usize;
+    let retire = c.int(1, 24) as usize;
+    let plan = Plan {
+        refuse: (refuse, c.below(refuse as u64) as usize),
+        retire: (retire, c.below(retire as u64) as usize),
+        compare: Compare::WithinPromise,
+    };
+    ScheduleCase {
+        three_d,
+        numbers,
+        scene,
+        length,
+        time,
+        spread,
+        objects,
+        steps,
+        plan,
+    }
+}
+
+/// Runs a calendar's case on the choices that follow it (`tests/support/schedule_invariants.rs`);
+/// with `BALLCOLLIDE_FUZZ_SHOW` set, prints what the run met (events by class, checks).
+///
+/// # Errors
+/// The first invariant broken, with the case, the scene and the operations.
+pub fn schedule_run<const D: usize>(case: &ScheduleCase, choices: Bytes) -> Result<(), String> {
+    let size = 1.0 + (case.scene.n as f64).sqrt();
+    let mut draw = Draw::new(choices, case.numbers, size);
+    draw.length = scale(1.0, case.length);
+    draw.time = scale(1.0, case.time);
+    draw.spread = case.spread;
+    draw.objects = case.objects;
+    let (mut s, made) = match schedule_invariants::calendar::<D, _>(&mut draw, &case.scene) {
+        Ok(Some(made)) => made,
+        // Numbers scaled out of the float range: no valid scene.
+        Ok(None) => return Ok(()),
+        Err(e) => return Err(format!("{e}\ncase: {case:?}")),
+    };
+    let seen = schedule_invariants::play(&mut s, &mut draw, case.steps, case.plan)
+        .map_err(|e| format!("{e}\ncase: {case:?}\nscene: {made:?}"))?;
+    if std::env::var_os("BALLCOLLIDE_FUZZ_SHOW").is_some() {
+        eprintln!("{seen:?}");
+    }
+    Ok(())
 }
