@@ -15,7 +15,7 @@
 //!
 //! Prints per scene the µs per event on the table and in the box (the median of 5 runs) and
 //! their ratio, the events, and how many ball–object pairs the object grid left out and
-//! asked per object search; then the CPU.
+//! asked per object search; the CPU and SIMD level on stderr.
 
 use std::process::ExitCode;
 use std::time::Instant;
@@ -25,6 +25,8 @@ use ballcollide::geometry::{PoolTable, Table};
 use ballcollide::schedule::{Simulation, SimulationOptions, Walls, simulate};
 use nalgebra::Vector2;
 
+#[path = "../tests/support/machine.rs"]
+mod machine;
 #[path = "../tests/support/rng.rs"]
 mod rng;
 use rng::Rng;
@@ -94,30 +96,6 @@ fn median_per_event(scene: &Scene) -> Result<(f64, usize, [u64; 3]), String> {
     Ok((per_event[2], last.0, last.1))
 }
 
-fn cpu() -> String {
-    let model = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("model name"))
-                .and_then(|l| l.split(':').nth(1))
-                .map(|m| m.trim().to_string())
-        })
-        .unwrap_or_else(|| std::env::consts::ARCH.to_string());
-    let level = if cfg!(target_arch = "x86_64") {
-        if std::arch::is_x86_feature_detected!("avx512f") {
-            "avx512"
-        } else if std::arch::is_x86_feature_detected!("avx2") {
-            "avx2"
-        } else {
-            "sse2"
-        }
-    } else {
-        "portable"
-    };
-    format!("{model} (SIMD {level}; the calendar and simulate run scalar code)")
-}
-
 fn run(args: &[String]) -> Result<String, String> {
     let shots: usize = args
         .get(1)
@@ -183,8 +161,9 @@ fn run(args: &[String]) -> Result<String, String> {
             counts[2] as f64 / searches,
         );
     }
-    out += &format!("cpu: {}", cpu());
-    Ok(out)
+    // (The calendar and simulate run scalar code: the SIMD level is the batches'.)
+    machine::print_machine();
+    Ok(out.trim_end().to_string())
 }
 
 fn main() -> ExitCode {

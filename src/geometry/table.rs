@@ -157,40 +157,36 @@ impl<const D: usize> Table<D> {
         kind: ObjectKind,
         index: usize,
     ) -> Option<([f64; D], [f64; D])> {
-        let outward = |lo: f64, hi: f64| (lo.next_down(), hi.next_up());
-        match kind {
+        let (lo, hi): ([f64; D], [f64; D]) = match kind {
             ObjectKind::Segment => {
                 let s = &self.segments[index];
                 let (p, q) = (s.p(), s.q());
                 let grow = SEGMENT_MARGIN * p.amax().max(q.amax());
-                Some((
-                    std::array::from_fn(|k| {
-                        if k < 2 {
-                            (p[k].min(q[k]) - grow).next_down()
-                        } else {
-                            f64::NEG_INFINITY
-                        }
+                // The plane's two axes; in 3-D the vertical wall is unbounded upwards.
+                (
+                    std::array::from_fn(|k| match k {
+                        0 | 1 => (p[k].min(q[k]) - grow).next_down(),
+                        _ => f64::NEG_INFINITY,
                     }),
-                    std::array::from_fn(|k| {
-                        if k < 2 {
-                            (p[k].max(q[k]) + grow).next_up()
-                        } else {
-                            f64::INFINITY
-                        }
+                    std::array::from_fn(|k| match k {
+                        0 | 1 => (p[k].max(q[k]) + grow).next_up(),
+                        _ => f64::INFINITY,
                     }),
-                ))
+                )
             }
             ObjectKind::Circle | ObjectKind::Target => {
                 let (c, rho) = match kind {
                     ObjectKind::Circle => (self.circles[index].centre(), self.circles[index].rho()),
                     _ => (self.targets[index].centre(), self.targets[index].rho()),
                 };
-                let lo = std::array::from_fn(|k| outward(c[k] - rho, c[k] + rho).0);
-                let hi = std::array::from_fn(|k| outward(c[k] - rho, c[k] + rho).1);
-                Some((lo, hi))
+                (
+                    std::array::from_fn(|k| (c[k] - rho).next_down()),
+                    std::array::from_fn(|k| (c[k] + rho).next_up()),
+                )
             }
-            ObjectKind::Plane => None,
-        }
+            ObjectKind::Plane => return None,
+        };
+        Some((lo, hi))
     }
 }
 

@@ -362,32 +362,29 @@ pub(super) fn pool_table<'py>(
         pocket_radius: pocket_radius.number_or("pocket_radius", d.pocket_radius)?,
     };
     let table = spec.table().map_err(|e| from_core(py, e))?;
-    let rows = |rows: Vec<Vec<f64>>, width: usize| -> PyResult<Bound<'py, PyAny>> {
-        let flat: Vec<f64> = rows.concat();
-        let n = flat.len() / width.max(1);
+    // Each kind as one flat run of numbers, reshaped to `(M, width)`.
+    let rows = |flat: Vec<f64>, width: usize| -> PyResult<Bound<'py, PyAny>> {
+        let n = flat.len() / width;
         PyArray1::from_vec(py, flat).call_method1("reshape", ((n, width),))
     };
     let dict = pyo3::types::PyDict::new(py);
-    let segments: Vec<Vec<f64>> = table
-        .segments
-        .iter()
-        .map(|s| vec![s.p().x, s.p().y, s.q().x, s.q().y])
-        .collect();
+    let ends = |s: &crate::geometry::LineSegment| [s.p().x, s.p().y, s.q().x, s.q().y];
+    let segments = table.segments.iter().flat_map(ends).collect();
     let segments = rows(segments, 4)?.call_method1("reshape", ((table.segments.len(), 2, 2),))?;
     dict.set_item("segments", segments)?;
     let sides: Vec<i64> = table.segments.iter().map(|s| s.side().sign()).collect();
     dict.set_item("segment_sides", PyArray1::from_vec(py, sides))?;
-    let disc = |c: nalgebra::Vector2<f64>, rho: f64| vec![c.x, c.y, rho];
+    let disc = |c: nalgebra::Vector2<f64>, rho: f64| [c.x, c.y, rho];
     let circles = table
         .circles
         .iter()
-        .map(|c| disc(c.centre(), c.rho()))
+        .flat_map(|c| disc(c.centre(), c.rho()))
         .collect();
     dict.set_item("circles", rows(circles, 3)?)?;
     let targets = table
         .targets
         .iter()
-        .map(|t| disc(t.centre(), t.rho()))
+        .flat_map(|t| disc(t.centre(), t.rho()))
         .collect();
     dict.set_item("targets", rows(targets, 3)?)?;
     Ok(dict)

@@ -772,7 +772,7 @@ impl<const D: usize> CollisionSchedule<D> {
         self.bump_clock(i);
         self.pairs.set(i, PairKey::NOTHING);
         self.wall_contacts.set(i, WallKey::NOTHING);
-        if !self.objects.table().is_empty() {
+        if self.has_objects() {
             self.object_contacts.set(i, ObjectKey::NOTHING);
         }
         if let Some(queue) = &mut self.transitions {
@@ -1158,8 +1158,7 @@ impl<const D: usize> CollisionSchedule<D> {
         }
         // An object contact found before the old horizon stands (the new box holds the old
         // one's span from now on); a re-check is done now.
-        let objects = !self.objects.table().is_empty();
-        if objects && self.object_contacts.key(i).kind == ObjectKeyKind::Recheck {
+        if self.has_objects() && self.object_contacts.key(i).kind == ObjectKeyKind::Recheck {
             self.refresh_object(i);
         }
     }
@@ -1317,10 +1316,15 @@ impl<const D: usize> CollisionSchedule<D> {
         self.wall_contacts.set(i, key);
     }
 
+    /// Whether the calendar has objects (else it keeps no object keys).
+    fn has_objects(&self) -> bool {
+        !self.objects.table().is_empty()
+    }
+
     /// Recomputes ball `i`'s object key: its earliest object contact at or after the current
     /// time among the objects its box meets, or its re-check if that may come first.
     fn refresh_object(&mut self, i: usize) {
-        if self.objects.table().is_empty() {
+        if !self.has_objects() {
             return;
         }
         let best = self.objects.first_contact(
