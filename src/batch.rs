@@ -11,21 +11,10 @@
 //! [`path_geometry_times`], whose answers go into [`ContactColumns`]).
 
 mod first_window_lanes;
-// The generic lanes are built and tested at every level, but the batch runs them nowhere yet
-// (slower than no lanes at AVX2 as the compiler builds them today; AVX-512 runs their
-// intrinsics twin): see `paths::path_chunk_avx2`.
-#[cfg_attr(not(test), allow(dead_code))]
-mod lane_ops;
 mod path_geometry;
-#[cfg_attr(not(test), allow(dead_code))]
 mod path_lanes;
-#[cfg(target_arch = "x86_64")]
-mod path_lanes_avx512;
 mod paths;
-#[cfg_attr(not(test), allow(dead_code))]
 mod window_lanes;
-#[cfg(target_arch = "x86_64")]
-mod window_lanes_avx512;
 
 #[cfg(feature = "python")]
 pub(crate) use path_geometry::check_path_geometry;
@@ -54,7 +43,7 @@ use crate::error::{
 };
 use crate::interrupt::Interrupt;
 use crate::motion::Ball;
-use crate::simd::{self, Level};
+use crate::simd;
 
 /// A scalar parameter of a batch: one value for every pair, or one per pair.
 ///
@@ -174,8 +163,8 @@ pub fn collision_times(
     let n = out.len();
     check_lengths(pairs, n)?;
     let level = simd::current();
-    run_chunks(out, threads, |offset, chunk| {
-        solve_chunk(level, pairs, offset, chunk)
+    run_chunks(out, threads, |offset, out| {
+        simd::dispatch(level, SolveChunk { pairs, offset, out })
     })
 }
 
@@ -184,58 +173,27 @@ pub fn collision_times(
 /// and the compiler turns the block loops into vector code.
 const LANES: usize = 8;
 
-/// The collision times of pairs `offset..offset + out.len()`, at `level` (the batch's, from
-/// [`simd::current`](crate::simd::current)).
+/// The collision times of pairs `offset..offset + out.len()`: the batch's work on one chunk,
+/// at a SIMD level ([`simd::dispatch`]).
 ///
-/// On x86-64 CPUs with AVX-512 (or AVX2 and FMA) the lane-wise tests run in 8-wide (4-wide)
-/// vectors: copies of the same code compiled for those features; elsewhere in whatever the
-/// baseline target vectorises. The tests use only correctly rounded operations, and fused
-/// multiply-adds only where written (`mul_add`, a library call without the FMA feature, one
-/// instruction with it: the same exact result), so all copies give the same bits (a test
-/// checks it).
-fn solve_chunk(
-    level: Level,
-    pairs: &Pairs<'_>,
+/// Its lane-wise tests are plain array code over blocks of [`LANES`] pairs that the compiler
+/// vectorises in each level's copy (8-wide with AVX-512, 4-wide with AVX2); they use only
+/// correctly rounded operations, and fused multiply-adds only where written (`mul_add`, a
+/// library call without the FMA feature, one instruction with it: the same exact result), so
+/// every level gives the same bits (a test checks it).
+struct SolveChunk<'p, 'c> {
+    pairs: &'p Pairs<'p>,
     offset: usize,
-    out: &mut [f64],
-) -> Result<(), InputError> {
-    match level {
-        // SAFETY: `level` is supported by this CPU (`simd` hands out no other), and each copy
-        // needs only its level's features.
-        #[cfg(target_arch = "x86_64")]
-        Level::Avx512 => unsafe { solve_chunk_avx512(pairs, offset, out) },
-        #[cfg(target_arch = "x86_64")]
-        Level::Avx2Fma => unsafe { solve_chunk_avx2(pairs, offset, out) },
-        _ => solve_chunk_portable(pairs, offset, out),
+    out: &'c mut [f64],
+}
+
+impl simd::Kernel for SolveChunk<'_, '_> {
+    type Output = Result<(), InputError>;
+
+    #[inline(always)]
+    fn run<S: simd::Simd>(self, _: S) -> Self::Output {
+        solve_chunk(self.pairs, self.offset, self.out)
     }
-}
-
-/// [`solve_chunk_portable`] compiled with AVX2 and FMA enabled.
-///
-/// # Safety
-/// The CPU must support AVX2 and FMA.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-unsafe fn solve_chunk_avx2(
-    pairs: &Pairs<'_>,
-    offset: usize,
-    out: &mut [f64],
-) -> Result<(), InputError> {
-    solve_chunk_portable(pairs, offset, out)
-}
-
-/// [`solve_chunk_portable`] compiled with AVX-512 (F, VL, DQ), AVX2 and FMA enabled.
-///
-/// # Safety
-/// The CPU must support those features.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512dq")]
-unsafe fn solve_chunk_avx512(
-    pairs: &Pairs<'_>,
-    offset: usize,
-    out: &mut [f64],
-) -> Result<(), InputError> {
-    solve_chunk_portable(pairs, offset, out)
 }
 
 /// Screens blocks of [`LANES`] pairs ([`screen`]); the moving pairs it leaves open are
@@ -247,11 +205,7 @@ unsafe fn solve_chunk_avx512(
 /// Invalid pairs reach the search as soon as they are met, so the first error found is the
 /// lowest index's (the pairs held back are valid: they cannot fail).
 #[inline(always)]
-fn solve_chunk_portable(
-    pairs: &Pairs<'_>,
-    offset: usize,
-    out: &mut [f64],
-) -> Result<(), InputError> {
+fn solve_chunk(pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) -> Result<(), InputError> {
     let mut held = Held::default();
     for start in (0..out.len()).step_by(LANES) {
         let len = LANES.min(out.len() - start);
@@ -359,7 +313,7 @@ fn lanes(pairs: &Pairs<'_>, index: &[usize; LANES], len: usize) -> [PairInput; L
 
 impl Held {
     /// Runs each stage on every full block, and on whatever is held if `finish` (`out` holds
-    /// pairs `offset..`). Inlined into every copy of [`solve_chunk_portable`], so that the
+    /// pairs `offset..`). Inlined into every copy of [`solve_chunk`], so that the
     /// tests run in the widest vectors; each stage has one call site, so it is inlined once.
     #[inline(always)]
     fn advance(
@@ -1022,12 +976,17 @@ mod tests {
         let r = rows(5_000, 5);
         let p = pairs(&r);
         let mut portable = vec![0.0; r.pos_a.len()];
-        assert_eq!(solve_chunk_portable(&p, 0, &mut portable), Ok(()));
+        assert_eq!(solve_chunk(&p, 0, &mut portable), Ok(()));
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         // Every copy this CPU can run, through the dispatch.
         for level in crate::simd::test_levels() {
             let mut copy = vec![0.0; r.pos_a.len()];
-            assert_eq!(solve_chunk(level, &p, 0, &mut copy), Ok(()));
+            let chunk = SolveChunk {
+                pairs: &p,
+                offset: 0,
+                out: &mut copy,
+            };
+            assert_eq!(simd::dispatch(level, chunk), Ok(()));
             assert_eq!(bits(&portable), bits(&copy), "{level}");
             eprintln!("friction lanes at {level}: same bits as the portable copy");
         }

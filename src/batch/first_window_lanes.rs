@@ -19,9 +19,7 @@ use super::paths::PathPairs;
 use crate::collision::length_unit::largest;
 use crate::collision::path_contact::PathFirstWindow;
 use crate::path::Segment;
-
-/// Pairs per block.
-pub(super) const LANES: usize = 8;
+use crate::simd::LANES;
 
 /// The chunk positions of pairs held back for the first-window lanes: room for a block and
 /// for what the lanes leave of one more before the block is taken.

@@ -1,8 +1,8 @@
 //! The whole-path screens ([`PathBounds::apart`], then [`apart_across_chords`]), eight pairs
-//! at a time, written once over `[f64; 8]` lanes ([`lane_ops`](super::lane_ops)) and compiled
-//! in each copy of the batch (AVX-512, AVX2 + FMA, portable: [`simd`](crate::simd)): a block
-//! of pairs of paths read from their rows, every value checked and every path's box and chord spans formed in the vector registers, one pair per lane,
-//! without a branch on the data ([`settled`]); then, for the pairs they leave, the window
+//! at a time, written once over the operations of [`Simd`] and compiled at each level
+//! ([`simd`](crate::simd): AVX-512, AVX2 + FMA, NEON, portable): a block of pairs of paths
+//! read from their rows, every value checked and every path's box and chord spans formed in
+//! the vector registers, one pair per lane, without a branch on the data ([`settled`]); then, for the pairs they leave, the window
 //! screens on every window of the pair ([`window_lanes`](super::window_lanes)). The pairs they
 //! settle (valid, proven apart) answer "none" at once; the others go on to the pair's own
 //! search, which reads them again and reports any error.
@@ -25,46 +25,40 @@
 //! [`PathBounds::reach`]: crate::collision::path_bounds::PathBounds
 //! [`apart_across_chords`]: crate::collision::chord_normals
 
-#[allow(unused_imports)]
-use super::lane_ops::{
-    V, abs, add, blend, div, eq, ge, gt, lt, max, min, mul, ne, splat, sqrt, sub, zero,
-};
-
 use super::PerPair;
 use super::paths::{PathPairs, PathRows};
 use super::window_lanes::{LaneSide, windows_apart};
 use crate::collision::window_box::{MARGIN, NORMAL_FLOOR};
-
-pub(crate) use super::lane_ops::LANES;
+use crate::simd::{LANES, MOST, Mask, Simd};
 
 /// The pairs of a block that the lanes settle, by screen (bit `l` for the block's pair `l`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Settled {
     /// The path bounds are apart.
-    pub(crate) bounds: u8,
+    pub(crate) bounds: Mask,
     /// The path bounds are not, the spans across a chord are.
-    pub(crate) chords: u8,
+    pub(crate) chords: Mask,
     /// Neither is, every window is proven apart ([`window_lanes`](super::window_lanes)).
-    pub(crate) windows: u8,
+    pub(crate) windows: Mask,
     /// Taken whole by the lanes (valid, every row used, a plain reach): where none of the
     /// above holds, the pair's own whole-path screens fail too.
-    pub(crate) taken: u8,
+    pub(crate) taken: Mask,
 }
 
 /// One side's rows of a block, a lane each: row `k`'s start and its position, velocity and
 /// acceleration on each axis.
-pub(super) struct LaneRows<const D: usize, const K: usize> {
-    pub(super) s: [V; K],
-    pub(super) p: [[V; D]; K],
-    pub(super) v: [[V; D]; K],
-    pub(super) a: [[V; D]; K],
+pub(super) struct LaneRows<S: Simd, const D: usize, const K: usize> {
+    pub(super) s: [S::V; K],
+    pub(super) p: [[S::V; D]; K],
+    pub(super) v: [[S::V; D]; K],
+    pub(super) a: [[S::V; D]; K],
 }
 
 /// One side's segment boxes of a block, a lane each: segment `k`'s least and greatest value
 /// on each axis.
-pub(super) struct LaneBoxes<const D: usize, const K: usize> {
-    pub(super) lo: [[V; D]; K],
-    pub(super) hi: [[V; D]; K],
+pub(super) struct LaneBoxes<S: Simd, const D: usize, const K: usize> {
+    pub(super) lo: [[S::V; D]; K],
+    pub(super) hi: [[S::V; D]; K],
 }
 
 /// One side's paths of a block, a lane each: which are taken (valid, every row used, starts
@@ -72,22 +66,22 @@ pub(super) struct LaneBoxes<const D: usize, const K: usize> {
 /// them.
 ///
 /// [`PathBounds`]: crate::collision::path_bounds::PathBounds
-struct LaneBounds<const D: usize, const K: usize> {
-    taken: u8,
-    lo: [V; D],
-    hi: [V; D],
-    size: V,
-    spread: V,
+struct LaneBounds<S: Simd, const D: usize, const K: usize> {
+    taken: Mask,
+    lo: [S::V; D],
+    hi: [S::V; D],
+    size: S::V,
+    spread: S::V,
     /// The box of each segment (`PathBounds`' segment boxes: a path of `K ≤ 3` rows keeps
     /// one for every segment).
-    segments: LaneBoxes<D, K>,
+    segments: LaneBoxes<S, D, K>,
 }
 
 /// Which of pairs `first..first + LANES` are settled: both paths taken, radius and horizon
 /// valid, and the two paths' boxes farther apart on some axis than the reach, or else both
 /// paths ending at rest and apart across a chord.
 ///
-/// Written once ([`lane_ops`](super::lane_ops)), inlined into each copy of the batch.
+/// Written once over `s`'s operations, inlined into the batch's copy for its level.
 ///
 /// # Panics
 /// Unless both sides hold a path per pair in rows of `K ≥ 1` segments (`start` of `n·K`
@@ -95,38 +89,39 @@ struct LaneBounds<const D: usize, const K: usize> {
 /// [`path_collision_times`](super::path_collision_times) checks them), per-pair `radius` and
 /// `t_max` of `n` values, and `first + LANES ≤ n`.
 #[inline(always)]
-pub(crate) fn settled<const D: usize, const K: usize>(
+pub(crate) fn settled<S: Simd, const D: usize, const K: usize>(
+    s: S,
     pairs: &PathPairs<'_, D>,
     first: usize,
 ) -> Settled {
     let (rows_a, rows_b) = (
-        lane_rows::<D, K>(&pairs.a, first),
-        lane_rows::<D, K>(&pairs.b, first),
+        lane_rows::<S, D, K>(s, &pairs.a, first),
+        lane_rows::<S, D, K>(s, &pairs.b, first),
     );
-    let (a, b) = (lane_bounds(&rows_a), lane_bounds(&rows_b));
-    let radius = lanes_of(pairs.radius, first);
-    let t_max = lanes_of(pairs.t_max, first);
-    let zero = zero();
+    let (a, b) = (lane_bounds(s, &rows_a), lane_bounds(s, &rows_b));
+    let radius = lanes_of(s, pairs.radius, first);
+    let t_max = lanes_of(s, pairs.t_max, first);
+    let zero = s.zero();
     // `radius + MARGIN·(size_a + size_b + radius)`, as `PathBounds::reach` forms it.
-    let sizes = add(add(a.size, b.size), radius);
-    let reach = add(radius, mul(splat(MARGIN), sizes));
+    let sizes = s.add(s.add(a.size, b.size), radius);
+    let reach = s.add(radius, s.mul(s.splat(MARGIN), sizes));
     // Where underflow could count (`with_underflow` would grow the reach): not taken.
-    let spread = add(a.spread, b.spread);
-    let floor = mul(splat(NORMAL_FLOOR), spread);
-    let plain_reach = !lt(reach, floor);
-    let mut apart: u8 = 0;
+    let spread = s.add(a.spread, b.spread);
+    let floor = s.mul(s.splat(NORMAL_FLOOR), spread);
+    let plain_reach = !s.lt(reach, floor);
+    let mut apart: Mask = 0;
     for i in 0..D {
-        apart |= gt(sub(a.lo[i], b.hi[i]), reach);
-        apart |= gt(sub(b.lo[i], a.hi[i]), reach);
+        apart |= s.gt(s.sub(a.lo[i], b.hi[i]), reach);
+        apart |= s.gt(s.sub(b.lo[i], a.hi[i]), reach);
     }
     // A radius that is positive and finite, a horizon ≥ 0 (NaN fails both); sizes finite.
-    let valid = gt(radius, zero) & finite(radius) & ge(t_max, zero) & finite(sizes);
+    let valid = s.gt(radius, zero) & finite(s, radius) & s.ge(t_max, zero) & finite(s, sizes);
     let taken = a.taken & b.taken & valid & plain_reach;
     // The chords, only where some lane is left for them.
-    let open = taken & !apart & rests_at_end(&rows_a) & rests_at_end(&rows_b);
+    let open = taken & !apart & rests_at_end(s, &rows_a) & rests_at_end(s, &rows_b);
     let chords = if open != 0 {
-        open & (apart_across_chord(&rows_a, &rows_b, reach)
-            | apart_across_chord(&rows_b, &rows_a, reach))
+        open & (apart_across_chord(s, &rows_a, &rows_b, reach)
+            | apart_across_chord(s, &rows_b, &rows_a, reach))
     } else {
         0
     };
@@ -143,7 +138,7 @@ pub(crate) fn settled<const D: usize, const K: usize>(
                 boxes: &b.segments,
             },
         );
-        windows_apart(&side_a, &side_b, radius, reach, left)
+        windows_apart(s, &side_a, &side_b, radius, reach, left)
     } else {
         0
     };
@@ -157,14 +152,14 @@ pub(crate) fn settled<const D: usize, const K: usize>(
 
 /// Lanes whose value is finite.
 #[inline(always)]
-fn finite(x: V) -> u8 {
-    lt(abs(x), splat(f64::INFINITY))
+fn finite<S: Simd>(s: S, x: S::V) -> Mask {
+    s.lt(s.abs(x), s.splat(f64::INFINITY))
 }
 
 /// The per-pair values of pairs `first..first + LANES`, a lane each.
 #[inline(always)]
-fn lanes_of(values: PerPair<'_>, first: usize) -> V {
-    std::array::from_fn(|l| values.get(first + l))
+fn lanes_of<S: Simd>(s: S, values: PerPair<'_>, first: usize) -> S::V {
+    s.load(std::array::from_fn(|l| values.get(first + l)))
 }
 
 /// How many pairs ahead of the block its rows are asked for in the cache: 128 pairs, 1 to
@@ -195,45 +190,58 @@ fn ahead(values: &[f64], at: usize, width: usize) {
         }
     }
     #[cfg(not(target_arch = "x86_64"))]
-    let _ = (values, at, width);
+    let _ = (values, at, width, AHEAD);
 }
 
 /// The rows of paths `first..first + LANES` of `side`, a lane each (and those [`AHEAD`] asked
 /// for in the cache): lane `l` of row `k`'s value is the block's row `l·K + k`, read from
-/// one slice of the block's rows whose length is a constant (so that no index is checked).
+/// one slice of the block's rows by [`Simd::transposed`].
 ///
 /// # Panics
 /// If the side's rows do not hold paths `first..first + LANES` of `K` rows each (as
 /// [`settled`] promises).
 #[inline(always)]
-fn lane_rows<const D: usize, const K: usize>(
+fn lane_rows<S: Simd, const D: usize, const K: usize>(
+    s: S,
     side: &PathRows<'_, D>,
     first: usize,
-) -> LaneRows<D, K> {
+) -> LaneRows<S, D, K> {
     const { assert!(K <= 3 && D <= 3, "rows of up to 3 segments, in 2-D or 3-D") };
     ahead(side.start, first * K, K);
     for values in [side.pos, side.vel, side.acc] {
         ahead(values.as_flattened(), first * K * D, K * D);
     }
     let block = first * K..(first + LANES) * K;
-    let (start, pos, vel, acc) = (
-        &side.start[block.clone()],
-        &side.pos[block.clone()],
-        &side.vel[block.clone()],
-        &side.acc[block],
-    );
-    let rows = |values: &[[f64; D]]| -> [[V; D]; K] {
-        let values = &values[..LANES * K];
-        std::array::from_fn(|k| {
-            std::array::from_fn(|i| std::array::from_fn(|l| values[l * K + k][i]))
-        })
-    };
-    let start = &start[..LANES * K];
+    let start = transposed(s, &side.start[block.clone()], K);
     LaneRows {
-        s: std::array::from_fn(|k| std::array::from_fn(|l| start[l * K + k])),
-        p: rows(pos),
-        v: rows(vel),
-        a: rows(acc),
+        s: std::array::from_fn(|k| start[k]),
+        p: by_row(transposed(s, side.pos[block.clone()].as_flattened(), K * D)),
+        v: by_row(transposed(s, side.vel[block.clone()].as_flattened(), K * D)),
+        a: by_row(transposed(s, side.acc[block].as_flattened(), K * D)),
+    }
+}
+
+/// A block's `K` rows of `D` values, from their values in the order of the rows.
+#[inline(always)]
+fn by_row<V: Copy, const D: usize, const K: usize>(flat: [V; MOST]) -> [[V; D]; K] {
+    std::array::from_fn(|k| std::array::from_fn(|i| flat[k * D + i]))
+}
+
+/// [`Simd::transposed`] for a width known only as `K` or `K·D` of a caller's constants (which
+/// fold the match): the widths of rows of 1 to 3 segments in 2-D or 3-D.
+///
+/// # Panics
+/// If `values` holds fewer than `LANES·width` values.
+#[inline(always)]
+fn transposed<S: Simd>(s: S, values: &[f64], width: usize) -> [S::V; MOST] {
+    match width {
+        1 => s.transposed::<1>(values),
+        2 => s.transposed::<2>(values),
+        3 => s.transposed::<3>(values),
+        4 => s.transposed::<4>(values),
+        6 => s.transposed::<6>(values),
+        9 => s.transposed::<9>(values),
+        _ => unreachable!("no rows of {width} values (see `lane_rows`)"),
     }
 }
 
@@ -241,28 +249,31 @@ fn lane_rows<const D: usize, const K: usize>(
 /// all used and whose segments are all non-empty, and the checks of `Path::from_rows` in that
 /// case (every value finite, starts increasing).
 #[inline(always)]
-fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBounds<D, K> {
-    let LaneRows { s, p, v, a } = rows;
-    let zero = zero();
+fn lane_bounds<S: Simd, const D: usize, const K: usize>(
+    s: S,
+    rows: &LaneRows<S, D, K>,
+) -> LaneBounds<S, D, K> {
+    let LaneRows { s: starts, p, v, a } = rows;
+    let zero = s.zero();
     // Starts increasing strictly (NaN fails), from a first above −∞ to a last below +∞: all
     // finite. The other values of every segment but the last are in the size, whose
     // finiteness is checked below; the last segment's velocity and acceleration here.
-    let infinity = splat(f64::INFINITY);
-    let mut taken = gt(s[0], splat(f64::NEG_INFINITY)) & lt(s[K - 1], infinity);
+    let infinity = s.splat(f64::INFINITY);
+    let mut taken = s.gt(starts[0], s.splat(f64::NEG_INFINITY)) & s.lt(starts[K - 1], infinity);
     for k in 1..K {
-        taken &= gt(s[k], s[k - 1]);
+        taken &= s.gt(starts[k], starts[k - 1]);
     }
     for i in 0..D {
-        let last = add(abs(v[K - 1][i]), abs(a[K - 1][i]));
-        taken &= lt(last, infinity);
+        let last = s.add(s.abs(v[K - 1][i]), s.abs(a[K - 1][i]));
+        taken &= s.lt(last, infinity);
     }
 
-    let one = splat(1.0);
-    let axes = splat(D as f64);
+    let one = s.splat(1.0);
+    let axes = s.splat(D as f64);
     let mut bounds = LaneBounds {
         taken,
         lo: [infinity; D],
-        hi: [splat(f64::NEG_INFINITY); D],
+        hi: [s.splat(f64::NEG_INFINITY); D],
         size: zero,
         spread: zero,
         segments: LaneBoxes {
@@ -271,61 +282,59 @@ fn lane_bounds<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> LaneBou
         },
     };
     for k in 0..K - 1 {
-        let length = sub(s[k + 1], s[k]);
-        let reach = add(one, length);
-        let spread = mul(mul(axes, reach), reach);
-        bounds.spread = add(bounds.spread, spread);
+        let length = s.sub(starts[k + 1], starts[k]);
+        let reach = s.add(one, length);
+        let spread = s.mul(s.mul(axes, reach), reach);
+        bounds.spread = s.add(bounds.spread, spread);
         for i in 0..D {
             let (p, v, a) = (p[k][i], v[k][i], a[k][i]);
             // |p| + (|v| + |a|·L)·L
-            let far = add(abs(v), mul(abs(a), length));
-            let part = add(abs(p), mul(far, length));
-            bounds.size = add(bounds.size, part);
-            let [lo, hi] = bernstein_hull(p, v, a, length);
+            let far = s.add(s.abs(v), s.mul(s.abs(a), length));
+            let part = s.add(s.abs(p), s.mul(far, length));
+            bounds.size = s.add(bounds.size, part);
+            let [lo, hi] = bernstein_hull(s, p, v, a, length);
             (bounds.segments.lo[k][i], bounds.segments.hi[k][i]) = (lo, hi);
-            bounds.lo[i] = min(bounds.lo[i], lo);
-            bounds.hi[i] = max(bounds.hi[i], hi);
+            bounds.lo[i] = s.min(bounds.lo[i], lo);
+            bounds.hi[i] = s.max(bounds.hi[i], hi);
         }
     }
     // The last segment lasts for ever: unbounded on each side it drifts to.
     for i in 0..D {
         let (p, v, a) = (p[K - 1][i], v[K - 1][i], a[K - 1][i]);
-        bounds.size = add(bounds.size, abs(p));
-        let lt = |x: V| lt(x, zero);
-        let gt = |x: V| gt(x, zero);
-        let accelerates = ne(a, zero);
-        let towards = blend(accelerates, v, a);
-        let down = lt(towards) | (gt(a) & lt(v));
-        let up = gt(towards) | (lt(a) & gt(v));
-        let lo = blend(down, p, splat(f64::NEG_INFINITY));
-        let hi = blend(up, p, infinity);
+        bounds.size = s.add(bounds.size, s.abs(p));
+        let accelerates = s.ne(a, zero);
+        let towards = s.blend(accelerates, v, a);
+        let down = s.lt(towards, zero) | (s.gt(a, zero) & s.lt(v, zero));
+        let up = s.gt(towards, zero) | (s.lt(a, zero) & s.gt(v, zero));
+        let lo = s.blend(down, p, s.splat(f64::NEG_INFINITY));
+        let hi = s.blend(up, p, infinity);
         (bounds.segments.lo[K - 1][i], bounds.segments.hi[K - 1][i]) = (lo, hi);
-        bounds.lo[i] = min(bounds.lo[i], lo);
-        bounds.hi[i] = max(bounds.hi[i], hi);
+        bounds.lo[i] = s.min(bounds.lo[i], lo);
+        bounds.hi[i] = s.max(bounds.hi[i], hi);
     }
-    bounds.taken &= finite(bounds.size);
+    bounds.taken &= finite(s, bounds.size);
     bounds
 }
 
 /// `bernstein_hull` (`collision::path_bounds`) lane-wise: the least and greatest of `p`,
 /// `p + ½·v·L` and `p + (v + ½·a·L)·L`, with its selects (`x < y ? x : y` is `min_pd(x, y)`).
 #[inline(always)]
-fn bernstein_hull(p: V, v: V, a: V, length: V) -> [V; 2] {
-    let half = splat(0.5);
-    let middle = add(p, mul(mul(half, v), length));
-    let slope = add(v, mul(mul(half, a), length));
-    let end = add(p, mul(slope, length));
-    [min(end, min(middle, p)), max(end, max(middle, p))]
+fn bernstein_hull<S: Simd>(s: S, p: S::V, v: S::V, a: S::V, length: S::V) -> [S::V; 2] {
+    let half = s.splat(0.5);
+    let middle = s.add(p, s.mul(s.mul(half, v), length));
+    let slope = s.add(v, s.mul(s.mul(half, a), length));
+    let end = s.add(p, s.mul(slope, length));
+    [s.min(end, s.min(middle, p)), s.max(end, s.max(middle, p))]
 }
 
 /// Lanes whose path ends at rest (`rests_at_end` in `collision::chord_normals`).
 #[inline(always)]
-fn rests_at_end<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> u8 {
-    let zero = zero();
-    let mut rests: u8 = !0;
+fn rests_at_end<S: Simd, const D: usize, const K: usize>(s: S, rows: &LaneRows<S, D, K>) -> Mask {
+    let zero = s.zero();
+    let mut rests: Mask = !0;
     for i in 0..D {
-        rests &= eq(rows.v[K - 1][i], zero);
-        rests &= eq(rows.a[K - 1][i], zero);
+        rests &= s.eq(rows.v[K - 1][i], zero);
+        rests &= s.eq(rows.a[K - 1][i], zero);
     }
     rests
 }
@@ -333,41 +342,39 @@ fn rests_at_end<const D: usize, const K: usize>(rows: &LaneRows<D, K>) -> u8 {
 /// `apart_across_chord_of` (`collision::chord_normals`) lane-wise, for taken paths that end
 /// at rest: the normal of `own`'s chord, and the spans on it.
 #[inline(always)]
-fn apart_across_chord<const D: usize, const K: usize>(
-    own: &LaneRows<D, K>,
-    other: &LaneRows<D, K>,
-    reach: V,
-) -> u8 {
+fn apart_across_chord<S: Simd, const D: usize, const K: usize>(
+    s: S,
+    own: &LaneRows<S, D, K>,
+    other: &LaneRows<S, D, K>,
+    reach: S::V,
+) -> Mask {
     let (dx, dy) = (
-        sub(own.p[K - 1][0], own.p[0][0]),
-        sub(own.p[K - 1][1], own.p[0][1]),
+        s.sub(own.p[K - 1][0], own.p[0][0]),
+        s.sub(own.p[K - 1][1], own.p[0][1]),
     );
-    let most = max(abs(dx), abs(dy));
-    let normal_chord = ge(most, splat(f64::MIN_POSITIVE)) & lt(most, splat(f64::INFINITY));
-    let scale = div(splat(0.5), most);
-    let zero = zero();
-    let normal: [V; D] = std::array::from_fn(|i| match i {
-        0 => mul(mul(dy, splat(-1.0)), scale),
-        1 => mul(dx, scale),
-        _ => zero,
-    });
+    let most = s.max(s.abs(dx), s.abs(dy));
+    let normal_chord = s.ge(most, s.splat(f64::MIN_POSITIVE)) & s.lt(most, s.splat(f64::INFINITY));
+    let scale = s.div(s.splat(0.5), most);
+    let mut normal = [s.zero(); D];
+    normal[0] = s.mul(s.mul(dy, s.splat(-1.0)), scale);
+    normal[1] = s.mul(dx, scale);
     // (The scalar screen first compares the other path's ends with where this one starts,
     // against 0.49 of the reach, to give up early; the spans hold those ends and that start,
     // and are compared against at least 0.4999 of the reach, so that the spans' test implies
     // it: the lanes need only the spans.)
-    let length2 = add(mul(normal[0], normal[0]), mul(normal[1], normal[1]));
-    let reach = mul(reach, sqrt(length2));
-    let (own, other) = (span(own, &normal), span(other, &normal));
-    let spans_apart = gt(sub(own[0], other[1]), reach) | gt(sub(other[0], own[1]), reach);
+    let length2 = s.add(s.mul(normal[0], normal[0]), s.mul(normal[1], normal[1]));
+    let reach = s.mul(reach, s.sqrt(length2));
+    let (own, other) = (span(s, own, &normal), span(s, other, &normal));
+    let spans_apart = s.gt(s.sub(own[0], other[1]), reach) | s.gt(s.sub(other[0], own[1]), reach);
     normal_chord & spans_apart
 }
 
 /// `normal·x` lane-wise, summed in the order of the axes (as `along` does).
 #[inline(always)]
-fn along<const D: usize>(normal: &[V; D], x: &[V; D]) -> V {
-    let mut sum = mul(normal[0], x[0]);
+fn along<S: Simd, const D: usize>(s: S, normal: &[S::V; D], x: &[S::V; D]) -> S::V {
+    let mut sum = s.mul(normal[0], x[0]);
     for i in 1..D {
-        sum = add(sum, mul(normal[i], x[i]));
+        sum = s.add(sum, s.mul(normal[i], x[i]));
     }
     sum
 }
@@ -375,20 +382,25 @@ fn along<const D: usize>(normal: &[V; D], x: &[V; D]) -> V {
 /// `span` (`collision::chord_normals`) lane-wise: the least and greatest of `normal·x` along
 /// the path (every segment non-empty, the last at rest).
 #[inline(always)]
-fn span<const D: usize, const K: usize>(rows: &LaneRows<D, K>, normal: &[V; D]) -> [V; 2] {
-    let mut hull = [splat(f64::INFINITY), splat(f64::NEG_INFINITY)];
+fn span<S: Simd, const D: usize, const K: usize>(
+    s: S,
+    rows: &LaneRows<S, D, K>,
+    normal: &[S::V; D],
+) -> [S::V; 2] {
+    let mut hull = [s.splat(f64::INFINITY), s.splat(f64::NEG_INFINITY)];
     for k in 0..K - 1 {
-        let length = sub(rows.s[k + 1], rows.s[k]);
+        let length = s.sub(rows.s[k + 1], rows.s[k]);
         let [lo, hi] = bernstein_hull(
-            along(normal, &rows.p[k]),
-            along(normal, &rows.v[k]),
-            along(normal, &rows.a[k]),
+            s,
+            along(s, normal, &rows.p[k]),
+            along(s, normal, &rows.v[k]),
+            along(s, normal, &rows.a[k]),
             length,
         );
-        hull = [min(lo, hull[0]), max(hi, hull[1])];
+        hull = [s.min(lo, hull[0]), s.max(hi, hull[1])];
     }
-    let p = along(normal, &rows.p[K - 1]);
-    [min(p, hull[0]), max(p, hull[1])]
+    let p = along(s, normal, &rows.p[K - 1]);
+    [s.min(p, hull[0]), s.max(p, hull[1])]
 }
 
 #[cfg(test)]
@@ -400,31 +412,25 @@ mod tests {
     use crate::collision::path_collision_time_unscreened;
     use crate::collision::path_contact::every_window_screened;
     use crate::path::Path2;
-    use crate::simd::{Level, test_levels};
+    use crate::simd::{Kernel, Level, dispatch, test_levels};
     use crate::test_rng::Rng;
 
-    /// [`settled`] in the copy of `level` (which this CPU must have).
+    /// [`settled`] on a block, as a kernel to dispatch at a level.
+    struct Block0<'a, const K: usize>(&'a PathPairs<'a, 2>);
+
+    impl<const K: usize> Kernel for Block0<'_, K> {
+        type Output = Settled;
+
+        #[inline(always)]
+        fn run<S: Simd>(self, s: S) -> Settled {
+            settled::<S, 2, K>(s, self.0, 0)
+        }
+    }
+
+    /// [`settled`] at `level` (which this CPU must have).
     fn settled_at<const K: usize>(level: Level, pairs: &PathPairs<'_, 2>) -> Settled {
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512dq")]
-        fn avx512<const K: usize>(pairs: &PathPairs<'_, 2>) -> Settled {
-            settled::<2, K>(pairs, 0)
-        }
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx2,fma")]
-        fn avx2<const K: usize>(pairs: &PathPairs<'_, 2>) -> Settled {
-            settled::<2, K>(pairs, 0)
-        }
         assert!(level.supported(), "{level}");
-        match level {
-            // SAFETY: the CPU has the level (just checked).
-            #[cfg(target_arch = "x86_64")]
-            Level::Avx512 => unsafe { avx512::<K>(pairs) },
-            // SAFETY: the CPU has the level (just checked).
-            #[cfg(target_arch = "x86_64")]
-            Level::Avx2Fma => unsafe { avx2::<K>(pairs) },
-            _ => settled::<2, K>(pairs, 0),
-        }
+        dispatch(level, Block0::<K>(pairs))
     }
 
     /// [`settled`] at every level of `levels`: the same at each (the portable copy's).
@@ -439,21 +445,6 @@ mod tests {
                 portable,
                 "{level}: {pairs:?}"
             );
-            // The AVX-512 level's intrinsics twin, which the batch runs there.
-            #[cfg(target_arch = "x86_64")]
-            if level == Level::Avx512 {
-                // SAFETY: the CPU has AVX-512 F (the level is supported); the block holds
-                // LANES paths of K rows a side.
-                let twin = unsafe { super::super::path_lanes_avx512::settled::<2, K>(pairs, 0) };
-                let twin = (twin.bounds, twin.chords, twin.windows, twin.taken);
-                let ours = (
-                    portable.bounds,
-                    portable.chords,
-                    portable.windows,
-                    portable.taken,
-                );
-                assert_eq!(twin, ours, "intrinsics: {pairs:?}");
-            }
         }
         portable
     }

@@ -9,25 +9,24 @@
 //! [`path_collision_time`](crate::path_collision_time), so batch and single answers are
 //! identical, and so are the answers for any number of threads.
 //!
-//! At every SIMD level ([`simd`](crate::simd)), rows of 2 and 3 segments (a friction ball's,
-//! a pool ball's) first go through the path bounds and the chord normals eight pairs at a time
+//! At the SIMD levels whose vectors hold four or more lanes (AVX2, AVX-512:
+//! [`Simd::RUNS_LANE_STAGES`], [`simd`](crate::simd)), rows of 2 and 3 segments (a friction
+//! ball's, a pool ball's) first go through the path bounds and the chord normals eight pairs at a time
 //! ([`path_lanes`](super::path_lanes)), then the window screens on every window of the pairs
 //! left ([`window_lanes`](super::window_lanes)): the same proofs, to the bit, on the pairs they
 //! can take whole, at a fraction of the cost. The pairs they take and do not settle are held
 //! until eight are waiting, and their first windows settled at once on the first open eighth
 //! ([`first_window_lanes`](super::first_window_lanes)); what is left goes on one by one.
 
-#[cfg(target_arch = "x86_64")]
 use super::first_window_lanes::{HeldPairs, eighth_contacts};
-#[cfg(target_arch = "x86_64")]
-use super::path_lanes::{LANES as LANE_WIDTH, settled};
+use super::path_lanes::settled;
 use super::{PerPair, Threads, check_len, run_chunks};
 use crate::collision::path_bounds::PathBounds;
 use crate::collision::path_contact::{Prior, first_bounded_contact};
 use crate::collision::stage_counts::{Stage, count};
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::path::{Names, Segment, locate, segments_from_rows};
-use crate::simd::Level;
+use crate::simd::{Kernel, LANES as LANE_WIDTH, Simd, dispatch};
 
 /// One side of a batch of path pairs: `N` paths of `segments` rows each, row `k` of path `i`
 /// at `i·segments + k` of every slice.
@@ -146,81 +145,41 @@ pub fn path_collision_times<const D: usize>(
     let shared = check_path_pairs(pairs, out.len())?;
     let level = crate::simd::current();
     run_chunks(out, threads, |offset, chunk| {
-        path_chunk(level, pairs, offset, chunk, &shared)
+        dispatch(
+            level,
+            PathChunk {
+                pairs,
+                offset,
+                chunk,
+                shared: &shared,
+            },
+        )
     })
 }
 
-/// The answers of pairs `offset..` into `chunk`, in the widest copy of [`path_chunk_portable`]
-/// this CPU runs (the copies compute the same bits: only the instructions differ).
-fn path_chunk<const D: usize>(
-    level: Level,
-    pairs: &PathPairs<'_, D>,
+/// The answers of pairs `offset..` into `chunk`: the batch's work on one chunk, at a SIMD
+/// level ([`dispatch`]).
+struct PathChunk<'p, 'c, const D: usize> {
+    pairs: &'p PathPairs<'p, D>,
     offset: usize,
-    chunk: &mut [f64],
-    shared: &SharedPaths<D>,
-) -> Result<(), InputError> {
-    match level {
-        // SAFETY: `level` is supported by this CPU (`simd` hands out no other), and each copy
-        // needs only its level's features.
-        #[cfg(target_arch = "x86_64")]
-        Level::Avx512 => unsafe { path_chunk_avx512(pairs, offset, chunk, shared) },
-        #[cfg(target_arch = "x86_64")]
-        Level::Avx2Fma => unsafe { path_chunk_avx2(pairs, offset, chunk, shared) },
-        _ => path_chunk_portable(pairs, offset, chunk, shared),
+    chunk: &'c mut [f64],
+    shared: &'p SharedPaths<D>,
+}
+
+impl<const D: usize> Kernel for PathChunk<'_, '_, D> {
+    type Output = Result<(), InputError>;
+
+    #[inline(always)]
+    fn run<S: Simd>(self, s: S) -> Self::Output {
+        path_chunk(s, self.pairs, self.offset, self.chunk, self.shared)
     }
 }
 
-/// [`path_chunk_portable`] compiled with AVX2 and FMA enabled.
-///
-/// # Safety
-/// The CPU must support AVX2 and FMA.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-unsafe fn path_chunk_avx2<const D: usize>(
-    pairs: &PathPairs<'_, D>,
-    offset: usize,
-    chunk: &mut [f64],
-    shared: &SharedPaths<D>,
-) -> Result<(), InputError> {
-    // The generic lanes ([`Avx2Lanes`]) give the same bits here, but the compiler's code for
-    // them still costs more than the pairs they settle save (issue 35: 37 ms against 27 ms
-    // on the pool table at this level): not run until it does.
-    path_chunk_with(NoLanes, pairs, offset, chunk, shared)
-}
-
-/// [`path_chunk_portable`] compiled with AVX-512 (F, VL, DQ), AVX2 and FMA enabled.
-///
-/// # Safety
-/// The CPU must support those features.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512dq")]
-unsafe fn path_chunk_avx512<const D: usize>(
-    pairs: &PathPairs<'_, D>,
-    offset: usize,
-    chunk: &mut [f64],
-    shared: &SharedPaths<D>,
-) -> Result<(), InputError> {
-    // SAFETY: the caller's promise: the CPU has AVX-512 F.
-    let lanes = unsafe { Avx512Lanes::new() };
-    path_chunk_with(lanes, pairs, offset, chunk, shared)
-}
-
-/// Every pair of the chunk in turn, with one buffer per side reused for every pair.
+/// Every pair of the chunk in turn, with one buffer per side reused for every pair, and the
+/// lanes of `s` on blocks of pairs.
 #[inline(always)]
-fn path_chunk_portable<const D: usize>(
-    pairs: &PathPairs<'_, D>,
-    offset: usize,
-    chunk: &mut [f64],
-    shared: &SharedPaths<D>,
-) -> Result<(), InputError> {
-    // (As at AVX2: the generic lanes are not run yet, see `path_chunk_avx2`.)
-    path_chunk_with(NoLanes, pairs, offset, chunk, shared)
-}
-
-/// [`path_chunk_portable`] with the lane screens of `lanes`.
-#[inline(always)]
-fn path_chunk_with<const D: usize>(
-    lanes: impl LaneScreens,
+fn path_chunk<S: Simd, const D: usize>(
+    s: S,
     pairs: &PathPairs<'_, D>,
     offset: usize,
     chunk: &mut [f64],
@@ -229,25 +188,25 @@ fn path_chunk_with<const D: usize>(
     // The common row counts, a friction ball's (move, rest) and a pool ball's (slide, roll,
     // rest), with the loops over the rows unrolled: 6 % less time per pool-table pair.
     match (pairs.a.segments, pairs.b.segments) {
-        (2, 2) => path_pairs_in_turn::<D, 2>(lanes, pairs, offset, chunk, shared),
-        (3, 3) => path_pairs_in_turn::<D, 3>(lanes, pairs, offset, chunk, shared),
-        _ => path_pairs_in_turn::<D, 0>(lanes, pairs, offset, chunk, shared),
+        (2, 2) => path_pairs_in_turn::<S, D, 2>(s, pairs, offset, chunk, shared),
+        (3, 3) => path_pairs_in_turn::<S, D, 3>(s, pairs, offset, chunk, shared),
+        _ => path_pairs_in_turn::<S, D, 0>(s, pairs, offset, chunk, shared),
     }
 }
 
-/// [`path_chunk_portable`] for rows of `K` segments on both sides (`K = 0`: any number); for
+/// [`path_chunk`] for rows of `K` segments on both sides (`K = 0`: any number); for
 /// `K > 0`, blocks of pairs first go through the lane-wise screens
 /// ([`path_lanes`](super::path_lanes)), where neither side is broadcast.
 #[inline(always)]
-fn path_pairs_in_turn<const D: usize, const K: usize>(
-    screens: impl LaneScreens,
+fn path_pairs_in_turn<S: Simd, const D: usize, const K: usize>(
+    s: S,
     pairs: &PathPairs<'_, D>,
     offset: usize,
     chunk: &mut [f64],
     shared: &SharedPaths<D>,
 ) -> Result<(), InputError> {
     let mut buffers = [PathBuffer::new(), PathBuffer::new()];
-    let lanes = K > 0 && shared[0].is_none() && shared[1].is_none();
+    let lanes = S::RUNS_LANE_STAGES && K > 0 && shared[0].is_none() && shared[1].is_none();
     let mut held = HeldPairs::default();
     // Block by block: the pairs the lanes settle all at once (most pairs: they then cost no
     // work of their own here); those they take and leave held for the first-window lanes,
@@ -269,10 +228,10 @@ fn path_pairs_in_turn<const D: usize, const K: usize>(
             let (settled, taken) = if lanes && len == LANE_WIDTH {
                 // The sides were checked to hold a path per pair in rows of `K`, the per-pair
                 // values to have one per pair, and the block is in range.
-                let (bounds, chords, windows, taken) =
-                    screens.settled::<D, K>(pairs, offset + here);
-                count_settled(bounds, chords, windows);
-                (u32::from(bounds | chords | windows), u32::from(taken))
+                let lanes = settled::<S, D, K>(s, pairs, offset + here);
+                count_settled(lanes.bounds, lanes.chords, lanes.windows);
+                let settled = lanes.bounds | lanes.chords | lanes.windows;
+                (u32::from(settled), u32::from(lanes.taken))
             } else {
                 (0, 0)
             };
@@ -380,146 +339,6 @@ fn count_settled(bounds: u8, chords: u8, windows: u8) {
                 Stage::WindowsApart
             });
         }
-    }
-}
-
-/// A copy of the lane-wise screens ([`path_lanes`](super::path_lanes)) for a copy of the
-/// batch: the generic lanes, or (at [`Level::Avx512`]) their AVX-512 intrinsics twin
-/// ([`path_lanes_avx512`](super::path_lanes_avx512)), the same bits.
-trait LaneScreens: Copy {
-    /// The pairs of the block at `first` that the lane-wise screens settle, by the path
-    /// bounds, by the chords and by their windows (bit `l` for pair `first + l`), and those
-    /// they take.
-    ///
-    /// # Panics
-    /// As [`settled`]: unless the block is in range of checked sides that hold a path per
-    /// pair in rows of `K`.
-    fn settled<const D: usize, const K: usize>(
-        self,
-        pairs: &PathPairs<'_, D>,
-        first: usize,
-    ) -> (u8, u8, u8, u8);
-}
-
-/// No lane screens: every pair goes to its own search (the same bits, see `path_chunk_avx2`).
-#[derive(Clone, Copy)]
-struct NoLanes;
-
-impl LaneScreens for NoLanes {
-    #[inline(always)]
-    fn settled<const D: usize, const K: usize>(
-        self,
-        _pairs: &PathPairs<'_, D>,
-        _first: usize,
-    ) -> (u8, u8, u8, u8) {
-        (0, 0, 0, 0)
-    }
-}
-
-/// The generic lanes, written once ([`path_lanes`](super::path_lanes)).
-#[cfg_attr(not(test), allow(dead_code))]
-#[derive(Clone, Copy)]
-struct GenericLanes;
-
-impl LaneScreens for GenericLanes {
-    #[inline(always)]
-    fn settled<const D: usize, const K: usize>(
-        self,
-        pairs: &PathPairs<'_, D>,
-        first: usize,
-    ) -> (u8, u8, u8, u8) {
-        let settled = settled::<D, K>(pairs, first);
-        (
-            settled.bounds,
-            settled.chords,
-            settled.windows,
-            settled.taken,
-        )
-    }
-}
-
-/// The generic lanes compiled on their own with AVX2 and FMA (not inlined into the batch's
-/// loop, whose size makes the compiler vectorise them worse): a value of it is the proof
-/// that the CPU has AVX2 and FMA.
-#[cfg(target_arch = "x86_64")]
-#[cfg_attr(not(test), allow(dead_code))]
-#[derive(Clone, Copy)]
-struct Avx2Lanes(());
-
-#[cfg(target_arch = "x86_64")]
-#[cfg_attr(not(test), allow(dead_code))]
-impl Avx2Lanes {
-    /// # Safety
-    /// The CPU must have AVX2 and FMA.
-    unsafe fn new() -> Self {
-        Self(())
-    }
-}
-
-/// [`settled`] compiled with AVX2 and FMA, on its own.
-#[cfg(target_arch = "x86_64")]
-#[cfg_attr(not(test), allow(dead_code))]
-#[target_feature(enable = "avx2,fma")]
-#[inline(never)]
-fn settled_avx2<const D: usize, const K: usize>(
-    pairs: &PathPairs<'_, D>,
-    first: usize,
-) -> (u8, u8, u8, u8) {
-    GenericLanes.settled::<D, K>(pairs, first)
-}
-
-#[cfg(target_arch = "x86_64")]
-impl LaneScreens for Avx2Lanes {
-    #[inline(always)]
-    fn settled<const D: usize, const K: usize>(
-        self,
-        pairs: &PathPairs<'_, D>,
-        first: usize,
-    ) -> (u8, u8, u8, u8) {
-        // SAFETY: `self` exists only where the CPU has AVX2 and FMA.
-        unsafe { settled_avx2::<D, K>(pairs, first) }
-    }
-}
-
-/// The AVX-512 intrinsics lanes ([`path_lanes_avx512`](super::path_lanes_avx512)): a value
-/// of it is the proof that the CPU has AVX-512 F.
-#[cfg(target_arch = "x86_64")]
-#[derive(Clone, Copy)]
-struct Avx512Lanes(());
-
-#[cfg(target_arch = "x86_64")]
-impl Avx512Lanes {
-    /// # Safety
-    /// The CPU must have AVX-512 F.
-    unsafe fn new() -> Self {
-        Self(())
-    }
-}
-
-#[cfg(target_arch = "x86_64")]
-impl LaneScreens for Avx512Lanes {
-    #[inline(always)]
-    fn settled<const D: usize, const K: usize>(
-        self,
-        pairs: &PathPairs<'_, D>,
-        first: usize,
-    ) -> (u8, u8, u8, u8) {
-        // (A few compares a block: what makes the intrinsics' reads sound.)
-        let rows = (first + LANE_WIDTH) * K;
-        let lengths = |s: &PathRows<'_, D>| [s.start.len(), s.pos.len(), s.vel.len(), s.acc.len()];
-        assert!(
-            K > 0 && (lengths(&pairs.a).into_iter().chain(lengths(&pairs.b))).all(|n| n >= rows),
-            "a block of rows in range"
-        );
-        // SAFETY: `self` exists only where the CPU has AVX-512 F; the sides hold a path
-        // per pair in rows of `K` (checked by the batch), and the block is in range.
-        let settled = unsafe { super::path_lanes_avx512::settled::<D, K>(pairs, first) };
-        (
-            settled.bounds,
-            settled.chords,
-            settled.windows,
-            settled.taken,
-        )
     }
 }
 
@@ -777,25 +596,26 @@ mod tests {
         (start, [pos, vel, acc])
     }
 
-    #[test]
-    fn every_vector_copy_agrees_with_the_portable_code_bit_for_bit() {
+    /// The chunk at every level the CPU has gives the portable copy's bits, which are the
+    /// single query's, in rows of 2 and 3 (the lanes' shapes) and of 4 (no lanes).
+    fn every_level_agrees_with_the_portable_code_bit_for_bit<const K: usize>() {
         let n = 4_000;
-        let (start_a, [pos_a, vel_a, acc_a]) = random_rows(n, 1, 4);
-        let (start_b, [pos_b, vel_b, acc_b]) = random_rows(n, 2, 4);
+        let (start_a, [pos_a, vel_a, acc_a]) = random_rows(n, 1, K);
+        let (start_b, [pos_b, vel_b, acc_b]) = random_rows(n, 2, K);
         let pairs = PathPairs {
             a: PathRows {
                 start: &start_a,
                 pos: &pos_a,
                 vel: &vel_a,
                 acc: &acc_a,
-                segments: 4,
+                segments: K,
             },
             b: PathRows {
                 start: &start_b,
                 pos: &pos_b,
                 vel: &vel_b,
                 acc: &acc_b,
-                segments: 4,
+                segments: K,
             },
             radius: PerPair::All(0.3),
             t_max: PerPair::All(f64::INFINITY),
@@ -803,10 +623,8 @@ mod tests {
         let shared = check_path_pairs(&pairs, n).expect("valid");
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         let mut portable = vec![0.0; n];
-        assert_eq!(
-            path_chunk_portable(&pairs, 0, &mut portable, &shared),
-            Ok(())
-        );
+        let done = path_chunk(crate::simd::Portable, &pairs, 0, &mut portable, &shared);
+        assert_eq!(done, Ok(()));
         let hits = portable.iter().filter(|t| t.is_finite()).count();
         assert!(hits > 400, "{hits} hits: the set should exercise contacts");
         // The single query's bits, pair by pair.
@@ -822,23 +640,31 @@ mod tests {
         }
         for level in crate::simd::test_levels() {
             let mut copy = vec![0.0; n];
-            assert_eq!(path_chunk(level, &pairs, 0, &mut copy, &shared), Ok(()));
+            let chunk = PathChunk {
+                pairs: &pairs,
+                offset: 0,
+                chunk: &mut copy,
+                shared: &shared,
+            };
+            assert_eq!(dispatch(level, chunk), Ok(()));
             assert_eq!(bits(&portable), bits(&copy), "{level}");
-            eprintln!("path chunk at {level}: same bits as the portable copy");
+            eprintln!("path chunk in rows of {K} at {level}: the portable copy's bits");
         }
-        // The generic lanes in the whole chunk (not run by the batch yet at these levels).
-        let mut copy = vec![0.0; n];
-        let done = path_chunk_with(GenericLanes, &pairs, 0, &mut copy, &shared);
-        assert_eq!(done, Ok(()));
-        assert_eq!(bits(&portable), bits(&copy), "generic lanes");
-        #[cfg(target_arch = "x86_64")]
-        if Level::Avx2Fma.supported() {
-            // SAFETY: the CPU has AVX2 and FMA (just checked).
-            let lanes = unsafe { Avx2Lanes::new() };
-            let done = path_chunk_with(lanes, &pairs, 0, &mut copy, &shared);
-            assert_eq!(done, Ok(()));
-            assert_eq!(bits(&portable), bits(&copy), "generic lanes at AVX2");
-        }
+    }
+
+    #[test]
+    fn every_level_agrees_with_the_portable_code_bit_for_bit_in_rows_of_two() {
+        every_level_agrees_with_the_portable_code_bit_for_bit::<2>();
+    }
+
+    #[test]
+    fn every_level_agrees_with_the_portable_code_bit_for_bit_in_rows_of_three() {
+        every_level_agrees_with_the_portable_code_bit_for_bit::<3>();
+    }
+
+    #[test]
+    fn every_level_agrees_with_the_portable_code_bit_for_bit_in_rows_of_four() {
+        every_level_agrees_with_the_portable_code_bit_for_bit::<4>();
     }
 
     /// The same paths in rows of `k` and padded to rows of `k + 3` (an extra `+∞` row or more).

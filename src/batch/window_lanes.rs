@@ -1,6 +1,6 @@
 //! The window screens ([`PathBounds::segments_apart`], [`apart_on_window`],
-//! [`apart_across_window_chord`]), eight pairs at a time (written once over `[f64; 8]` lanes,
-//! [`lane_ops`](super::lane_ops), compiled in each copy of the batch), for the pairs of a block
+//! [`apart_across_window_chord`]), eight pairs at a time (written once over the operations of
+//! [`Simd`], compiled at each level), for the pairs of a block
 //! that the whole-path screens ([`path_lanes`](super::path_lanes)) leave: a pair whose every
 //! window they prove apart answers "none" at once, without being read again, checked, bounded
 //! and walked one window at a time.
@@ -28,56 +28,46 @@
 //! [`apart_across_window_chord`]: crate::collision::window_chord
 //! [`first_bounded_contact`]: crate::collision::path_contact
 
-#[allow(unused_imports)]
-use super::lane_ops::{
-    V, abs, add, blend, div, eq, ge, gt, lt, max, min, mul, ne, splat, sqrt, sub, zero,
-};
-
 use super::path_lanes::{LaneBoxes, LaneRows};
 use crate::collision::LONGEST_WINDOW;
 use crate::collision::window_box::{MARGIN, NORMAL_FLOOR};
+use crate::simd::{Mask, Simd};
 
 /// One side of a block for the window screens: its rows and its segment boxes.
-pub(super) struct LaneSide<'a, const D: usize, const K: usize> {
-    pub(super) rows: &'a LaneRows<D, K>,
-    pub(super) boxes: &'a LaneBoxes<D, K>,
+pub(super) struct LaneSide<'a, S: Simd, const D: usize, const K: usize> {
+    pub(super) rows: &'a LaneRows<S, D, K>,
+    pub(super) boxes: &'a LaneBoxes<S, D, K>,
 }
 
 /// The relative motion of a block's windows, a lane each: as `window_gap` forms it.
-struct LaneGap<const D: usize> {
-    offset: [V; D],
-    velocity: [V; D],
-    acceleration: [V; D],
+struct LaneGap<S: Simd, const D: usize> {
+    offset: [S::V; D],
+    velocity: [S::V; D],
+    acceleration: [S::V; D],
 }
 
 /// Which of the lanes `open` have every window proven apart, at contact distance `radius`,
 /// with the pair's whole-path `reach` for the segment boxes (both as `settled` forms them).
 #[inline(always)]
-pub(super) fn windows_apart<const D: usize, const K: usize>(
-    a: &LaneSide<'_, D, K>,
-    b: &LaneSide<'_, D, K>,
-    radius: V,
-    reach: V,
-    open: u8,
-) -> u8 {
-    let infinity = splat(f64::INFINITY);
-    let end = |side: &LaneSide<'_, D, K>, k: usize| {
-        if k + 1 < K {
-            side.rows.s[k + 1]
-        } else {
-            infinity
-        }
-    };
+pub(super) fn windows_apart<S: Simd, const D: usize, const K: usize>(
+    s: S,
+    a: &LaneSide<'_, S, D, K>,
+    b: &LaneSide<'_, S, D, K>,
+    radius: S::V,
+    reach: S::V,
+    open: Mask,
+) -> Mask {
+    let infinity = s.splat(f64::INFINITY);
     let mut proven = open;
     for i in 0..K {
         for j in 0..K {
-            let from = max(a.rows.s[i], b.rows.s[j]);
-            let to = min(end(a, i), end(b, j));
-            let left = proven & lt(from, to);
+            let from = s.max(a.rows.s[i], b.rows.s[j]);
+            let to = s.min(end(a, i, infinity), end(b, j, infinity));
+            let left = proven & s.lt(from, to);
             if left == 0 {
                 continue;
             }
-            let left = left & !segments_apart(a.boxes, i, b.boxes, j, reach);
+            let left = left & !segments_apart(s, a.boxes, i, b.boxes, j, reach);
             if left == 0 {
                 continue;
             }
@@ -86,12 +76,12 @@ pub(super) fn windows_apart<const D: usize, const K: usize>(
                 proven &= !left;
                 continue;
             }
-            let gap = window_gap(a.rows, i, b.rows, j, from);
+            let gap = window_gap(s, a.rows, i, b.rows, j, from);
             // `bounded_length`: the window's length up to the longest searched.
-            let length = min(sub(to, from), splat(LONGEST_WINDOW));
-            let mut left = left & !apart_on_window(&gap, radius, length);
+            let length = s.min(s.sub(to, from), s.splat(LONGEST_WINDOW));
+            let mut left = left & !apart_on_window(s, &gap, radius, length);
             if left != 0 {
-                left &= !apart_across_window_chord(&gap, radius, length);
+                left &= !apart_across_window_chord(s, &gap, radius, length);
             }
             proven &= !left;
             if proven == 0 {
@@ -102,20 +92,49 @@ pub(super) fn windows_apart<const D: usize, const K: usize>(
     proven
 }
 
+/// Where segment `k` of `side` ends: where the next starts (the last, `infinity`: never).
+#[inline(always)]
+fn end<S: Simd, const D: usize, const K: usize>(
+    side: &LaneSide<'_, S, D, K>,
+    k: usize,
+    infinity: S::V,
+) -> S::V {
+    if k + 1 < K {
+        side.rows.s[k + 1]
+    } else {
+        infinity
+    }
+}
+
+/// Segment `(p, v, a)` after `t`: `p + (v + a·(½·t))·t` and `v + a·t`, as
+/// `Segment::position_at` and `velocity_at` form them.
+#[inline(always)]
+fn moved<S: Simd>(s: S, p: S::V, v: S::V, a: S::V, t: S::V) -> (S::V, S::V) {
+    let mid = s.add(v, s.mul(a, s.mul(s.splat(0.5), t)));
+    (s.add(p, s.mul(mid, t)), s.add(v, s.mul(a, t)))
+}
+
+/// `p + (v + ½·a·t)·t` (as `axis_range` forms it).
+#[inline(always)]
+fn axis_at<S: Simd>(s: S, p: S::V, v: S::V, a: S::V, t: S::V) -> S::V {
+    s.add(p, s.mul(s.add(v, s.mul(s.mul(s.splat(0.5), a), t)), t))
+}
+
 /// `PathBounds::segments_apart` lane-wise: segment `i`'s box of `a` and segment `j`'s of `b`
 /// farther apart than `reach` on some axis.
 #[inline(always)]
-fn segments_apart<const D: usize, const K: usize>(
-    a: &LaneBoxes<D, K>,
+fn segments_apart<S: Simd, const D: usize, const K: usize>(
+    s: S,
+    a: &LaneBoxes<S, D, K>,
     i: usize,
-    b: &LaneBoxes<D, K>,
+    b: &LaneBoxes<S, D, K>,
     j: usize,
-    reach: V,
-) -> u8 {
-    let mut apart: u8 = 0;
+    reach: S::V,
+) -> Mask {
+    let mut apart: Mask = 0;
     for x in 0..D {
-        apart |= gt(sub(a.lo[i][x], b.hi[j][x]), reach);
-        apart |= gt(sub(b.lo[j][x], a.hi[i][x]), reach);
+        apart |= s.gt(s.sub(a.lo[i][x], b.hi[j][x]), reach);
+        apart |= s.gt(s.sub(b.lo[j][x], a.hi[i][x]), reach);
     }
     apart
 }
@@ -123,32 +142,27 @@ fn segments_apart<const D: usize, const K: usize>(
 /// `window_gap` (`collision::path_contact`) lane-wise: A's segment `i` less B's segment `j`
 /// at `start`, each by `Segment::position_at` and `velocity_at`.
 #[inline(always)]
-fn window_gap<const D: usize, const K: usize>(
-    a: &LaneRows<D, K>,
+fn window_gap<S: Simd, const D: usize, const K: usize>(
+    s: S,
+    a: &LaneRows<S, D, K>,
     i: usize,
-    b: &LaneRows<D, K>,
+    b: &LaneRows<S, D, K>,
     j: usize,
-    start: V,
-) -> LaneGap<D> {
-    let half = splat(0.5);
-    let (since_a, since_b) = (sub(start, a.s[i]), sub(start, b.s[j]));
-    // `p + (v + a·(½·s))·s` and `v + a·s`.
-    let at = |p: V, v: V, acc: V, s: V| {
-        let mid = add(v, mul(acc, mul(half, s)));
-        (add(p, mul(mid, s)), add(v, mul(acc, s)))
-    };
-    let zero = zero();
+    start: S::V,
+) -> LaneGap<S, D> {
+    let (since_a, since_b) = (s.sub(start, a.s[i]), s.sub(start, b.s[j]));
+    let zero = s.zero();
     let mut gap = LaneGap {
         offset: [zero; D],
         velocity: [zero; D],
         acceleration: [zero; D],
     };
     for x in 0..D {
-        let (pa, va) = at(a.p[i][x], a.v[i][x], a.a[i][x], since_a);
-        let (pb, vb) = at(b.p[j][x], b.v[j][x], b.a[j][x], since_b);
-        gap.offset[x] = sub(pa, pb);
-        gap.velocity[x] = sub(va, vb);
-        gap.acceleration[x] = sub(a.a[i][x], b.a[j][x]);
+        let (pa, va) = moved(s, a.p[i][x], a.v[i][x], a.a[i][x], since_a);
+        let (pb, vb) = moved(s, b.p[j][x], b.v[j][x], b.a[j][x], since_b);
+        gap.offset[x] = s.sub(pa, pb);
+        gap.velocity[x] = s.sub(va, vb);
+        gap.acceleration[x] = s.sub(a.a[i][x], b.a[j][x]);
     }
     gap
 }
@@ -156,85 +170,106 @@ fn window_gap<const D: usize, const K: usize>(
 /// `apart_on_window` (`collision::window_box`) lane-wise, where no underflow can count (else
 /// not proven).
 #[inline(always)]
-fn apart_on_window<const D: usize>(gap: &LaneGap<D>, radius: V, length: V) -> u8 {
-    let (zero, half, one) = (zero(), splat(0.5), splat(1.0));
+fn apart_on_window<S: Simd, const D: usize>(
+    s: S,
+    gap: &LaneGap<S, D>,
+    radius: S::V,
+    length: S::V,
+) -> Mask {
+    let (zero, one) = (s.zero(), s.splat(1.0));
     let (mut nearest2, mut size, mut spread) = (zero, radius, zero);
     for x in 0..D {
         let (p, v, a) = (gap.offset[x], gap.velocity[x], gap.acceleration[x]);
         // `axis_range`: `p + (v + ½·a·s)·s` at the end and at the turn held to the span.
-        let at = |s: V| add(p, mul(add(v, mul(mul(half, a), s)), s));
-        let end = at(length);
+        let end = axis_at(s, p, v, a, length);
         // (`f64::min` and `max` drop a NaN operand; `min_pd` and `max_pd` return the second
         // operand where either is NaN: the possibly NaN operand comes first.)
-        let (lo, hi) = (min(end, p), max(end, p));
-        let turn = sub(zero, div(v, a));
-        let turn = min(max(turn, zero), length);
-        let vertex = at(turn);
-        let (lo, hi) = (min(vertex, lo), max(vertex, hi));
-        let far = add(abs(v), mul(abs(a), length));
-        let magnitude = add(abs(p), mul(far, length));
-        let reach = add(add(one, abs(v)), length);
-        spread = add(spread, mul(reach, reach));
-        let nearest = add(max(lo, zero), max(sub(zero, hi), zero));
-        nearest2 = add(nearest2, mul(nearest, nearest));
-        size = add(size, magnitude);
+        let (lo, hi) = (s.min(end, p), s.max(end, p));
+        let turn = s.sub(zero, s.div(v, a));
+        let turn = s.min(s.max(turn, zero), length);
+        let vertex = axis_at(s, p, v, a, turn);
+        let (lo, hi) = (s.min(vertex, lo), s.max(vertex, hi));
+        let far = s.add(s.abs(v), s.mul(s.abs(a), length));
+        let magnitude = s.add(s.abs(p), s.mul(far, length));
+        let reach = s.add(s.add(one, s.abs(v)), length);
+        spread = s.add(spread, s.mul(reach, reach));
+        let nearest = s.add(s.max(lo, zero), s.max(s.sub(zero, hi), zero));
+        nearest2 = s.add(nearest2, s.mul(nearest, nearest));
+        size = s.add(size, magnitude);
     }
-    let reach = add(radius, mul(splat(MARGIN), size));
-    let far = mul(reach, reach);
-    plain(reach, spread) & square_normal(far) & gt(nearest2, far)
+    let reach = s.add(radius, s.mul(s.splat(MARGIN), size));
+    let far = s.mul(reach, reach);
+    plain(s, reach, spread) & square_normal(s, far) & s.gt(nearest2, far)
 }
 
 /// `apart_across_window_chord` (`collision::window_chord`) lane-wise, where no underflow can
 /// count (else not proven).
 #[inline(always)]
-fn apart_across_window_chord<const D: usize>(gap: &LaneGap<D>, radius: V, length: V) -> u8 {
+fn apart_across_window_chord<S: Simd, const D: usize>(
+    s: S,
+    gap: &LaneGap<S, D>,
+    radius: S::V,
+    length: S::V,
+) -> Mask {
     let (d, v, a) = (&gap.offset, &gap.velocity, &gap.acceleration);
-    let (zero, one) = (zero(), splat(1.0));
-    let half_length = mul(splat(0.5), length);
-    let chord: [V; D] = std::array::from_fn(|x| mul(add(v[x], mul(a[x], half_length)), length));
+    let (zero, one) = (s.zero(), s.splat(1.0));
+    let half_length = s.mul(s.splat(0.5), length);
+    let mut chord = [s.zero(); D];
+    for x in 0..D {
+        chord[x] = s.mul(s.add(v[x], s.mul(a[x], half_length)), length);
+    }
     let (mut cc, mut dc) = (zero, zero);
     for x in 0..D {
-        cc = add(cc, mul(chord[x], chord[x]));
-        dc = add(dc, mul(d[x], chord[x]));
+        cc = s.add(cc, s.mul(chord[x], chord[x]));
+        dc = s.add(dc, s.mul(d[x], chord[x]));
     }
-    let normal: [V; D] = std::array::from_fn(|x| sub(mul(d[x], cc), mul(chord[x], dc)));
+    let mut normal = [s.zero(); D];
+    for x in 0..D {
+        normal[x] = s.sub(s.mul(d[x], cc), s.mul(chord[x], dc));
+    }
     let mut largest = zero;
     for n in &normal {
-        largest = max(abs(*n), largest);
+        largest = s.max(s.abs(*n), largest);
     }
-    let scale = div(one, largest);
+    let scale = s.div(one, largest);
     let (mut at_start, mut slope, mut bend, mut nn) = (zero, zero, zero, zero);
     let (mut size, mut spread) = (radius, zero);
     for x in 0..D {
-        let n = mul(normal[x], scale);
-        nn = add(nn, mul(n, n));
-        at_start = add(at_start, mul(n, d[x]));
-        slope = add(slope, mul(n, v[x]));
-        bend = add(bend, mul(n, a[x]));
-        let far = add(abs(v[x]), mul(abs(a[x]), length));
-        size = add(size, add(abs(d[x]), mul(far, length)));
-        let reach = add(add(one, abs(v[x])), length);
-        spread = add(spread, mul(reach, reach));
+        let n = s.mul(normal[x], scale);
+        nn = s.add(nn, s.mul(n, n));
+        at_start = s.add(at_start, s.mul(n, d[x]));
+        slope = s.add(slope, s.mul(n, v[x]));
+        bend = s.add(bend, s.mul(n, a[x]));
+        let far = s.add(s.abs(v[x]), s.mul(s.abs(a[x]), length));
+        size = s.add(size, s.add(s.abs(d[x]), s.mul(far, length)));
+        let reach = s.add(s.add(one, s.abs(v[x])), length);
+        spread = s.add(spread, s.mul(reach, reach));
     }
-    let middle = add(at_start, mul(slope, half_length));
-    let end = add(at_start, mul(add(slope, mul(bend, half_length)), length));
-    let lo = min(end, min(middle, at_start));
-    let hi = max(end, max(middle, at_start));
-    let nearest = add(max(lo, zero), max(sub(zero, hi), zero));
-    let reach = add(radius, mul(splat(MARGIN), size));
-    let far = mul(mul(reach, reach), nn);
-    plain(reach, spread) & ge(nn, one) & gt(nearest, zero) & gt(mul(nearest, nearest), far)
+    let middle = s.add(at_start, s.mul(slope, half_length));
+    let end = s.add(
+        at_start,
+        s.mul(s.add(slope, s.mul(bend, half_length)), length),
+    );
+    let lo = s.min(end, s.min(middle, at_start));
+    let hi = s.max(end, s.max(middle, at_start));
+    let nearest = s.add(s.max(lo, zero), s.max(s.sub(zero, hi), zero));
+    let reach = s.add(radius, s.mul(s.splat(MARGIN), size));
+    let far = s.mul(s.mul(reach, reach), nn);
+    plain(s, reach, spread)
+        & s.ge(nn, one)
+        & s.gt(nearest, zero)
+        & s.gt(s.mul(nearest, nearest), far)
 }
 
 /// Lanes whose `reach` is beyond what underflow can cost boxes of `spread` (`with_underflow`
 /// leaves it as it is).
 #[inline(always)]
-fn plain(reach: V, spread: V) -> u8 {
-    ge(reach, mul(splat(NORMAL_FLOOR), spread))
+fn plain<S: Simd>(s: S, reach: S::V, spread: S::V) -> Mask {
+    s.ge(reach, s.mul(s.splat(NORMAL_FLOOR), spread))
 }
 
 /// Lanes whose squared reach is above [`NORMAL_FLOOR`] (no slack for underflowing squares).
 #[inline(always)]
-fn square_normal(far: V) -> u8 {
-    gt(far, splat(NORMAL_FLOOR))
+fn square_normal<S: Simd>(s: S, far: S::V) -> Mask {
+    s.gt(far, s.splat(NORMAL_FLOOR))
 }

@@ -1,31 +1,5 @@
-//! The one dispatch point for the vector code: which instruction-set level the batch's lane
-//! stages and the FMA copies of the scalar search run at.
-//!
-//! Every lane stage is written once, as branch-free scalar code over `[f64; 8]` arrays (one
-//! pair per element) that LLVM turns into vector code, and compiled once per level by small
-//! `#[target_feature]` wrappers around an `#[inline(always)]` generic body: `avx512f` (with
-//! AVX2, FMA, VL, DQ), `avx2,fma`, and the portable build of the target (on aarch64 that is
-//! NEON with FMA already: [`Level::Neon`] runs the portable copy). The level is picked here,
-//! once per batch call (detected once and cached), and every copy gives the same bits: the
-//! stages
-//! use only correctly rounded operations, and fused multiply-adds only where written
-//! (`f64::mul_add`, exact in software without the FMA feature: the same result, slower), so
-//! the portable level is the reference and the others are only faster.
-//!
-//! Why arrays and `#[target_feature]` rather than a crate such as `pulp` or `fearless_simd`:
-//! the stages were already written as array code that vectorises (`first_window_lanes`, the
-//! friction lanes), their proofs depend on the exact operations and their order (min/max
-//! with NaN, `abs`, compares), which plain `f64` code states without a layer of trait
-//! methods whose NaN semantics would need checking per ISA, and it adds no dependency. The
-//! cost is that the vector width is the compiler's choice (8 lanes fill one AVX-512 or two
-//! AVX2 registers).
-//!
-//! State (issue 35): the friction lanes and the first-window lanes run at every level. The
-//! path and window lanes (`batch::path_lanes`, `batch::window_lanes`) are written once and
-//! tested at every level, but LLVM's code for them is not yet fast enough: at
-//! [`Level::Avx512`] the batch runs their intrinsics twin (`batch::path_lanes_avx512`, the same
-//! bits, checked block by block), and at the other levels no path lanes at all (with them the
-//! AVX2 copy took 37 ms on the benchmark's pool table against 27 ms without).
+//! The level the vector code runs at: detected once, forced by `BALLCOLLIDE_SIMD` or
+//! [`with_level`], and the levels a test must run ([`test_levels`]).
 //!
 //! # Choosing the level
 //! - By default: the widest level this CPU has ([`Level::detected`]).

@@ -1,0 +1,217 @@
+//! The AVX2 level: [`Simd`] over two `__m256d` registers (lanes 0–3 and 4–7), masks packed
+//! from the compares' sign bits (`vmovmskpd`).
+
+use core::arch::x86_64::{
+    __m256d, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm256_add_pd,
+    _mm256_and_si256, _mm256_andnot_pd, _mm256_blendv_pd, _mm256_castsi256_pd, _mm256_cmp_pd,
+    _mm256_cmpeq_epi64, _mm256_div_pd, _mm256_loadu_pd, _mm256_max_pd, _mm256_min_pd,
+    _mm256_movemask_pd, _mm256_mul_pd, _mm256_set_pd, _mm256_set1_epi64x, _mm256_set1_pd,
+    _mm256_setr_epi64x, _mm256_setzero_pd, _mm256_sqrt_pd, _mm256_storeu_pd, _mm256_sub_pd,
+};
+
+use super::Level;
+use super::lanes::{LANES, MOST, Mask, Simd};
+
+/// The AVX2 level's token: a value of it is the proof that the CPU has AVX2 and FMA
+/// ([`Level::Avx2Fma`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Avx2(());
+
+impl Avx2 {
+    /// The token, if this CPU runs the level.
+    pub(crate) fn new() -> Option<Self> {
+        Level::Avx2Fma.supported().then_some(Self(()))
+    }
+}
+
+/// Lanes 0–3 and 4–7.
+type V = [__m256d; 2];
+
+// SAFETY (every `unsafe` block below): a value of `Avx2` exists only where the CPU has AVX2
+// and FMA (`Avx2::new`), which is all these intrinsics need; the loads and stores read and
+// write only the arrays and slices named, in range.
+
+// (No closures here or in the stages: a closure the compiler leaves out of line is compiled
+// without the level's features, and every intrinsic in it becomes a call.)
+
+/// Two halves' compare results as the mask's bits: lanes 0–3 from the low half's sign bits,
+/// 4–7 from the high half's.
+#[inline(always)]
+fn bits(low: __m256d, high: __m256d) -> Mask {
+    let (low, high) = unsafe { (_mm256_movemask_pd(low), _mm256_movemask_pd(high)) };
+    (low | high << 4) as Mask
+}
+
+/// Each of `bits`' four low bits spread to its lane: all ones where it is set.
+#[inline(always)]
+fn lanes_of_bits(bits: u8) -> __m256d {
+    unsafe {
+        let select = _mm256_setr_epi64x(1, 2, 4, 8);
+        let set = _mm256_and_si256(_mm256_set1_epi64x(i64::from(bits)), select);
+        _mm256_castsi256_pd(_mm256_cmpeq_epi64(set, select))
+    }
+}
+
+/// Lanes `(l, c)`'s values of a block of records of `W`, for lanes `4·h..4·h + 4`.
+#[inline(always)]
+fn quarter_column<const W: usize>(values: &[f64], h: usize, c: usize) -> __m256d {
+    let at = 4 * h * W + c;
+    unsafe {
+        _mm256_set_pd(
+            values[at + 3 * W],
+            values[at + 2 * W],
+            values[at + W],
+            values[at],
+        )
+    }
+}
+
+/// Lane-wise `$op` on both halves.
+macro_rules! both {
+    ($op:ident, $x:expr, $y:expr) => {{
+        let (x, y) = ($x, $y);
+        unsafe { [$op(x[0], y[0]), $op(x[1], y[1])] }
+    }};
+}
+
+/// The compare `$cmp` on both halves, as bits.
+macro_rules! compare {
+    ($cmp:ident, $x:expr, $y:expr) => {{
+        let (x, y) = ($x, $y);
+        unsafe {
+            bits(
+                _mm256_cmp_pd::<$cmp>(x[0], y[0]),
+                _mm256_cmp_pd::<$cmp>(x[1], y[1]),
+            )
+        }
+    }};
+}
+
+impl Simd for Avx2 {
+    type V = V;
+    const RUNS_LANE_STAGES: bool = true;
+
+    #[inline(always)]
+    fn splat(self, x: f64) -> V {
+        let x = unsafe { _mm256_set1_pd(x) };
+        [x, x]
+    }
+
+    #[inline(always)]
+    fn zero(self) -> V {
+        let x = unsafe { _mm256_setzero_pd() };
+        [x, x]
+    }
+
+    #[inline(always)]
+    fn load(self, x: [f64; LANES]) -> V {
+        unsafe {
+            [
+                _mm256_loadu_pd(x.as_ptr()),
+                _mm256_loadu_pd(x[4..].as_ptr()),
+            ]
+        }
+    }
+
+    #[inline(always)]
+    fn store(self, x: V) -> [f64; LANES] {
+        let mut out = [0.0; LANES];
+        unsafe {
+            _mm256_storeu_pd(out.as_mut_ptr(), x[0]);
+            _mm256_storeu_pd(out[4..].as_mut_ptr(), x[1]);
+        }
+        out
+    }
+
+    #[inline(always)]
+    fn add(self, x: V, y: V) -> V {
+        both!(_mm256_add_pd, x, y)
+    }
+
+    #[inline(always)]
+    fn sub(self, x: V, y: V) -> V {
+        both!(_mm256_sub_pd, x, y)
+    }
+
+    #[inline(always)]
+    fn mul(self, x: V, y: V) -> V {
+        both!(_mm256_mul_pd, x, y)
+    }
+
+    #[inline(always)]
+    fn div(self, x: V, y: V) -> V {
+        both!(_mm256_div_pd, x, y)
+    }
+
+    #[inline(always)]
+    fn min(self, x: V, y: V) -> V {
+        // `vminpd`: `x < y ? x : y`.
+        both!(_mm256_min_pd, x, y)
+    }
+
+    #[inline(always)]
+    fn max(self, x: V, y: V) -> V {
+        both!(_mm256_max_pd, x, y)
+    }
+
+    #[inline(always)]
+    fn abs(self, x: V) -> V {
+        let sign = self.splat(-0.0);
+        both!(_mm256_andnot_pd, sign, x)
+    }
+
+    #[inline(always)]
+    fn sqrt(self, x: V) -> V {
+        unsafe { [_mm256_sqrt_pd(x[0]), _mm256_sqrt_pd(x[1])] }
+    }
+
+    #[inline(always)]
+    fn blend(self, bits: Mask, x: V, y: V) -> V {
+        let (low, high) = (lanes_of_bits(bits & 15), lanes_of_bits(bits >> 4));
+        unsafe {
+            [
+                _mm256_blendv_pd(x[0], y[0], low),
+                _mm256_blendv_pd(x[1], y[1], high),
+            ]
+        }
+    }
+
+    #[inline(always)]
+    fn lt(self, x: V, y: V) -> Mask {
+        compare!(_CMP_LT_OQ, x, y)
+    }
+
+    #[inline(always)]
+    fn gt(self, x: V, y: V) -> Mask {
+        compare!(_CMP_GT_OQ, x, y)
+    }
+
+    #[inline(always)]
+    fn ge(self, x: V, y: V) -> Mask {
+        compare!(_CMP_GE_OQ, x, y)
+    }
+
+    #[inline(always)]
+    fn eq(self, x: V, y: V) -> Mask {
+        compare!(_CMP_EQ_OQ, x, y)
+    }
+
+    #[inline(always)]
+    fn ne(self, x: V, y: V) -> Mask {
+        compare!(_CMP_NEQ_UQ, x, y)
+    }
+
+    #[inline(always)]
+    fn transposed<const W: usize>(self, values: &[f64]) -> [V; MOST] {
+        const { assert!(W >= 1 && W <= MOST, "records of 1 to MOST values") };
+        let values = &values[..LANES * W];
+        let mut out = [self.zero(); MOST];
+        for (c, vector) in out.iter_mut().enumerate().take(W) {
+            *vector = [
+                quarter_column::<W>(values, 0, c),
+                quarter_column::<W>(values, 1, c),
+            ];
+        }
+        out
+    }
+}

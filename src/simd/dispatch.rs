@@ -1,0 +1,63 @@
+//! The one dispatch point: a [`Kernel`] run at a [`Level`], inside a function compiled for
+//! that level's features.
+
+use super::Level;
+#[cfg(target_arch = "x86_64")]
+use super::{Avx2, Avx512};
+use super::{Portable, Simd};
+
+/// A batch's work on one chunk, generic over the level's operations.
+///
+/// Implementations mark [`Kernel::run`] `#[inline(always)]`: it is then compiled inside the
+/// level's shim, with the level's features, and so is everything it inlines.
+pub(crate) trait Kernel {
+    /// What the work returns.
+    type Output;
+
+    /// The work, with the level's operations `s`.
+    fn run<S: Simd>(self, s: S) -> Self::Output;
+}
+
+/// Runs `kernel` at `level` (a level this CPU lacks runs the portable copy: the same bits).
+#[inline]
+pub(crate) fn dispatch<K: Kernel>(level: Level, kernel: K) -> K::Output {
+    match level {
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => {
+            if let Some(s) = Avx512::new() {
+                // SAFETY: the token proves the CPU has the shim's features.
+                return unsafe { on_avx512(s, kernel) };
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2Fma => {
+            if let Some(s) = Avx2::new() {
+                // SAFETY: the token proves the CPU has the shim's features.
+                return unsafe { on_avx2(s, kernel) };
+            }
+        }
+        #[cfg(target_arch = "aarch64")]
+        Level::Neon => {
+            // (NEON is the aarch64 baseline: no shim.)
+            if let Some(s) = super::Neon::new() {
+                return kernel.run(s);
+            }
+        }
+        Level::Portable => {}
+    }
+    kernel.run(Portable)
+}
+
+/// `kernel` compiled with AVX-512 (F, VL, DQ), AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512dq")]
+fn on_avx512<K: Kernel>(s: Avx512, kernel: K) -> K::Output {
+    kernel.run(s)
+}
+
+/// `kernel` compiled with AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn on_avx2<K: Kernel>(s: Avx2, kernel: K) -> K::Output {
+    kernel.run(s)
+}

@@ -1,0 +1,253 @@
+//! [`Simd`]: the operations the lane stages are written in, on a block of [`LANES`] pairs (one
+//! `f64` per pair in a vector, one bit per pair in a [`Mask`]), with one implementation per
+//! level (`Portable`, `Avx2`, `Avx512`,
+//! `Neon`).
+//!
+//! Every operation gives the same bits at every level, to the NaN and the signed zero:
+//!
+//! - `add`, `sub`, `mul`, `div` and `sqrt` are IEEE-754's, correctly rounded (no fused
+//!   multiply-add is formed: there is no operation that would ask for one);
+//! - [`Simd::min`] and [`Simd::max`] are `x < y ? x : y` and `x > y ? x : y` (what x86's
+//!   `minpd` and `maxpd` compute): the second operand where either is NaN or both are zeros,
+//!   unlike `f64::min`, which drops a NaN, and unlike NEON's `fmin`, which returns it; the
+//!   stages' proofs are written for these;
+//! - the comparisons are ordered (false with a NaN operand), but [`Simd::ne`], which is true
+//!   with a NaN operand;
+//! - [`Simd::blend`] takes the second operand where the mask's bit is set.
+//!
+//! The portable level is the reference; the tests compare every level the CPU has with it.
+
+/// Pairs per block: one AVX-512 register, two AVX2 registers, four NEON registers.
+pub(crate) const LANES: usize = 8;
+
+/// A bit per lane (bit `l` for lane `l`).
+pub(crate) type Mask = u8;
+
+/// The values of the block's lanes, widest value type first: row `c` of a block read by
+/// [`Simd::transposed`] is at most this many values wide (3 segments of 3-D rows).
+pub(crate) const MOST: usize = 9;
+
+/// One instruction-set level's operations on [`LANES`] `f64` lanes.
+///
+/// A value of an implementing type is the proof that the CPU runs the instructions its
+/// methods use (it is made only by a constructor that checks, see
+/// [`dispatch`](super::dispatch)): so the methods are safe to call, and they are meant to be
+/// inlined into a function compiled for the level's features (the dispatch's shims), where
+/// each becomes one or two instructions.
+pub(crate) trait Simd: Copy {
+    /// `LANES` values.
+    type V: Copy;
+
+    /// Whether the batches run their lane stages at this level: where the vectors are 16
+    /// bytes (the portable level's SSE2 on x86-64, NEON) a block of eight pairs spills out
+    /// of the registers, and on the 200,000-pair pool table the portable level's lanes cost
+    /// more than they save (43 ms against 29 ms without, AMD EPYC, one thread). The stages
+    /// are tested at every level all the same (`batch::path_lanes`' tests).
+    const RUNS_LANE_STAGES: bool;
+
+    /// `x` in every lane.
+    fn splat(self, x: f64) -> Self::V;
+    /// The lanes of an array, lane `l` from element `l`.
+    fn load(self, x: [f64; LANES]) -> Self::V;
+    /// The lanes as an array, element `l` from lane `l`.
+    #[cfg_attr(not(test), expect(dead_code, reason = "the tests read lanes back"))]
+    fn store(self, x: Self::V) -> [f64; LANES];
+    /// Lanes `x + y`.
+    fn add(self, x: Self::V, y: Self::V) -> Self::V;
+    /// Lanes `x − y`.
+    fn sub(self, x: Self::V, y: Self::V) -> Self::V;
+    /// Lanes `x · y`.
+    fn mul(self, x: Self::V, y: Self::V) -> Self::V;
+    /// Lanes `x / y`.
+    fn div(self, x: Self::V, y: Self::V) -> Self::V;
+    /// Lanes `x < y ? x : y` (the second operand where either is NaN).
+    fn min(self, x: Self::V, y: Self::V) -> Self::V;
+    /// Lanes `x > y ? x : y` (the second operand where either is NaN).
+    fn max(self, x: Self::V, y: Self::V) -> Self::V;
+    /// Lanes `|x|` (the sign bit cleared).
+    fn abs(self, x: Self::V) -> Self::V;
+    /// Lanes `√x`.
+    fn sqrt(self, x: Self::V) -> Self::V;
+    /// `y` where the mask's bit is set, else `x`.
+    fn blend(self, bits: Mask, x: Self::V, y: Self::V) -> Self::V;
+    /// Lanes `x < y`.
+    fn lt(self, x: Self::V, y: Self::V) -> Mask;
+    /// Lanes `x > y`.
+    fn gt(self, x: Self::V, y: Self::V) -> Mask;
+    /// Lanes `x ≥ y`.
+    fn ge(self, x: Self::V, y: Self::V) -> Mask;
+    /// Lanes `x = y`.
+    fn eq(self, x: Self::V, y: Self::V) -> Mask;
+    /// Lanes `x ≠ y`, or unordered (true with a NaN operand).
+    fn ne(self, x: Self::V, y: Self::V) -> Mask;
+
+    /// `LANES` records of `W` values, stored one after another from `values[0]`, as `W`
+    /// vectors: lane `l` of vector `c` is `values[l·W + c]` (the first `W` of the array; the
+    /// rest are zeros). The rows of a block of paths, a path per lane.
+    ///
+    /// # Panics
+    /// If `values` holds fewer than `LANES·W` values, or `W` is 0 or above [`MOST`].
+    fn transposed<const W: usize>(self, values: &[f64]) -> [Self::V; MOST];
+
+    /// `0` in every lane.
+    #[inline(always)]
+    fn zero(self) -> Self::V {
+        self.splat(0.0)
+    }
+}
+
+/// The records-to-lanes transposition written with scalar reads, for levels that have no
+/// faster one: lane `l` of vector `c` is `values[l·W + c]`.
+///
+/// # Panics
+/// As [`Simd::transposed`].
+#[inline(always)]
+pub(super) fn transposed_by_reads<S: Simd, const W: usize>(s: S, values: &[f64]) -> [S::V; MOST] {
+    const { assert!(W >= 1 && W <= MOST, "records of 1 to MOST values") };
+    let values = &values[..LANES * W];
+    std::array::from_fn(|c| {
+        if c < W {
+            s.load(std::array::from_fn(|l| values[l * W + c]))
+        } else {
+            s.zero()
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::simd::{Kernel, Level, dispatch, test_levels};
+    use crate::test_rng::Rng;
+
+    /// Every operation on `x` and `y` (and the mask `bits`), as bits, at a level.
+    struct EveryOperation {
+        x: [f64; LANES],
+        y: [f64; LANES],
+        bits: Mask,
+        records: [f64; LANES * MOST],
+    }
+
+    impl Kernel for &EveryOperation {
+        type Output = Vec<u64>;
+
+        #[inline(always)]
+        fn run<S: Simd>(self, s: S) -> Vec<u64> {
+            let (x, y) = (s.load(self.x), s.load(self.y));
+            let vectors = [
+                s.splat(self.x[0]),
+                s.zero(),
+                s.add(x, y),
+                s.sub(x, y),
+                s.mul(x, y),
+                s.div(x, y),
+                s.min(x, y),
+                s.max(x, y),
+                s.abs(x),
+                s.sqrt(x),
+                s.blend(self.bits, x, y),
+            ];
+            let masks = [s.lt(x, y), s.gt(x, y), s.ge(x, y), s.eq(x, y), s.ne(x, y)];
+            let records = &self.records;
+            let transposed = [
+                s.transposed::<1>(records),
+                s.transposed::<2>(records),
+                s.transposed::<3>(records),
+                s.transposed::<4>(records),
+                s.transposed::<6>(records),
+                s.transposed::<9>(records),
+            ];
+            // Which NaN an operation on two NaNs returns is not fixed (the compiler may swap
+            // the operands of `+` and `·`): a NaN counts as any NaN, everything else by bits.
+            let bits = |x: f64| {
+                if x.is_nan() {
+                    f64::NAN.to_bits()
+                } else {
+                    x.to_bits()
+                }
+            };
+            let mut out = Vec::new();
+            for v in vectors.into_iter().chain(transposed.into_iter().flatten()) {
+                out.extend(s.store(v).map(bits));
+            }
+            out.extend(masks.map(u64::from));
+            out
+        }
+    }
+
+    /// Values where the levels could differ: NaNs, zeros of both signs, infinities,
+    /// subnormals, the extremes, and ordinary numbers.
+    fn value(rng: &mut Rng) -> f64 {
+        match rng.below(12) {
+            0 => f64::NAN,
+            1 => -f64::NAN,
+            2 => 0.0,
+            3 => -0.0,
+            4 => f64::INFINITY,
+            5 => f64::NEG_INFINITY,
+            6 => f64::MIN_POSITIVE * rng.uniform(-1.0, 1.0),
+            7 => f64::MAX * rng.uniform(-1.0, 1.0),
+            8 => (rng.below(5) as f64) - 2.0,
+            _ => rng.uniform(-4.0, 4.0),
+        }
+    }
+
+    #[test]
+    fn every_operation_gives_the_portable_bits_at_every_level() {
+        let levels = test_levels();
+        let mut rng = Rng(35);
+        for _ in 0..20_000 {
+            let case = EveryOperation {
+                x: std::array::from_fn(|_| value(&mut rng)),
+                y: std::array::from_fn(|_| value(&mut rng)),
+                bits: rng.below(256) as Mask,
+                records: std::array::from_fn(|_| value(&mut rng)),
+            };
+            let portable = dispatch(Level::Portable, &case);
+            for &level in &levels {
+                let ours = dispatch(level, &case);
+                let differ: Vec<_> = (0..ours.len())
+                    .filter(|&k| ours[k] != portable[k])
+                    .collect();
+                assert!(
+                    differ.is_empty(),
+                    "{level}: at {differ:?} (vector, lane = k / 8, k % 8): {:x?} against {:x?}",
+                    differ.iter().map(|&k| ours[k]).collect::<Vec<_>>(),
+                    differ.iter().map(|&k| portable[k]).collect::<Vec<_>>(),
+                );
+            }
+        }
+        // The semantics the stages rely on, at the portable level.
+        let nan = f64::NAN;
+        let case = EveryOperation {
+            x: [nan, 1.0, 0.0, -0.0, nan, 2.0, 3.0, 1.0],
+            y: [1.0, nan, -0.0, 0.0, nan, 2.0, 1.0, 3.0],
+            bits: 0b1010_1010,
+            records: std::array::from_fn(|i| i as f64),
+        };
+        let out = dispatch(Level::Portable, &case);
+        let lanes = |k: usize| -> Vec<u64> { out[k * LANES..(k + 1) * LANES].to_vec() };
+        let bits = |v: [f64; LANES]| {
+            v.map(|x| {
+                if x.is_nan() {
+                    f64::NAN.to_bits()
+                } else {
+                    x.to_bits()
+                }
+            })
+            .to_vec()
+        };
+        // min: the second operand where either is NaN or both are zeros.
+        assert_eq!(lanes(6), bits([1.0, nan, -0.0, 0.0, nan, 2.0, 1.0, 1.0]));
+        assert_eq!(lanes(7), bits([1.0, nan, -0.0, 0.0, nan, 2.0, 3.0, 3.0]));
+        let mask = |k: usize| out[out.len() - 5 + k] as Mask;
+        assert_eq!(mask(0), 0b1000_0000, "lt: ordered");
+        assert_eq!(mask(4), 0b1101_0011, "ne: unordered");
+        // Records of 3: lane `l` of vector `c` is value `3·l + c`.
+        let three = 11 + MOST * 2;
+        assert_eq!(
+            lanes(three + 1),
+            bits(std::array::from_fn(|l| (3 * l + 1) as f64))
+        );
+    }
+}
