@@ -2,13 +2,15 @@
 //!
 //! `tests/data/billiards_cases.txt` is written by `tools/billiards_reference.py`, which calls
 //! pooltool's functions (never this library) on seeded random balls: 2,000 cases of each kind
-//! (18,000: the ball, two balls, and a ball against a straight or a rounded cushion).
+//! (20,000: the ball, two balls, a ball against a straight or a rounded cushion, and a ball
+//! dropping into a pocket).
 //! Each output is compared with ours two ways: equal as numbers (pooltool's arithmetic
 //! reproduced), and the difference against the scale of the terms it is made of (the position,
 //! the speeds and the spins that enter it, over the time it covers). The bar:
 //!
 //! - equal, every case: the slip (`rel_velocity`), the three transition times, the next
-//!   transition and its delay, the spin decay, the roll (`_evolve_roll_state`), the motion
+//!   transition and its delay, the spin decay, the roll (`_evolve_roll_state`), a ball in a
+//!   pocket (`CanonicalBallPocket`, its whole state), the motion
 //!   state `evolve` ends in (but at a transition's time to a few roundings) and the kinds of a
 //!   lone ball's transitions, and for two balls at contact `make_kiss`'s positions and the
 //!   Alciatore friction at them;
@@ -28,10 +30,11 @@ mod fields;
 
 use ballcollide::billiards::{
     AlciatoreFriction, BallBallResolver, BallCircularCushionResolver, BallLinearCushionResolver,
-    BallParams, BallState, CircularCushion, FrictionalInelastic, LinearCushion, MotionState,
-    StrongeCompliantCircular, StrongeCompliantLinear, TransitionKind, ball_path, evolve,
-    evolve_roll, evolve_slide, evolve_spin, kiss_circular_cushion, kiss_linear_cushion, make_kiss,
-    next_transition, roll_time, slide_time, slip_velocity, spin_time,
+    BallParams, BallPocketResolver, BallState, CanonicalBallPocket, CircularCushion,
+    FrictionalInelastic, LinearCushion, MotionState, Pocket, StrongeCompliantCircular,
+    StrongeCompliantLinear, TransitionKind, ball_path, evolve, evolve_roll, evolve_slide,
+    evolve_spin, kiss_circular_cushion, kiss_linear_cushion, make_kiss, next_transition, roll_time,
+    slide_time, slip_velocity, spin_time,
 };
 use fields::Fields;
 use nalgebra::{Vector2, Vector3};
@@ -214,6 +217,7 @@ fn the_table_holds_every_kind() {
             "evolve",
             "linear_cushion",
             "path",
+            "pocket",
             "roll",
             "slide",
             "spin",
@@ -616,4 +620,43 @@ fn cushion_collisions_are_pooltools() {
             "{kind}: beyond the tolerance on lines {beyond:?}"
         );
     }
+}
+
+/// A ball dropping into a pocket, `CanonicalBallPocket`: pooltool's state after to the bit
+/// (the pocket's centre, its bottom as the ball's height, no velocity, no spin, pocketed), from
+/// balls in every motion state; pooltool's pocket holds the ball after, and its state's time
+/// is 0 (its loop sets it after; our states carry no time).
+#[test]
+fn pockets_are_pooltools() {
+    let mut tally = Tally::default();
+    let mut categories = std::collections::BTreeMap::new();
+    for case in cases().filter(|c| c.kind == "pocket") {
+        let line = case.line;
+        *categories.entry(case.category).or_insert(0) += 1;
+        let mut f = fields(line, &case.inputs);
+        let ball = read_state(&mut f);
+        let pocket = Pocket::new(f.vector::<2>(), f.number(), f.number());
+        pocket
+            .check()
+            .unwrap_or_else(|e| panic!("line {line}: {e}"));
+        let ours = CanonicalBallPocket.resolve(&ball, &BallParams::default(), &pocket);
+        let mut out = fields(line, &case.outputs);
+        assert_eq!(read_motion(&mut out), ours.motion, "line {line}");
+        let [rx, ry, rz, vx, vy, vz, wx, wy, wz, t, contains] = [(); 11].map(|_| out.number());
+        let theirs = [rx, ry, rz, vx, vy, vz, wx, wy, wz];
+        let w = ours.angular_velocity;
+        let (p, v) = (ours.position, ours.velocity);
+        let ours = [p.x, p.y, pocket.bottom(), v.x, v.y, 0.0, w.x, w.y, w.z];
+        for (a, b) in ours.into_iter().zip(theirs) {
+            assert!(
+                tally.add(a, b, 1.0, line) && a == b,
+                "line {line}: {a} against {b}"
+            );
+        }
+        assert_eq!((t, contains), (0.0, 1.0), "line {line}");
+    }
+    tally.report("pocket");
+    println!("pocket: balls that were {categories:?}");
+    assert_eq!(categories.len(), 5, "every motion state: {categories:?}");
+    assert_eq!(tally.equal, tally.outputs);
 }

@@ -37,7 +37,13 @@ wx wy wz``, ``motion`` pooltool's state number; a state's ``rvw`` on the table h
 * ``ball_ball CAT P e_b P e_b S S : kx1 ky1 kx2 ky2 u_b S' S'``: two balls at contact
   resolved by pooltool's default ball–ball model (``FrictionalInelastic`` with
   ``AlciatoreBallBallFriction``): the positions ``make_kiss`` gives them, the friction at
-  those positions, and both states after ``resolve``.
+  those positions, and both states after ``resolve``;
+* ``pocket CAT S ax ay radius depth t : motion rvw t' contains``: a ball dropped into a
+  pocket by ``CanonicalBallPocket.resolve`` (its whole ``rvw``, its time, and whether the
+  pocket holds it after).
+
+The inputs of the last are drawn to a few significant digits (random still, but short:
+the table's size is mostly the outputs' 17 digits).
 """
 
 from __future__ import annotations
@@ -56,7 +62,11 @@ from pooltool.events.datatypes import EventType
 from pooltool.evolution.event_based.cache import _next_transition
 from pooltool.objects.ball.datatypes import Ball, BallState
 from pooltool.objects.ball.params import BallParams
-from pooltool.objects.table.components import CircularCushionSegment, LinearCushionSegment
+from pooltool.objects.table.components import (
+    CircularCushionSegment,
+    LinearCushionSegment,
+    Pocket,
+)
 from pooltool.physics.evolve import (
     _evolve_perpendicular_spin_component,
     _evolve_roll_state,
@@ -68,6 +78,7 @@ from pooltool.physics.resolve.ball_cushion.stronge_compliant import (
     StrongeCompliantCircular,
     StrongeCompliantLinear,
 )
+from pooltool.physics.resolve.ball_pocket import CanonicalBallPocket
 from pooltool.physics.resolve.stronge_compliant import is_gross_slip, is_initial_stick
 from pooltool.physics.resolve.transition import CanonicalTransition
 
@@ -530,6 +541,36 @@ def fmt_ball_params(p: BallParams) -> str:
     return f"{fmt_params(p)} {fmt(p.e_b)}"
 
 
+def short(x: float, digits: int = 3) -> float:
+    """``x`` rounded to ``digits`` significant decimal digits: an input that is still random
+    but prints short (the table's size is mostly the outputs' 17 digits)."""
+    return float(f"{x:.{digits}g}")
+
+
+def pocket_cases(rng: np.random.Generator) -> Iterator[str]:
+    """A ball in any motion state (pocketed too) dropping into a pocket anywhere, of any
+    radius and depth (pooltool's 0.08 half of the time), resolved by ``CanonicalBallPocket``
+    (pooltool's only ball–pocket model): the ball's state after, ``t`` included, and whether
+    the pocket then holds it."""
+    model = CanonicalBallPocket()
+    while True:
+        p = random_params(rng)
+        s = int(rng.choice(MOTIONS, p=[0.4, 0.3, 0.1, 0.1, 0.1]))
+        rvw = np.vectorize(lambda x: short(x, 2))(random_state(rng, p, s))
+        rvw[0, 2], rvw[1, 2] = p.R, 0.0
+        center = [short(x, 3) for x in rvw[0, :2] + rng.normal(0.0, 0.05, 2)]
+        radius = short(log_uniform(rng, 0.02, 0.15), 3)
+        depth = 0.08 if rng.random() < 0.5 else short(float(rng.uniform(0.0, 0.3)), 3)
+        pocket = Pocket("p", center=np.array([*center, 0.0]), radius=radius, depth=depth)
+        t = short(float(rng.uniform(0.0, 20.0)), 2)
+        ball, pocket = model.resolve(make_ball(p, rvw, s, t), pocket, inplace=False)
+        contains = int(pocket.contains == {"ball"})
+        inputs = f"{fmt_state(s, rvw)} {fmt(*center, radius, depth, t)}"
+        after = ball.state
+        outputs = f"{after.s} {fmt(*after.rvw.ravel(), after.t)} {contains}"
+        yield f"pocket {state_name(s)} {inputs} : {outputs}"
+
+
 KINDS: list[tuple[str, Callable[[np.random.Generator], Iterator[str]]]] = [
     ("times", times_cases),
     ("spin", spin_cases),
@@ -540,6 +581,7 @@ KINDS: list[tuple[str, Callable[[np.random.Generator], Iterator[str]]]] = [
     ("ball_ball", ball_ball_cases),
     ("linear_cushion", linear_cushion_cases),
     ("circular_cushion", circular_cushion_cases),
+    ("pocket", pocket_cases),
 ]
 
 HEADER = """\
@@ -562,6 +604,8 @@ HEADER = """\
 #   contact; then the ball moved by shift along the normal, make_kiss's position kx ky, and
 #   rvw'' = solve there, or "none" where pooltool fails;
 #   CAT is the Stronge regime: gross_slip, stick_slip or slip_stick_slip)
+# pocket CAT S ax ay radius depth t : motion rx ry rz vx vy vz wx wy wz t' contains
+#   (CanonicalBallPocket.resolve on a ball at time t; contains 1 if the pocket holds it after)
 """
 
 

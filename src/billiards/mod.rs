@@ -6,8 +6,10 @@
 //! sliding (its contact point slips, and the cloth's friction acts against the slip), rolling,
 //! spinning in place about the vertical, stationary, or pocketed. Each state ends at a time
 //! known in closed form, and the next one follows ([`next_transition`]). Two balls that meet
-//! are resolved by a [`BallBallResolver`] ([`FrictionalInelastic`], pooltool's default). The
-//! functions here compute what pooltool's do, to the bit where the arithmetic can be the same
+//! are resolved by a [`BallBallResolver`] ([`FrictionalInelastic`], pooltool's default), a
+//! ball and a cushion by a [`BallLinearCushionResolver`] or a [`BallCircularCushionResolver`],
+//! and a ball dropping into a [`Pocket`] by a [`BallPocketResolver`] ([`CanonicalBallPocket`]).
+//! The functions here compute what pooltool's do, to the bit where the arithmetic can be the same
 //! (the times, the roll, the spin, the placing of colliding balls and their friction), and to
 //! a few roundings where pooltool's goes through rotations and BLAS (the slide, the
 //! collision); `tests/billiards_reference.rs` checks them against pooltool's own functions on
@@ -33,6 +35,7 @@
 //! | `cushion_circular.rs` | [`CircularCushion`], [`BallCircularCushionResolver`] and [`StrongeCompliantCircular`], the same for rounded cushions |
 //! | `stronge.rs` | [`compliant_collinear_collision`]: Stronge's compliant frictional collision, in closed-form stick and slip phases, as pooltool solves it |
 //! | `root.rs` | TOMS748 (Alefeld–Potra–Shi) ported from scipy step for step, for the two Stronge regimes where pooltool calls it |
+//! | `ball_pocket.rs` | [`Pocket`], [`BallPocketResolver`], the trait of ball–pocket models, and [`CanonicalBallPocket`], pooltool's (the ball put still at the pocket's bottom) |
 //! | `ball_path.rs` | [`ball_path`], [`BallPath`]: the motion until the ball stops as constant-acceleration segments, with the state at each segment's start |
 //!
 //! ```
@@ -53,6 +56,7 @@
 
 mod ball_ball;
 mod ball_path;
+mod ball_pocket;
 mod cushion_circular;
 mod cushion_linear;
 mod direction;
@@ -71,6 +75,7 @@ mod transition_time;
 
 pub use ball_ball::{BallBallResolver, KISS_SPACER, make_kiss, separate_touching};
 pub use ball_path::{BallPath, ball_path};
+pub use ball_pocket::{BallPocketResolver, CanonicalBallPocket, Pocket};
 pub use cushion_circular::{
     BallCircularCushionResolver, CircularCushion, StrongeCompliantCircular, kiss_circular_cushion,
 };
