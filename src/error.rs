@@ -131,6 +131,8 @@ pub enum InputErrorKind {
     },
     /// An acceleration of gravity that is zero or negative.
     NonPositiveGravity(f64),
+    /// A cue's contact point off the ball: `a² + b² > 1` (the value is `a² + b²`).
+    ContactOffBall(f64),
 }
 
 impl InputErrorKind {
@@ -174,6 +176,7 @@ impl InputErrorKind {
             Self::InvalidSide(_) => "invalid_side",
             Self::TableDimension { .. } => "table_dimension",
             Self::NonPositiveGravity(_) => "non_positive_gravity",
+            Self::ContactOffBall(_) => "contact_off_ball",
         }
     }
 
@@ -196,7 +199,8 @@ impl InputErrorKind {
             | Self::NonPositiveMass(x)
             | Self::NegativeCircleRadius(x)
             | Self::NonPositiveTargetRadius(x)
-            | Self::NonPositiveGravity(x) => Some(x),
+            | Self::NonPositiveGravity(x)
+            | Self::ContactOffBall(x) => Some(x),
             Self::InvalidSide(side) => Some(side as f64),
             Self::TableDimension { value, .. } => Some(value),
             Self::DecreasingStart { start, .. } | Self::StartsDiffer { start, .. } => Some(start),
@@ -468,6 +472,11 @@ impl fmt::Display for InputErrorKind {
                 write!(f, "a segment's side must be -1, 0 or 1, got {side}")
             }
             Self::NonPositiveGravity(x) => write!(f, "gravity must be > 0, got {}", Brief(x)),
+            Self::ContactOffBall(x) => write!(
+                f,
+                "the contact point must lie on the ball (a² + b² ≤ 1), got a² + b² = {}",
+                Brief(x)
+            ),
         }
     }
 }

@@ -2,13 +2,15 @@
 //!
 //! `tests/data/billiards_cases.txt` is written by `tools/billiards_reference.py`, which calls
 //! pooltool's functions (never this library) on seeded random balls: 2,000 cases of each kind
-//! (18,000: the ball, two balls, and a ball against a straight or a rounded cushion).
+//! (22,000: the ball, two balls, a ball against a straight or a rounded cushion, a ball
+//! dropping into a pocket, and the cue striking a ball).
 //! Each output is compared with ours two ways: equal as numbers (pooltool's arithmetic
 //! reproduced), and the difference against the scale of the terms it is made of (the position,
 //! the speeds and the spins that enter it, over the time it covers). The bar:
 //!
 //! - equal, every case: the slip (`rel_velocity`), the three transition times, the next
-//!   transition and its delay, the spin decay, the roll (`_evolve_roll_state`), the motion
+//!   transition and its delay, the spin decay, the roll (`_evolve_roll_state`), a ball in a
+//!   pocket (`CanonicalBallPocket`, its whole state), the motion
 //!   state `evolve` ends in (but at a transition's time to a few roundings) and the kinds of a
 //!   lone ball's transitions, and for two balls at contact `make_kiss`'s positions and the
 //!   Alciatore friction at them;
@@ -19,7 +21,9 @@
 //!   after a ball–ball collision (`FrictionalInelastic.resolve`, in the line of centres' frame
 //!   turned by its angle there, built from its unit vector here), and the states after a
 //!   ball meets a cushion (`StrongeCompliantLinear` and `StrongeCompliantCircular`, in each of
-//!   the three Stronge regimes; the two regimes with a root take TOMS748's steps as scipy's).
+//!   the three Stronge regimes; the two regimes with a root take TOMS748's steps as scipy's);
+//!   and a ball struck by the cue (`InstantaneousPoint`, its velocity and spin, and the squirt
+//!   angle: pooltool turns vectors by a matrix product in BLAS, and its `arctan2` is NumPy's).
 //!
 //! Run with `--nocapture` for the counts and the worst differences.
 
@@ -28,10 +32,11 @@ mod fields;
 
 use ballcollide::billiards::{
     AlciatoreFriction, BallBallResolver, BallCircularCushionResolver, BallLinearCushionResolver,
-    BallParams, BallState, CircularCushion, FrictionalInelastic, LinearCushion, MotionState,
+    BallParams, BallPocketResolver, BallState, CanonicalBallPocket, CircularCushion, Cue, CueSpecs,
+    FrictionalInelastic, InstantaneousPoint, LinearCushion, MotionState, Pocket, StickBallResolver,
     StrongeCompliantCircular, StrongeCompliantLinear, TransitionKind, ball_path, evolve,
     evolve_roll, evolve_slide, evolve_spin, kiss_circular_cushion, kiss_linear_cushion, make_kiss,
-    next_transition, roll_time, slide_time, slip_velocity, spin_time,
+    next_transition, roll_time, slide_time, slip_velocity, spin_time, squirt_angle,
 };
 use fields::Fields;
 use nalgebra::{Vector2, Vector3};
@@ -214,9 +219,11 @@ fn the_table_holds_every_kind() {
             "evolve",
             "linear_cushion",
             "path",
+            "pocket",
             "roll",
             "slide",
             "spin",
+            "stick",
             "times"
         ]
     );
@@ -616,4 +623,140 @@ fn cushion_collisions_are_pooltools() {
             "{kind}: beyond the tolerance on lines {beyond:?}"
         );
     }
+}
+
+/// A ball dropping into a pocket, `CanonicalBallPocket`: pooltool's state after to the bit
+/// (the pocket's centre, its bottom as the ball's height, no velocity, no spin, pocketed), from
+/// balls in every motion state; pooltool's pocket holds the ball after, and its state's time
+/// is 0 (its loop sets it after; our states carry no time).
+#[test]
+fn pockets_are_pooltools() {
+    let mut tally = Tally::default();
+    let mut categories = std::collections::BTreeMap::new();
+    for case in cases().filter(|c| c.kind == "pocket") {
+        let line = case.line;
+        *categories.entry(case.category).or_insert(0) += 1;
+        let mut f = fields(line, &case.inputs);
+        let ball = read_state(&mut f);
+        let pocket = Pocket::new(f.vector::<2>(), f.number(), f.number());
+        pocket
+            .check()
+            .unwrap_or_else(|e| panic!("line {line}: {e}"));
+        let ours = CanonicalBallPocket.resolve(&ball, &BallParams::default(), &pocket);
+        let mut out = fields(line, &case.outputs);
+        assert_eq!(read_motion(&mut out), ours.motion, "line {line}");
+        let [rx, ry, rz, vx, vy, vz, wx, wy, wz, t, contains] = [(); 11].map(|_| out.number());
+        let theirs = [rx, ry, rz, vx, vy, vz, wx, wy, wz];
+        let w = ours.angular_velocity;
+        let (p, v) = (ours.position, ours.velocity);
+        let ours = [p.x, p.y, pocket.bottom(), v.x, v.y, 0.0, w.x, w.y, w.z];
+        for (a, b) in ours.into_iter().zip(theirs) {
+            assert!(
+                tally.add(a, b, 1.0, line) && a == b,
+                "line {line}: {a} against {b}"
+            );
+        }
+        assert_eq!((t, contains), (0.0, 1.0), "line {line}");
+    }
+    tally.report("pocket");
+    println!("pocket: balls that were {categories:?}");
+    assert_eq!(categories.len(), 5, "every motion state: {categories:?}");
+    assert_eq!(tally.equal, tally.outputs);
+}
+
+/// The cue striking a ball, `InstantaneousPoint` with squirt: pooltool's velocity and spin
+/// within `1e-12` of their scale (the ball's speed after plus its spin's at the surface, and
+/// that over the radius for spins;
+/// pooltool turns vectors by a matrix product in BLAS, and squares and takes `arctan2` with
+/// NumPy), and its squirt angle within `1e-12` relative (NumPy's `arctan2`); nearly every
+/// stroke to the bit; the position kept to the bit, the ball sliding, its time 0.
+#[test]
+fn cue_strikes_are_pooltools() {
+    let (mut velocity, mut spin, mut squirt) =
+        (Tally::default(), Tally::default(), Tally::default());
+    let (mut categories, mut identical) = (std::collections::BTreeMap::new(), 0);
+    // The largest difference of a component relative to itself, where they differ.
+    let mut own_scale: f64 = 0.0;
+    for case in cases().filter(|c| c.kind == "stick") {
+        let line = case.line;
+        *categories.entry(case.category).or_insert(0) += 1;
+        let mut f = fields(line, &case.inputs);
+        let params = BallParams {
+            mass: f.number(),
+            radius: f.number(),
+            ..BallParams::default()
+        };
+        let [v0, phi, theta, a, b, mass, end_mass, tip_radius] = [(); 8].map(|_| f.number());
+        let specs = CueSpecs {
+            mass,
+            end_mass,
+            tip_radius,
+        };
+        let cue = Cue {
+            v0,
+            phi,
+            theta,
+            a,
+            b,
+            specs,
+        };
+        let model = InstantaneousPoint {
+            english_throttle: f.number(),
+            squirt_throttle: f.number(),
+        };
+        // Whatever the ball did before the stroke, only its position stays.
+        let before = BallState::new(
+            f.vector::<2>(),
+            Vector2::new(0.5, -0.25),
+            Vector3::new(3.0, -7.0, 11.0),
+            MotionState::Rolling,
+        );
+        let ours = model
+            .resolve(&cue, &before, &params)
+            .unwrap_or_else(|e| panic!("line {line}: {e}"));
+        let mut out = fields(line, &case.outputs);
+        assert_eq!(read_motion(&mut out), MotionState::Sliding, "line {line}");
+        assert_eq!(ours.motion, MotionState::Sliding);
+        assert_eq!(ours.position, before.position, "line {line}");
+        let (v, w) = (out.vector::<2>(), out.vector::<3>());
+        let (t, alpha) = (out.number(), out.number());
+        assert_eq!(t, 0.0, "line {line}");
+        // The scale: the speeds of the centre and of the surface about it (a massé's velocity
+        // is a trace beside its spin: cos 90° · v).
+        let scale = (v.norm() + w.norm() * params.radius).max(f64::MIN_POSITIVE);
+        let mut ok = true;
+        for k in 0..2 {
+            ok &= velocity.add(ours.velocity[k], v[k], scale, line);
+        }
+        for k in 0..3 {
+            ok &= spin.add(ours.angular_velocity[k], w[k], scale / params.radius, line);
+        }
+        let our_alpha = squirt_angle(params.mass, end_mass, a, model.squirt_throttle);
+        ok &= squirt.add(our_alpha, alpha, alpha.abs().max(f64::MIN_POSITIVE), line);
+        assert!(ok, "line {line}: {ours:?}, squirt {our_alpha}");
+        identical += usize::from(ours.velocity == v && ours.angular_velocity == w);
+        let pairs = ours.velocity.iter().zip(&v);
+        for (x, y) in pairs.chain(ours.angular_velocity.iter().zip(&w)) {
+            if x != y {
+                own_scale = own_scale.max((x - y).abs() / y.abs());
+            }
+        }
+    }
+    velocity.report("stick: velocity");
+    spin.report("stick: spin");
+    squirt.report("stick: squirt angle");
+    println!(
+        "stick: strokes {categories:?}; {identical} with pooltool's velocity and spin to the bit"
+    );
+    println!("stick: worst component relative to itself {own_scale:.2e}");
+    assert_eq!(
+        categories.len(),
+        4,
+        "level and elevated, with and without side: {categories:?}"
+    );
+    assert!(categories.values().all(|&n| n >= 100), "{categories:?}");
+    // The arithmetic is pooltool's, its matrix products as OpenBLAS computes them: all but
+    // the few where NumPy's `**` and `arctan2` round otherwise than the C library (2 of 2,000
+    // where the table was written). Not all: another C library's sin and cos may differ.
+    assert!(identical >= 1900, "{identical} strokes to the bit");
 }

@@ -37,7 +37,16 @@ wx wy wz``, ``motion`` pooltool's state number; a state's ``rvw`` on the table h
 * ``ball_ball CAT P e_b P e_b S S : kx1 ky1 kx2 ky2 u_b S' S'``: two balls at contact
   resolved by pooltool's default ball–ball model (``FrictionalInelastic`` with
   ``AlciatoreBallBallFriction``): the positions ``make_kiss`` gives them, the friction at
-  those positions, and both states after ``resolve``.
+  those positions, and both states after ``resolve``;
+* ``pocket CAT S ax ay radius depth t : motion rvw t' contains``: a ball dropped into a
+  pocket by ``CanonicalBallPocket.resolve`` (its whole ``rvw``, its time, and whether the
+  pocket holds it after);
+* ``stick CAT m R V0 phi theta a b M end_mass tip_radius english squirt rx ry : motion vx
+  vy wx wy wz t' alpha``: a cue striking a ball, ``InstantaneousPoint.resolve`` with squirt,
+  and the squirt angle (``get_squirt_angle``).
+
+The inputs of the last two are drawn to a few significant digits (random still, but short:
+the table's size is mostly the outputs' 17 digits).
 """
 
 from __future__ import annotations
@@ -56,7 +65,12 @@ from pooltool.events.datatypes import EventType
 from pooltool.evolution.event_based.cache import _next_transition
 from pooltool.objects.ball.datatypes import Ball, BallState
 from pooltool.objects.ball.params import BallParams
-from pooltool.objects.table.components import CircularCushionSegment, LinearCushionSegment
+from pooltool.objects.cue.datatypes import Cue, CueSpecs
+from pooltool.objects.table.components import (
+    CircularCushionSegment,
+    LinearCushionSegment,
+    Pocket,
+)
 from pooltool.physics.evolve import (
     _evolve_perpendicular_spin_component,
     _evolve_roll_state,
@@ -68,6 +82,9 @@ from pooltool.physics.resolve.ball_cushion.stronge_compliant import (
     StrongeCompliantCircular,
     StrongeCompliantLinear,
 )
+from pooltool.physics.resolve.ball_pocket import CanonicalBallPocket
+from pooltool.physics.resolve.stick_ball.instantaneous_point import InstantaneousPoint
+from pooltool.physics.resolve.stick_ball.squirt import get_squirt_angle
 from pooltool.physics.resolve.stronge_compliant import is_gross_slip, is_initial_stick
 from pooltool.physics.resolve.transition import CanonicalTransition
 
@@ -530,6 +547,110 @@ def fmt_ball_params(p: BallParams) -> str:
     return f"{fmt_params(p)} {fmt(p.e_b)}"
 
 
+def short(x: float, digits: int = 3) -> float:
+    """``x`` rounded to ``digits`` significant decimal digits: an input that is still random
+    but prints short (the table's size is mostly the outputs' 17 digits)."""
+    return float(f"{x:.{digits}g}")
+
+
+def pocket_cases(rng: np.random.Generator) -> Iterator[str]:
+    """A ball in any motion state (pocketed too) dropping into a pocket anywhere, of any
+    radius and depth (pooltool's 0.08 half of the time), resolved by ``CanonicalBallPocket``
+    (pooltool's only ball–pocket model): the ball's state after, ``t`` included, and whether
+    the pocket then holds it."""
+    model = CanonicalBallPocket()
+    while True:
+        p = random_params(rng)
+        s = int(rng.choice(MOTIONS, p=[0.4, 0.3, 0.1, 0.1, 0.1]))
+        rvw = np.vectorize(lambda x: short(x, 2))(random_state(rng, p, s))
+        rvw[0, 2], rvw[1, 2] = p.R, 0.0
+        center = [short(x, 3) for x in rvw[0, :2] + rng.normal(0.0, 0.05, 2)]
+        radius = short(log_uniform(rng, 0.02, 0.15), 3)
+        depth = 0.08 if rng.random() < 0.5 else short(float(rng.uniform(0.0, 0.3)), 3)
+        pocket = Pocket("p", center=np.array([*center, 0.0]), radius=radius, depth=depth)
+        t = short(float(rng.uniform(0.0, 20.0)), 2)
+        ball, pocket = model.resolve(make_ball(p, rvw, s, t), pocket, inplace=False)
+        contains = int(pocket.contains == {"ball"})
+        inputs = f"{fmt_state(s, rvw)} {fmt(*center, radius, depth, t)}"
+        after = ball.state
+        outputs = f"{after.s} {fmt(*after.rvw.ravel(), after.t)} {contains}"
+        yield f"pocket {state_name(s)} {inputs} : {outputs}"
+
+
+def random_cue(rng: np.random.Generator) -> tuple[float, float, float, float, float]:
+    """``V0 phi theta a b``: a speed from 1 cm/s to 10 m/s; any direction (an axis a tenth of
+    the time, and beyond [0, 360) sometimes); level a third of the time, else elevated up to
+    90 degrees (massé); the contact point anywhere on the ball's face (at its centre, on an
+    axis, or on its rim too)."""
+    v0 = short(log_uniform(rng, 0.01, 10.0))
+    phi = short(float(rng.uniform(0.0, 360.0)))
+    if rng.random() < 0.1:
+        phi = float(rng.choice([0.0, 90.0, 180.0, 270.0, 360.0, -45.0, 725.0]))
+    x = rng.random()
+    theta = 0.0 if x < 0.35 else short(float(rng.uniform(0.0, 90.0)), 4)
+    if rng.random() < 0.03:
+        theta = 90.0
+    x = rng.random()
+    if x < 0.1:
+        return v0, phi, theta, 0.0, 0.0
+    if x < 0.25:  # follow or draw, no side
+        return v0, phi, theta, 0.0, short(float(rng.uniform(-0.9, 0.9)), 4)
+    if x < 0.35:  # side only
+        return v0, phi, theta, short(float(rng.uniform(-0.9, 0.9)), 4), 0.0
+    if x < 0.4:  # on the rim: a^2 + b^2 as near 1 as the rounding lets it be
+        angle = rng.uniform(0.0, 2.0 * math.pi)
+        a, b = math.cos(angle), math.sin(angle)
+        while 1.0 - a**2 - b**2 < 0.0:
+            a, b = a * (1 - 2**-52), b * (1 - 2**-52)
+        return v0, phi, theta, a, b
+    while True:
+        a, b = (short(float(x), 4) for x in rng.uniform(-1.0, 1.0, 2))
+        if 1.0 - a**2 - b**2 >= 0.0:
+            return v0, phi, theta, a, b
+
+
+# (m, R) of pooltool's prebuilt balls: pool (its default), snooker, carom.
+STICK_BALLS = [(0.170097, 0.028575), (0.140, 0.02619375), (0.210, 0.0615 / 2)]
+
+
+def stick_cases(rng: np.random.Generator) -> Iterator[str]:
+    """A cue striking a ball (``InstantaneousPoint``, with squirt): random strokes, cues and
+    balls; pooltool's default cue and throttles (1) half of the time, and its default ball.
+    The tip radius is drawn too, to show that the model does not use it."""
+    while True:
+        x = rng.random()
+        m, R = STICK_BALLS[0 if x < 0.5 else 1 if x < 0.6 else 2]
+        if rng.random() < 0.3:
+            m, R = short(float(rng.uniform(0.1, 0.3)), 4), short(float(rng.uniform(0.02, 0.035)), 4)
+        v0, phi, theta, a, b = random_cue(rng)
+        specs = CueSpecs()
+        if rng.random() < 0.5:
+            specs = CueSpecs(
+                M=short(float(rng.uniform(0.3, 0.7)), 4),
+                tip_radius=short(float(rng.uniform(0.004, 0.012)), 4),
+                end_mass=short(log_uniform(rng, m / 100, m / 5), 4),
+            )
+        english = squirt = 1.0
+        if rng.random() < 0.3:
+            english = short(float(rng.uniform(0.0, 2.0)), 3)
+            squirt = float(rng.choice([0.0, short(float(rng.uniform(0.0, 2.0)), 3)]))
+        cue = Cue(V0=v0, phi=phi, theta=theta, a=a, b=b, specs=specs)
+        p = BallParams(m=m, R=R)
+        s = int(rng.choice(MOTIONS[:4]))
+        rvw = np.vectorize(short)(random_state(rng, p, s))
+        rvw[0, 2], rvw[1, 2] = R, 0.0
+        model = InstantaneousPoint(english_throttle=english, squirt_throttle=squirt)
+        _, ball = model.resolve(cue, make_ball(p, rvw, s, 1.5), inplace=False)
+        out = ball.state.rvw
+        assert (out[0] == rvw[0]).all() and out[1, 2] == 0.0, (rvw, out)
+        alpha = get_squirt_angle(m, specs.end_mass, a, squirt)
+        category = ("elevated" if theta > 0.0 else "level") + ("_side" if a != 0.0 else "")
+        inputs = f"{fmt(m, R, v0, phi, theta, a, b, specs.M, specs.end_mass, specs.tip_radius)}"
+        inputs += f" {fmt(english, squirt, *rvw[0, :2])}"
+        outputs = f"{ball.state.s} {fmt(*out[1, :2], *out[2], ball.state.t, alpha)}"
+        yield f"stick {category} {inputs} : {outputs}"
+
+
 KINDS: list[tuple[str, Callable[[np.random.Generator], Iterator[str]]]] = [
     ("times", times_cases),
     ("spin", spin_cases),
@@ -540,6 +661,8 @@ KINDS: list[tuple[str, Callable[[np.random.Generator], Iterator[str]]]] = [
     ("ball_ball", ball_ball_cases),
     ("linear_cushion", linear_cushion_cases),
     ("circular_cushion", circular_cushion_cases),
+    ("pocket", pocket_cases),
+    ("stick", stick_cases),
 ]
 
 HEADER = """\
@@ -562,6 +685,13 @@ HEADER = """\
 #   contact; then the ball moved by shift along the normal, make_kiss's position kx ky, and
 #   rvw'' = solve there, or "none" where pooltool fails;
 #   CAT is the Stronge regime: gross_slip, stick_slip or slip_stick_slip)
+# pocket CAT S ax ay radius depth t : motion rx ry rz vx vy vz wx wy wz t' contains
+#   (CanonicalBallPocket.resolve on a ball at time t; contains 1 if the pocket holds it after)
+# stick CAT m R V0 phi theta a b M end_mass tip_radius english squirt rx ry :
+#   motion vx vy wx wy wz t' alpha
+#   (InstantaneousPoint(english_throttle, squirt_throttle).resolve with a Cue of CueSpecs(M,
+#   end_mass, tip_radius) on a ball of BallParams(m, R) at rx ry; alpha = get_squirt_angle;
+#   CAT is level or elevated, with _side for a != 0)
 """
 
 

@@ -6,7 +6,10 @@
 //! sliding (its contact point slips, and the cloth's friction acts against the slip), rolling,
 //! spinning in place about the vertical, stationary, or pocketed. Each state ends at a time
 //! known in closed form, and the next one follows ([`next_transition`]). Two balls that meet
-//! are resolved by a [`BallBallResolver`] ([`FrictionalInelastic`], pooltool's default). The
+//! are resolved by a [`BallBallResolver`] ([`FrictionalInelastic`], pooltool's default), a
+//! ball and a cushion by a [`BallLinearCushionResolver`] or a [`BallCircularCushionResolver`],
+//! a ball dropping into a [`Pocket`] by a [`BallPocketResolver`] ([`CanonicalBallPocket`]), and
+//! the cue striking a ball by a [`StickBallResolver`] ([`InstantaneousPoint`], with squirt). The
 //! functions here compute what pooltool's do, to the bit where the arithmetic can be the same
 //! (the times, the roll, the spin, the placing of colliding balls and their friction), and to
 //! a few roundings where pooltool's goes through rotations and BLAS (the slide, the
@@ -33,6 +36,9 @@
 //! | `cushion_circular.rs` | [`CircularCushion`], [`BallCircularCushionResolver`] and [`StrongeCompliantCircular`], the same for rounded cushions |
 //! | `stronge.rs` | [`compliant_collinear_collision`]: Stronge's compliant frictional collision, in closed-form stick and slip phases, as pooltool solves it |
 //! | `root.rs` | TOMS748 (Alefeld–Potra–Shi) ported from scipy step for step, for the two Stronge regimes where pooltool calls it |
+//! | `ball_pocket.rs` | [`Pocket`], [`BallPocketResolver`], the trait of ball–pocket models, and [`CanonicalBallPocket`], pooltool's (the ball put still at the pocket's bottom) |
+//! | `stick_ball.rs` | [`Cue`], [`CueSpecs`] (a stroke and the cue) and [`StickBallResolver`], the trait of stick–ball models |
+//! | `instantaneous_point.rs` | [`InstantaneousPoint`], pooltool's stick–ball model, and its [`squirt_angle`] |
 //! | `ball_path.rs` | [`ball_path`], [`BallPath`]: the motion until the ball stops as constant-acceleration segments, with the state at each segment's start |
 //!
 //! ```
@@ -53,6 +59,7 @@
 
 mod ball_ball;
 mod ball_path;
+mod ball_pocket;
 mod cushion_circular;
 mod cushion_linear;
 mod direction;
@@ -61,16 +68,19 @@ mod evolve_roll;
 mod evolve_slide;
 mod evolve_spin;
 mod frictional_inelastic;
+mod instantaneous_point;
 mod params;
 mod root;
 mod slip_velocity;
 mod state;
+mod stick_ball;
 mod stronge;
 mod transition;
 mod transition_time;
 
 pub use ball_ball::{BallBallResolver, KISS_SPACER, make_kiss, separate_touching};
 pub use ball_path::{BallPath, ball_path};
+pub use ball_pocket::{BallPocketResolver, CanonicalBallPocket, Pocket};
 pub use cushion_circular::{
     BallCircularCushionResolver, CircularCushion, StrongeCompliantCircular, kiss_circular_cushion,
 };
@@ -82,9 +92,11 @@ pub use evolve_roll::evolve_roll;
 pub use evolve_slide::evolve_slide;
 pub use evolve_spin::evolve_spin;
 pub use frictional_inelastic::{AlciatoreFriction, FrictionalInelastic};
+pub use instantaneous_point::{InstantaneousPoint, squirt_angle};
 pub use params::BallParams;
 pub use slip_velocity::slip_velocity;
 pub use state::{BallState, MotionState};
+pub use stick_ball::{Cue, CueSpecs, StickBallResolver};
 pub use stronge::compliant_collinear_collision;
 pub use transition::{NextTransition, TransitionKind, next_transition};
 pub use transition_time::{roll_time, slide_time, spin_time};
