@@ -10,6 +10,7 @@
 //! so do balls on paths against a table of static objects (`path_geometry.rs`:
 //! [`path_geometry_times`], whose answers go into [`ContactColumns`]).
 
+mod block_queue;
 mod first_window_lanes;
 mod path_geometry;
 mod path_lanes;
@@ -43,7 +44,8 @@ use crate::error::{
 };
 use crate::interrupt::Interrupt;
 use crate::motion::Ball;
-use crate::simd;
+use crate::simd::{self, LANES};
+use block_queue::BlockQueue;
 
 /// A scalar parameter of a batch: one value for every pair, or one per pair.
 ///
@@ -168,11 +170,6 @@ pub fn collision_times(
     })
 }
 
-/// Pairs tested together by the lane-wise tests ([`screen_pair`], [`straight::contact`],
-/// [`apart_by_window`], [`while_moving`]): a block fills a vector register or two per input,
-/// and the compiler turns the block loops into vector code.
-const LANES: usize = 8;
-
 /// The collision times of pairs `offset..offset + out.len()`: the batch's work on one chunk,
 /// at a SIMD level ([`simd::dispatch`]).
 ///
@@ -223,9 +220,9 @@ fn solve_chunk(pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) -> Result<(), 
             let i = offset + start + k;
             // Answered when its block is settled.
             if screened.crossing[k] {
-                held.crossing.push(i, (false, false));
+                held.crossing.push((i, (false, false)));
             } else if screened.at_rest[k] {
-                held.at_rest.push(i, (false, false));
+                held.at_rest.push((i, (false, false)));
             } else {
                 // Invalid, both at rest, one at rest beyond the closed form's range, no
                 // friction, or magnitudes beyond the lane-wise tests' range.
@@ -254,40 +251,9 @@ struct Held {
     at_rest: Queue,
 }
 
-/// Pair indices, each with two flags: room for a block and the most a stage adds before the
-/// block is taken.
-#[derive(Default)]
-struct Queue {
-    index: [usize; 2 * LANES],
-    flags: [(bool, bool); 2 * LANES],
-    len: usize,
-}
-
-impl Queue {
-    /// Holds pair `i` with its flags (the callers keep `len` below `2·LANES`).
-    #[inline(always)]
-    fn push(&mut self, i: usize, flags: (bool, bool)) {
-        if let (Some(slot), Some(f)) = (self.index.get_mut(self.len), self.flags.get_mut(self.len))
-        {
-            (*slot, *f) = (i, flags);
-            self.len += 1;
-        }
-    }
-
-    /// Takes the first block of up to [`LANES`] pairs: their indices and flags, and how many.
-    #[inline(always)]
-    fn take(&mut self) -> ([usize; LANES], [(bool, bool); LANES], usize) {
-        let len = self.len.min(LANES);
-        let mut index = [0; LANES];
-        let mut flags = [(false, false); LANES];
-        index.copy_from_slice(&self.index[..LANES]);
-        flags.copy_from_slice(&self.flags[..LANES]);
-        self.index.copy_within(LANES.., 0);
-        self.flags.copy_within(LANES.., 0);
-        self.len -= len;
-        (index, flags, len)
-    }
-}
+/// Pair indices, each with two flags (what the timing test proved of the first and second
+/// windows, for the open queue).
+type Queue = BlockQueue<(usize, (bool, bool))>;
 
 /// The inputs of pairs `index[..len]`, a lane each (defaults past `len`).
 #[inline(always)]
@@ -324,13 +290,13 @@ impl Held {
         finish: bool,
     ) -> Result<(), InputError> {
         // Every queue is drained the same way: full blocks, and at the end whatever is held.
-        let ready = |queue: &Queue| queue.len >= LANES || (finish && queue.len > 0);
+        let ready = |queue: &Queue| queue.len() >= LANES || (finish && queue.len() > 0);
         loop {
             let test = ready(&self.crossing);
             // Settling first keeps the open queue below one block before a test adds to it.
             if ready(&self.at_rest) {
                 self.settle_at_rest(pairs, offset, out)?;
-            } else if self.open.len >= LANES || (finish && !test && self.open.len > 0) {
+            } else if self.open.len() >= LANES || (finish && !test && self.open.len() > 0) {
                 self.settle_first_window(pairs, offset, out)?;
             } else if test {
                 self.time_test(pairs, offset, out);
@@ -349,7 +315,8 @@ impl Held {
         offset: usize,
         out: &mut [f64],
     ) -> Result<(), InputError> {
-        let (index, _, len) = self.at_rest.take();
+        let (held, len) = self.at_rest.take();
+        let index = held.map(|(i, _)| i);
         let lanes = lanes(pairs, &index, len);
         let answers = at_rest_answers(|k| lanes[k], &first_lanes(len));
         for (&i, &answer) in index[..len].iter().zip(&answers) {
@@ -366,7 +333,8 @@ impl Held {
     /// apart; the others move on to the open queue.
     #[inline(always)]
     fn time_test(&mut self, pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) {
-        let (index, _, len) = self.crossing.take();
+        let (held, len) = self.crossing.take();
+        let index = held.map(|(i, _)| i);
         let lanes = lanes(pairs, &index, len);
         let mut apart = [(false, false); LANES];
         for (apart, lane) in apart.iter_mut().zip(&lanes) {
@@ -376,7 +344,7 @@ impl Held {
             if first & second {
                 out[i - offset] = f64::INFINITY;
             } else {
-                self.open.push(i, (first, second));
+                self.open.push((i, (first, second)));
             }
         }
     }
@@ -392,7 +360,8 @@ impl Held {
         offset: usize,
         out: &mut [f64],
     ) -> Result<(), InputError> {
-        let (index, apart, len) = self.open.take();
+        let (held, len) = self.open.take();
+        let (index, apart) = (held.map(|(i, _)| i), held.map(|(_, apart)| apart));
         let lanes = lanes(pairs, &index, len);
         let mut entry = [f64::NAN; LANES];
         let mut no_entry = [false; LANES];

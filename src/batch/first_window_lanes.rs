@@ -21,48 +21,6 @@ use crate::collision::path_contact::PathFirstWindow;
 use crate::path::Segment;
 use crate::simd::LANES;
 
-/// The chunk positions of pairs held back for the first-window lanes: room for a block and
-/// for what the lanes leave of one more before the block is taken.
-#[derive(Default)]
-pub(super) struct HeldPairs {
-    index: [usize; 2 * LANES],
-    len: usize,
-}
-
-impl HeldPairs {
-    /// Holds the pair at chunk position `k` (the caller takes a block whenever one is full,
-    /// so that there is always room).
-    #[inline(always)]
-    pub(super) fn push(&mut self, k: usize) {
-        debug_assert!(
-            self.len < self.index.len(),
-            "a block is taken whenever one is full"
-        );
-        if let Some(slot) = self.index.get_mut(self.len) {
-            *slot = k;
-            self.len += 1;
-        }
-    }
-
-    /// The first block, if one is full, taken out.
-    #[inline(always)]
-    pub(super) fn take_block(&mut self) -> Option<[usize; LANES]> {
-        if self.len < LANES {
-            return None;
-        }
-        let mut block = [0; LANES];
-        block.copy_from_slice(&self.index[..LANES]);
-        self.index.copy_within(LANES.., 0);
-        self.len -= LANES;
-        Some(block)
-    }
-
-    /// The pairs held (fewer than a block, once the full ones are taken), to go on one by one.
-    pub(super) fn rest(&self) -> &[usize] {
-        &self.index[..self.len]
-    }
-}
-
 /// What the first windows of pairs `offset + block[l]` settle
 /// ([`PathFirstWindow::eighth_contact`]): their answers where they find an entry, NaN for
 /// the others, and which are free of entries. The pairs must be ones the lanes took whole:

@@ -18,7 +18,8 @@
 //! until eight are waiting, and their first windows settled at once on the first open eighth
 //! ([`first_window_lanes`](super::first_window_lanes)); what is left goes on one by one.
 
-use super::first_window_lanes::{HeldPairs, eighth_contacts};
+use super::block_queue::BlockQueue;
+use super::first_window_lanes::eighth_contacts;
 use super::path_lanes::settled;
 use super::{PerPair, Threads, check_len, run_chunks};
 use crate::collision::path_bounds::PathBounds;
@@ -26,7 +27,7 @@ use crate::collision::path_contact::{Prior, first_bounded_contact};
 use crate::collision::stage_counts::{Stage, count};
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::path::{Names, Segment, locate, segments_from_rows};
-use crate::simd::{Kernel, LANES as LANE_WIDTH, Simd, dispatch};
+use crate::simd::{Kernel, LANES, Simd, dispatch};
 
 /// One side of a batch of path pairs: `N` paths of `segments` rows each, row `k` of path `i`
 /// at `i·segments + k` of every slice.
@@ -207,7 +208,8 @@ fn path_pairs_in_turn<S: Simd, const D: usize, const K: usize>(
 ) -> Result<(), InputError> {
     let mut buffers = [PathBuffer::new(), PathBuffer::new()];
     let lanes = S::RUNS_LANE_STAGES && K > 0 && shared[0].is_none() && shared[1].is_none();
-    let mut held = HeldPairs::default();
+    // The pairs the lanes took and left, for the first-window lanes.
+    let mut held = BlockQueue::<usize>::default();
     // Block by block: the pairs the lanes settle all at once (most pairs: they then cost no
     // work of their own here); those they take and leave held for the first-window lanes,
     // which run on full blocks of them; then the others, and those the first-window lanes
@@ -215,17 +217,18 @@ fn path_pairs_in_turn<S: Simd, const D: usize, const K: usize>(
     // pairs are valid). After the last block, the pairs still held. One call of the pair's
     // search in the loop (two would be inlined twice, and the compiler then does worse with
     // both).
-    let blocks = chunk.len().div_ceil(LANE_WIDTH);
+    let blocks = chunk.len().div_ceil(LANES);
     for block in 0..=blocks {
-        let mut walk = WalkList::default();
+        // The pairs of this step to walk one by one, with what the lanes found of them.
+        let mut walk = BlockQueue::<(usize, Prior)>::default();
         if block == blocks {
-            for &k in held.rest() {
-                walk.push(k, Prior::LanesLeft);
+            for &k in held.items() {
+                walk.push((k, Prior::LanesLeft));
             }
         } else {
-            let here = block * LANE_WIDTH;
-            let len = LANE_WIDTH.min(chunk.len() - here);
-            let (settled, taken) = if lanes && len == LANE_WIDTH {
+            let here = block * LANES;
+            let len = LANES.min(chunk.len() - here);
+            let (settled, taken) = if lanes && len == LANES {
                 // The sides were checked to hold a path per pair in rows of `K`, the per-pair
                 // values to have one per pair, and the block is in range.
                 let lanes = settled::<S, D, K>(s, pairs, offset + here);
@@ -247,7 +250,7 @@ fn path_pairs_in_turn<S: Simd, const D: usize, const K: usize>(
                 if taken >> l & 1 != 0 {
                     held.push(here + l);
                 } else {
-                    walk.push(here + l, Prior::Nothing);
+                    walk.push((here + l, Prior::Nothing));
                 }
             }
             if let Some(block) = held.take_block() {
@@ -260,7 +263,7 @@ fn path_pairs_in_turn<S: Simd, const D: usize, const K: usize>(
                         } else {
                             Prior::LanesLeft
                         };
-                        walk.push(k, prior);
+                        walk.push((k, prior));
                     } else {
                         count_first_window_contact();
                         chunk[k] = contact;
@@ -268,46 +271,11 @@ fn path_pairs_in_turn<S: Simd, const D: usize, const K: usize>(
                 }
             }
         }
-        for &(k, prior) in walk.pairs() {
+        for &(k, prior) in walk.items() {
             chunk[k] = pair_time::<D, K>(pairs, offset + k, shared, &mut buffers, prior)?;
         }
     }
     Ok(())
-}
-
-/// The pairs of a step to walk one by one, at their chunk positions, with what the lanes
-/// found of them: room for a block's and for a block of held pairs'.
-struct WalkList {
-    pairs: [(usize, Prior); 2 * LANE_WIDTH],
-    len: usize,
-}
-
-impl Default for WalkList {
-    fn default() -> Self {
-        Self {
-            pairs: [(0, Prior::Nothing); 2 * LANE_WIDTH],
-            len: 0,
-        }
-    }
-}
-
-impl WalkList {
-    #[inline(always)]
-    fn push(&mut self, k: usize, prior: Prior) {
-        debug_assert!(
-            self.len < self.pairs.len(),
-            "a block's pairs and a held block's"
-        );
-        if let Some(slot) = self.pairs.get_mut(self.len) {
-            *slot = (k, prior);
-            self.len += 1;
-        }
-    }
-
-    #[inline(always)]
-    fn pairs(&self) -> &[(usize, Prior)] {
-        &self.pairs[..self.len]
-    }
 }
 
 /// Counts a pair answered by the first-window lanes as its walk would have counted it.
@@ -328,7 +296,7 @@ fn count_first_window_contact() {
 /// `stage-counts` feature).
 #[inline(always)]
 fn count_settled(bounds: u8, chords: u8, windows: u8) {
-    for l in 0..LANE_WIDTH {
+    for l in 0..LANES {
         if (bounds | chords | windows) >> l & 1 != 0 {
             count(Stage::PathPair);
             count(if bounds >> l & 1 != 0 {

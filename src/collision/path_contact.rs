@@ -165,9 +165,10 @@ pub(crate) fn first_bounded_contact<const D: usize, const S: usize>(
 }
 
 /// What a caller already knows of a pair when its search starts.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) enum Prior {
     /// Nothing: every screen runs.
+    #[default]
     Nothing,
     /// The batch's lanes took the pair whole and settled it by none of their screens
     /// (`batch/path_lanes.rs`, `batch/window_lanes.rs`): the whole-path screens, the same

@@ -12,9 +12,12 @@
 
 use crate::coefficients::Gap;
 
-/// Relative size of the margin, `2⁻⁴⁰ ≈ 9e-13` of the magnitudes involved: far above the few
-/// roundings (`ε = 2⁻⁵³`) made in forming a box and in the search's own arithmetic.
-pub(crate) const MARGIN: f64 = 1.0 / ((1u64 << 40) as f64);
+/// Relative size of the margin (the pair screen's, [`prefilter::MARGIN`]), `2⁻⁴⁰ ≈ 9e-13`
+/// of the magnitudes involved: far above the few roundings (`ε = 2⁻⁵³`) made in forming a
+/// box and in the search's own arithmetic.
+///
+/// [`prefilter::MARGIN`]: super::prefilter::MARGIN
+pub(crate) use super::prefilter::MARGIN;
 
 /// What underflow can cost a box: a quadratic's values over a span of length `L` computed in
 /// floats are off by more than relative roundings only where a product underflows, by at most

@@ -2,11 +2,13 @@
 //! from the compares' sign bits (`vmovmskpd`).
 
 use core::arch::x86_64::{
-    __m256d, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm256_add_pd,
-    _mm256_and_si256, _mm256_andnot_pd, _mm256_blendv_pd, _mm256_castsi256_pd, _mm256_cmp_pd,
-    _mm256_cmpeq_epi64, _mm256_div_pd, _mm256_loadu_pd, _mm256_max_pd, _mm256_min_pd,
-    _mm256_movemask_pd, _mm256_mul_pd, _mm256_set_pd, _mm256_set1_epi64x, _mm256_set1_pd,
-    _mm256_setr_epi64x, _mm256_setzero_pd, _mm256_sqrt_pd, _mm256_storeu_pd, _mm256_sub_pd,
+    __m128d, __m256d, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm_loadu_pd,
+    _mm256_add_pd, _mm256_and_si256, _mm256_andnot_pd, _mm256_blendv_pd, _mm256_castpd128_pd256,
+    _mm256_castsi256_pd, _mm256_cmp_pd, _mm256_cmpeq_epi64, _mm256_div_pd, _mm256_insertf128_pd,
+    _mm256_loadu_pd, _mm256_max_pd, _mm256_min_pd, _mm256_movemask_pd, _mm256_mul_pd,
+    _mm256_permute2f128_pd, _mm256_set_pd, _mm256_set1_epi64x, _mm256_set1_pd, _mm256_setr_epi64x,
+    _mm256_setzero_pd, _mm256_sqrt_pd, _mm256_storeu_pd, _mm256_sub_pd, _mm256_unpackhi_pd,
+    _mm256_unpacklo_pd,
 };
 
 use super::Level;
@@ -52,10 +54,23 @@ fn lanes_of_bits(bits: u8) -> __m256d {
     }
 }
 
-/// Lanes `(l, c)`'s values of a block of records of `W`, for lanes `4·h..4·h + 4`.
+/// `values[from..from + 2]`.
 #[inline(always)]
-fn quarter_column<const W: usize>(values: &[f64], h: usize, c: usize) -> __m256d {
-    let at = 4 * h * W + c;
+fn read2(values: &[f64], from: usize) -> __m128d {
+    unsafe { _mm_loadu_pd(values[from..from + 2].as_ptr()) }
+}
+
+/// `values[from..from + 4]`.
+#[inline(always)]
+fn read4(values: &[f64], from: usize) -> __m256d {
+    unsafe { _mm256_loadu_pd(values[from..from + 4].as_ptr()) }
+}
+
+/// Column `c` of the four records of `W` values from `values[at]` on: lane `l` is
+/// `values[at + l·W + c]` (four scalar reads).
+#[inline(always)]
+fn column<const W: usize>(values: &[f64], at: usize, c: usize) -> __m256d {
+    let at = at + c;
     unsafe {
         _mm256_set_pd(
             values[at + 3 * W],
@@ -63,6 +78,40 @@ fn quarter_column<const W: usize>(values: &[f64], h: usize, c: usize) -> __m256d
             values[at + W],
             values[at],
         )
+    }
+}
+
+/// Columns `c..c + 2` of the four records of `W` values from `values[at]` on: a 16-byte read
+/// per record, paired by inserts and split by unpacks.
+#[inline(always)]
+fn two_columns<const W: usize>(values: &[f64], at: usize, c: usize) -> [__m256d; 2] {
+    let at = at + c;
+    let (r0, r1) = (read2(values, at), read2(values, at + W));
+    let (r2, r3) = (read2(values, at + 2 * W), read2(values, at + 3 * W));
+    unsafe {
+        // [r0 r2] and [r1 r3], each record's two values side by side.
+        let even = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(r0), r2);
+        let odd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(r1), r3);
+        [_mm256_unpacklo_pd(even, odd), _mm256_unpackhi_pd(even, odd)]
+    }
+}
+
+/// Columns `c..c + 4` of the four records of `W` values from `values[at]` on: a 32-byte read
+/// per record and a 4 × 4 transposition in registers.
+#[inline(always)]
+fn four_columns<const W: usize>(values: &[f64], at: usize, c: usize) -> [__m256d; 4] {
+    let at = at + c;
+    let (r0, r1) = (read4(values, at), read4(values, at + W));
+    let (r2, r3) = (read4(values, at + 2 * W), read4(values, at + 3 * W));
+    unsafe {
+        let (t0, t1) = (_mm256_unpacklo_pd(r0, r1), _mm256_unpackhi_pd(r0, r1));
+        let (t2, t3) = (_mm256_unpacklo_pd(r2, r3), _mm256_unpackhi_pd(r2, r3));
+        [
+            _mm256_permute2f128_pd::<0x20>(t0, t2),
+            _mm256_permute2f128_pd::<0x20>(t1, t3),
+            _mm256_permute2f128_pd::<0x31>(t0, t2),
+            _mm256_permute2f128_pd::<0x31>(t1, t3),
+        ]
     }
 }
 
@@ -206,11 +255,23 @@ impl Simd for Avx2 {
         const { assert!(W >= 1 && W <= MOST, "records of 1 to MOST values") };
         let values = &values[..LANES * W];
         let mut out = [self.zero(); MOST];
-        for (c, vector) in out.iter_mut().enumerate().take(W) {
-            *vector = [
-                quarter_column::<W>(values, 0, c),
-                quarter_column::<W>(values, 1, c),
-            ];
+        // Each half's four records: whole columns four at a time, then two, then one.
+        for (h, at) in [0, 4 * W].into_iter().enumerate() {
+            let mut c = 0;
+            while c + 4 <= W {
+                for (j, column) in four_columns::<W>(values, at, c).into_iter().enumerate() {
+                    out[c + j][h] = column;
+                }
+                c += 4;
+            }
+            if c + 2 <= W {
+                let [first, second] = two_columns::<W>(values, at, c);
+                (out[c][h], out[c + 1][h]) = (first, second);
+                c += 2;
+            }
+            if c < W {
+                out[c][h] = column::<W>(values, at, c);
+            }
         }
         out
     }
