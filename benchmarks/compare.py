@@ -56,6 +56,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
+import machine
 import numpy as np
 
 import ballcollide as bc
@@ -1183,6 +1184,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         f"{sys.version.split()[0]}, {os.cpu_count()} CPUs; ns/pair = median of "
         f"{args.repeats} repeats / pairs; '÷ bc-1t' = ns/pair ÷ ballcollide's 1-thread ns/pair"
     )
+    print(f"# {machine.describe()}")
     print(
         f"# load average {os.getloadavg()[0]:.1f} at start; cpu ns/pair = process CPU time"
         " (all threads) / pairs: far below ns/pair on 1 thread = the cores were shared"

@@ -37,7 +37,7 @@ from typing import Any
 
 import numpy as np
 from compare import RADIUS, Pairs, random_table
-from machine import cpu_model
+from machine import describe
 
 import ballcollide as bc
 from ballcollide import _core
@@ -164,7 +164,7 @@ def main() -> None:
     def ns(key: Key, of: dict[Key, list[float]]) -> float:
         return float(np.median(of[key])) / key[1] * 1e9
 
-    print(f"CPU: {cpu_model()}; numpy {np.__version__}; one thread (num_threads=1)")
+    print(f"{describe()}; numpy {np.__version__}; one thread (num_threads=1)")
     print(f"command: python {shlex.join(sys.argv)}")
     print(
         f"medians of {args.repeats} interleaved rounds; ns/pair is process CPU time (on shared "

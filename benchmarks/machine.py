@@ -1,5 +1,6 @@
-"""The machine a benchmark ran on: every figure belongs to a CPU (shared by the scripts here,
-which run as ``python benchmarks/NAME.py`` and so find this module beside them)."""
+"""The machine a benchmark ran on: every figure belongs to a CPU and a SIMD level (shared by
+the scripts here, which run as ``python benchmarks/NAME.py`` and so find this module beside
+them)."""
 
 from __future__ import annotations
 
@@ -16,3 +17,11 @@ def cpu_model() -> str:
     except OSError:
         pass
     return platform.processor() or platform.machine()
+
+
+def describe() -> str:
+    """The CPU's model and the SIMD level ballcollide's batches run at (``BALLCOLLIDE_SIMD``
+    forces one), as the benchmarks print them."""
+    import ballcollide as bc
+
+    return f"CPU: {cpu_model()}; SIMD level: {bc.simd_level()}"

@@ -19,6 +19,8 @@ use std::process::ExitCode;
 
 use ballcollide::batch::{Pairs, PerPair, collision_times};
 
+#[path = "../tests/support/machine.rs"]
+mod machine;
 #[path = "../tests/support/thread_cpu_time.rs"]
 mod thread_cpu_time;
 #[path = "../tests/support/timing_example.rs"]
@@ -78,5 +80,6 @@ fn run() -> Result<String, String> {
 }
 
 fn main() -> ExitCode {
+    machine::print_machine();
     report("kernel_timing", run())
 }

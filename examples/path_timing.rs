@@ -21,6 +21,8 @@ use std::process::ExitCode;
 
 use ballcollide::batch::{PathPairs, PathRows, PerPair, path_collision_times};
 
+#[path = "../tests/support/machine.rs"]
+mod machine;
 #[path = "../tests/support/thread_cpu_time.rs"]
 mod thread_cpu_time;
 #[path = "../tests/support/timing_example.rs"]
@@ -103,5 +105,6 @@ fn run() -> Result<String, String> {
 }
 
 fn main() -> ExitCode {
+    machine::print_machine();
     report("path_timing", run())
 }

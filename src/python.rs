@@ -266,6 +266,21 @@ fn _last_kernel_seconds() -> f64 {
     LAST_KERNEL_SECONDS.with(Cell::get)
 }
 
+/// The SIMD level the batches run at: ``"avx512"``, ``"avx2"``, ``"neon"`` or
+/// ``"portable"``, the widest this CPU has unless the environment variable
+/// ``BALLCOLLIDE_SIMD`` names another (read once, at the first batch). Every level gives the
+/// same answers, bit for bit; only the speed differs. Benchmarks print it beside the CPU.
+///
+/// Examples
+/// --------
+/// >>> import ballcollide as bc
+/// >>> bc.simd_level() in ("avx512", "avx2", "neon", "portable")
+/// True
+#[pyfunction]
+fn simd_level() -> &'static str {
+    crate::simd::current().name()
+}
+
 /// The time at which two balls first touch, or ``inf`` if they never do.
 ///
 /// Parameters
@@ -762,6 +777,7 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(earliest_collision, m)?,
         wrap_pyfunction!(first_contacts, m)?,
         wrap_pyfunction!(schedule::simulate, m)?,
+        wrap_pyfunction!(simd_level, m)?,
     ];
     m.add_class::<schedule::CollisionSchedule>()?;
     m.add("Event", schedule::event_type(py)?)?;

@@ -47,6 +47,7 @@ __all__ = [
     "pool_table",
     "positions_at",
     "real_roots",
+    "simd_level",
     "simulate",
 ]
 
@@ -153,6 +154,7 @@ def path_geometry_times(
     out: tuple[_F64Array, _I8Array, _I64Array] | list[Any] | None = None,
 ) -> tuple[_F64Array, _I8Array, _I64Array]: ...
 def real_roots(coeffs: npt.ArrayLike) -> _F64Array: ...
+def simd_level() -> str: ...
 def pairwise_collision_times(
     pos: npt.ArrayLike,
     vel: npt.ArrayLike,

@@ -338,11 +338,18 @@ CASES = [
 ]
 
 
+def takes_nothing(f: Any) -> bool:
+    """Whether `f` is a function without parameters (`simd_level`): nothing to walk."""
+    return inspect.isbuiltin(f) and not inspect.signature(f).parameters
+
+
 def test_every_public_call_and_argument_is_walked() -> None:
     public = {
         name
         for name in bc.__all__
-        if callable(getattr(bc, name)) and name not in {"InputError", "Event", "Simulation"}
+        if callable(getattr(bc, name))
+        and name not in {"InputError", "Event", "Simulation"}
+        and not takes_nothing(getattr(bc, name))
     }
     methods = {
         f"CollisionSchedule.{name}"
