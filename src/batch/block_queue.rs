@@ -50,7 +50,11 @@ impl<T: Copy + Default> BlockQueue<T> {
     /// The first block if one is full, taken out.
     #[inline(always)]
     pub(super) fn take_block(&mut self) -> Option<[T; LANES]> {
-        (self.len >= LANES).then(|| self.take().0)
+        if self.len >= LANES {
+            Some(self.take().0)
+        } else {
+            None
+        }
     }
 
     /// The first `min(len, LANES)` items, taken out, in a block (defaults past them), and
@@ -60,7 +64,7 @@ impl<T: Copy + Default> BlockQueue<T> {
         let len = self.len.min(LANES);
         let mut block = [T::default(); LANES];
         block[..len].copy_from_slice(&self.items[..len]);
-        self.items.copy_within(len.., 0);
+        self.items.copy_within(len..self.len, 0);
         self.len -= len;
         (block, len)
     }

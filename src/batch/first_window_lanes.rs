@@ -2,7 +2,7 @@
 //! settled eight at a time on their first open eighth.
 //!
 //! The pairs the screens ([`path_lanes`](super::path_lanes)) take whole and cannot prove
-//! apart are held back ([`HeldPairs`]) until a block of them is full; each one's first
+//! apart are held back (a [`BlockQueue`](super::block_queue::BlockQueue)) until a block of them is full; each one's first
 //! window is then formed as the walk over windows would form it
 //! ([`PathFirstWindow`]), and all eight are settled at once, by the branch-free entry on
 //! the window's first open eighth ([`PathFirstWindow::eighth_contact`]), in one loop that the

@@ -159,7 +159,11 @@ fn finite<S: Simd>(s: S, x: S::V) -> Mask {
 /// The per-pair values of pairs `first..first + LANES`, a lane each.
 #[inline(always)]
 fn lanes_of<S: Simd>(s: S, values: PerPair<'_>, first: usize) -> S::V {
-    s.load(std::array::from_fn(|l| values.get(first + l)))
+    let mut lanes = [0.0; LANES];
+    for (l, lane) in lanes.iter_mut().enumerate() {
+        *lane = values.get(first + l);
+    }
+    s.load(lanes)
 }
 
 /// How many pairs ahead of the block its rows are asked for in the cache: 128 pairs, 1 to
@@ -213,18 +217,31 @@ fn lane_rows<S: Simd, const D: usize, const K: usize>(
     }
     let block = first * K..(first + LANES) * K;
     let start = transposed(s, &side.start[block.clone()], K);
+    let mut starts = [s.zero(); K];
+    starts.copy_from_slice(&start[..K]);
     LaneRows {
-        s: std::array::from_fn(|k| start[k]),
-        p: by_row(transposed(s, side.pos[block.clone()].as_flattened(), K * D)),
-        v: by_row(transposed(s, side.vel[block.clone()].as_flattened(), K * D)),
-        a: by_row(transposed(s, side.acc[block].as_flattened(), K * D)),
+        s: starts,
+        p: by_row(
+            s,
+            transposed(s, side.pos[block.clone()].as_flattened(), K * D),
+        ),
+        v: by_row(
+            s,
+            transposed(s, side.vel[block.clone()].as_flattened(), K * D),
+        ),
+        a: by_row(s, transposed(s, side.acc[block].as_flattened(), K * D)),
     }
 }
 
-/// A block's `K` rows of `D` values, from their values in the order of the rows.
+/// A block's `K` rows of `D` values, from their values in the order of the rows. (Loops,
+/// not `from_fn`: no closure in lane code.)
 #[inline(always)]
-fn by_row<V: Copy, const D: usize, const K: usize>(flat: [V; MOST]) -> [[V; D]; K] {
-    std::array::from_fn(|k| std::array::from_fn(|i| flat[k * D + i]))
+fn by_row<S: Simd, const D: usize, const K: usize>(s: S, flat: [S::V; MOST]) -> [[S::V; D]; K] {
+    let mut rows = [[s.zero(); D]; K];
+    for (k, row) in rows.iter_mut().enumerate() {
+        row.copy_from_slice(&flat[k * D..(k + 1) * D]);
+    }
+    rows
 }
 
 /// [`Simd::transposed`] for a width known only as `K` or `K·D` of a caller's constants (which

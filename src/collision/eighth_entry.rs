@@ -67,7 +67,7 @@ pub(crate) fn eighth_entry<const D: usize>(
         (hi, false)
     } else {
         fixed_newton(
-            |u| (gap.half_slope(u), gap.half_curvature(u)),
+            &HalfSlope(gap),
             (lo, hi),
             slope_lo,
             secant((lo, hi), (slope_lo, slope_hi)),
@@ -101,7 +101,7 @@ pub(crate) fn eighth_entry<const D: usize>(
         (lo, false)
     } else {
         fixed_newton(
-            |u| (gap.value(u), 2.0 * gap.half_slope(u)),
+            &Value(gap),
             (lo, right),
             g_lo,
             start,
@@ -175,11 +175,106 @@ fn secant((lo, hi): (f64, f64), (f_lo, f_hi): (f64, f64)) -> f64 {
     lo + (hi - lo) * (f_lo / (f_lo - f_hi))
 }
 
-/// Up to six Newton steps on `f` (which returns its value and derivative) from `start`, inside
-/// `(lo, hi)` where `f` changes sign (`f_lo` at `lo`), until converged; a step that would
-/// leave the shrinking bracket is replaced by bisection. Without a branch unless `one_pair`
-/// (which stops at convergence, where lanes take the remaining steps unchanged: the same
-/// result).
+/// A function of the window's time and its derivative, for [`fixed_newton`]. A trait with
+/// `#[inline(always)]` implementations rather than a closure: a closure the compiler leaves
+/// out of line is compiled without the batch level's features (`simd::dispatch`), and each
+/// `mul_add` in it becomes a call.
+trait WithDerivative {
+    /// The value at `u` and the derivative there.
+    fn at(&self, u: f64) -> (f64, f64);
+}
+
+/// The gap's half slope (its minimum is where it is 0), with its derivative.
+struct HalfSlope<'a, const D: usize>(&'a Gap<D>);
+
+impl<const D: usize> WithDerivative for HalfSlope<'_, D> {
+    #[inline(always)]
+    fn at(&self, u: f64) -> (f64, f64) {
+        (self.0.half_slope(u), self.0.half_curvature(u))
+    }
+}
+
+/// The gap's value, with its derivative.
+struct Value<'a, const D: usize>(&'a Gap<D>);
+
+impl<const D: usize> WithDerivative for Value<'_, D> {
+    #[inline(always)]
+    fn at(&self, u: f64) -> (f64, f64) {
+        (self.0.value(u), 2.0 * self.0.half_slope(u))
+    }
+}
+
+/// The state of [`fixed_newton`]'s steps.
+#[derive(Clone, Copy)]
+struct NewtonState {
+    /// The bracket.
+    lo: f64,
+    hi: f64,
+    /// The iterate.
+    x: f64,
+    /// The best iterate, `|f|` and Newton's correction there.
+    best: f64,
+    best_value: f64,
+    best_step: f64,
+    /// Whether the last step improved on the best.
+    improved: bool,
+}
+
+impl NewtonState {
+    /// Converged: the correction at the best iterate is within `ulps` ulps.
+    #[inline(always)]
+    fn within(&self, ulps: f64) -> bool {
+        (self.best_value == 0.0) | (self.best_step <= ulps * f64::EPSILON * self.best)
+    }
+
+    /// Stalled: within rounding noise of zero, a step failed to lower |f| (as the search's
+    /// polishing stops); from there on, steps only jitter in the noise.
+    #[inline(always)]
+    fn stalled(&self, noise: f64) -> bool {
+        !self.improved & (self.best_value <= noise)
+    }
+
+    /// Steps stop where the next could not move the iterate, or where they stall.
+    #[inline(always)]
+    fn converged(&self, noise: f64) -> bool {
+        self.within(0.5) | self.stalled(noise)
+    }
+
+    /// One step on `f` (`lo_positive`: the sign of `f` at the bracket's low end); once
+    /// converged, the state stays (one pair stops there, lanes step on unchanged).
+    #[inline(always)]
+    fn step(self, f: &impl WithDerivative, lo_positive: bool, noise: f64) -> Self {
+        let x = self.x;
+        let (fx, dfx) = f.at(x);
+        // Which end `x` replaces: the one where `f` has its sign.
+        let like_lo = (fx > 0.0) == lo_positive;
+        let lo = if like_lo & (fx != 0.0) { x } else { self.lo };
+        let hi = if !like_lo & (fx != 0.0) { x } else { self.hi };
+        let correction = fx / dfx;
+        let improved = fx.abs() < self.best_value;
+        let newton = x - correction;
+        let inside = (newton > lo) & (newton < hi);
+        let next = Self {
+            lo,
+            hi,
+            x: if inside { newton } else { 0.5 * (lo + hi) },
+            best: if improved { x } else { self.best },
+            best_value: if improved { fx.abs() } else { self.best_value },
+            best_step: if improved {
+                correction.abs()
+            } else {
+                self.best_step
+            },
+            improved,
+        };
+        if self.converged(noise) { self } else { next }
+    }
+}
+
+/// Up to six Newton steps on `f` from `start`, inside `(lo, hi)` where `f` changes sign
+/// (`f_lo` at `lo`), until converged; a step that would leave the shrinking bracket is
+/// replaced by bisection. Without a branch unless `one_pair` (which stops at convergence,
+/// where lanes take the remaining steps unchanged: the same result).
 ///
 /// Returns the iterate where `|f|` was smallest, and whether it is the root to float
 /// accuracy: Newton's correction there is within two ulps, or the steps stopped lowering
@@ -187,7 +282,7 @@ fn secant((lo, hi): (f64, f64), (f_lo, f_hi): (f64, f64)) -> f64 {
 /// as the scalar search's polishing does.
 #[inline(always)]
 fn fixed_newton(
-    f: impl Fn(f64) -> (f64, f64),
+    f: &impl WithDerivative,
     (lo, hi): (f64, f64),
     f_lo: f64,
     start: f64,
@@ -195,55 +290,27 @@ fn fixed_newton(
     one_pair: bool,
 ) -> (f64, bool) {
     let lo_positive = f_lo > 0.0;
-    // (bracket, iterate, best iterate, |f| and Newton correction there, whether the last
-    // step improved on it)
-    type State = ((f64, f64), f64, f64, f64, f64, bool);
-    // Converged: the correction at the best iterate is within `ulps` ulps.
-    let within = |&(_, _, best, best_value, best_step, _): &State, ulps: f64| {
-        (best_value == 0.0) | (best_step <= ulps * f64::EPSILON * best)
+    let mut state = NewtonState {
+        lo,
+        hi,
+        x: start,
+        best: start,
+        best_value: f64::INFINITY,
+        best_step: f64::INFINITY,
+        improved: true,
     };
-    // Stalled: within rounding noise of zero, a step failed to lower |f| (as the search's
-    // polishing stops); from there on, steps only jitter in the noise.
-    let stalled = |&(_, _, _, best_value, _, improved): &State| !improved & (best_value <= noise);
-    // Steps stop where the next could not move the iterate, or where they stall.
-    let converged = |state: &State| within(state, 0.5) | stalled(state);
-    let step = |state: State| -> State {
-        let ((lo, hi), x, best, best_value, best_step, _) = state;
-        let (fx, dfx) = f(x);
-        // Which end `x` replaces: the one where `f` has its sign.
-        let like_lo = (fx > 0.0) == lo_positive;
-        let lo = if like_lo & (fx != 0.0) { x } else { lo };
-        let hi = if !like_lo & (fx != 0.0) { x } else { hi };
-        let correction = fx / dfx;
-        let improved = fx.abs() < best_value;
-        let newton = x - correction;
-        let inside = (newton > lo) & (newton < hi);
-        let next = (
-            (lo, hi),
-            if inside { newton } else { 0.5 * (lo + hi) },
-            if improved { x } else { best },
-            if improved { fx.abs() } else { best_value },
-            if improved {
-                correction.abs()
-            } else {
-                best_step
-            },
-            improved,
-        );
-        // Once converged, the state stays: one pair stops there, lanes step on unchanged.
-        if converged(&state) { state } else { next }
-    };
-    let mut state = ((lo, hi), start, start, f64::INFINITY, f64::INFINITY, true);
     if one_pair {
         for _ in 0..6 {
-            if converged(&state) {
+            if state.converged(noise) {
                 break;
             }
-            state = step(state);
+            state = state.step(f, lo_positive, noise);
         }
     } else {
         // Written out rather than looped, so that a batch's lane loop around it vectorises.
-        state = step(step(step(step(step(step(state))))));
+        let (f, s, n) = (f, lo_positive, noise);
+        state = state.step(f, s, n).step(f, s, n).step(f, s, n);
+        state = state.step(f, s, n).step(f, s, n).step(f, s, n);
     }
-    (state.2, within(&state, 2.0) | stalled(&state))
+    (state.best, state.within(2.0) | state.stalled(noise))
 }

@@ -141,7 +141,10 @@ impl Simd for Avx512 {
         for (c, vector) in out.iter_mut().enumerate().take(W) {
             // Lane `l`'s value is value `l·W + c` of the block: in the pair of loaded vectors
             // `g = (l·W + c) / 16`, at `(l·W + c) % 16` of the two.
-            let index: [i64; LANES] = std::array::from_fn(|l| ((l * W + c) % (2 * LANES)) as i64);
+            let mut index = [0i64; LANES];
+            for (l, at) in index.iter_mut().enumerate() {
+                *at = ((l * W + c) % (2 * LANES)) as i64;
+            }
             let index = unsafe { _mm512_loadu_epi64(index.as_ptr()) };
             for g in 0..W.div_ceil(2) {
                 let mut mask: __mmask8 = 0;

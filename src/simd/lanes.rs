@@ -105,13 +105,15 @@ pub(crate) trait Simd: Copy {
 pub(super) fn transposed_by_reads<S: Simd, const W: usize>(s: S, values: &[f64]) -> [S::V; MOST] {
     const { assert!(W >= 1 && W <= MOST, "records of 1 to MOST values") };
     let values = &values[..LANES * W];
-    std::array::from_fn(|c| {
-        if c < W {
-            s.load(std::array::from_fn(|l| values[l * W + c]))
-        } else {
-            s.zero()
+    let mut out = [s.zero(); MOST];
+    for (c, vector) in out.iter_mut().enumerate().take(W) {
+        let mut lanes = [0.0; LANES];
+        for (l, lane) in lanes.iter_mut().enumerate() {
+            *lane = values[l * W + c];
         }
-    })
+        *vector = s.load(lanes);
+    }
+    out
 }
 
 #[cfg(test)]
@@ -157,18 +159,23 @@ mod tests {
                 s.transposed::<6>(records),
                 s.transposed::<9>(records),
             ];
-            // Which NaN an operation on two NaNs returns is not fixed (the compiler may swap
-            // the operands of `+` and `·`): a NaN counts as any NaN, everything else by bits.
-            let bits = |x: f64| {
-                if x.is_nan() {
-                    f64::NAN.to_bits()
-                } else {
-                    x.to_bits()
-                }
-            };
+            // Which NaN an arithmetic operation on two NaNs returns is not fixed (the compiler
+            // may swap the operands of `+` and `·`): there a NaN counts as any NaN. The
+            // selections (min, max, abs, blend, the loads and the transposition) by bits.
+            const ARITHMETIC: [usize; 5] = [2, 3, 4, 5, 9];
             let mut out = Vec::new();
-            for v in vectors.into_iter().chain(transposed.into_iter().flatten()) {
-                out.extend(s.store(v).map(bits));
+            for (k, v) in vectors.into_iter().enumerate() {
+                for x in s.store(v) {
+                    let any_nan = ARITHMETIC.contains(&k) && x.is_nan();
+                    out.push(if any_nan {
+                        f64::NAN.to_bits()
+                    } else {
+                        x.to_bits()
+                    });
+                }
+            }
+            for v in transposed.into_iter().flatten() {
+                out.extend(s.store(v).map(f64::to_bits));
             }
             out.extend(masks.map(u64::from));
             out
