@@ -1,0 +1,385 @@
+//! `billiards::simulate_shot`, the engine's event loop, against pooltool 0.6.0 and its own
+//! invariants.
+//!
+//! - `tests/data/shot_cases.txt` (written by `tools/shot_reference.py` with pooltool's own
+//!   `simulate` on its default table): each shot replayed gives the same events (type and
+//!   agents, in the same order) at times within `1e-6 s` of pooltool's, and the balls end in
+//!   the same motion state within `1e-6 m` of pooltool's positions;
+//! - on random shots on that table (one to four balls, any stroke): the events come in time
+//!   order, no two balls overlap beyond rounding at the events or between them, every ball
+//!   ends at rest or pocketed, and the balls' kinetic energy never grows from event to event.
+
+#[path = "support/rng.rs"]
+mod rng;
+
+use ballcollide::billiards::{
+    BallParams, BallState, BilliardTable, CircularCushion, Cue, CueSpecs, LinearCushion,
+    MotionState, Pocket, Shot, ShotEventKind, ShotOptions, evolve, side_of_direction,
+    simulate_shot,
+};
+use nalgebra::Vector2;
+use rng::Rng;
+
+/// The data file's table, ball parameters and shots.
+struct Cases {
+    params: BallParams,
+    table: BilliardTable,
+    shots: Vec<Case>,
+}
+
+/// One of pooltool's shots: the balls' spots, the strike of ball 0, and what pooltool made
+/// of it.
+struct Case {
+    name: String,
+    spots: Vec<Vector2<f64>>,
+    cue: Cue,
+    /// Per event: type, time, agents (`b0`, `l3`, `cue`, …).
+    events: Vec<(String, f64, Vec<String>)>,
+    /// Per ball: motion state code and position at the end.
+    finals: Vec<(i64, Vector2<f64>)>,
+}
+
+fn numbers(fields: &[&str]) -> Vec<f64> {
+    fields
+        .iter()
+        .map(|x| x.parse().expect("a number"))
+        .collect()
+}
+
+fn read_cases() -> Cases {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/shot_cases.txt"
+    ))
+    .expect("tests/data/shot_cases.txt");
+    let mut params = BallParams::default();
+    let mut table = BilliardTable::default();
+    let mut shots: Vec<Case> = Vec::new();
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        let fields: Vec<&str> = line.split_whitespace().collect();
+        match fields[0] {
+            "params" => {
+                let x = numbers(&fields[1..]);
+                params = BallParams {
+                    mass: x[0],
+                    radius: x[1],
+                    u_s: x[2],
+                    u_r: x[3],
+                    u_sp_proportionality: x[4],
+                    u_b: x[5],
+                    e_b: x[6],
+                    e_c: x[7],
+                    f_c: x[8],
+                    g: x[9],
+                };
+            }
+            "linear" => {
+                let x = numbers(&fields[2..7]);
+                let cushion =
+                    LinearCushion::new(Vector2::new(x[0], x[1]), Vector2::new(x[2], x[3]), x[4]);
+                let direction = fields[7].parse().expect("a direction");
+                let side = side_of_direction(&cushion, direction).expect("a direction");
+                table.linear.push((cushion, side));
+            }
+            "circular" => {
+                let x = numbers(&fields[2..]);
+                let cushion = CircularCushion::new(Vector2::new(x[0], x[1]), x[2], x[3]);
+                table.circular.push(cushion);
+            }
+            "pocket" => {
+                let x = numbers(&fields[2..]);
+                table
+                    .pockets
+                    .push(Pocket::new(Vector2::new(x[0], x[1]), x[2], x[3]));
+            }
+            "shot" => shots.push(Case {
+                name: fields[1].to_string(),
+                spots: Vec::new(),
+                cue: Cue::default(),
+                events: Vec::new(),
+                finals: Vec::new(),
+            }),
+            "ball" => {
+                let x = numbers(&fields[2..]);
+                let shot = shots.last_mut().expect("a shot");
+                shot.spots.push(Vector2::new(x[0], x[1]));
+            }
+            "cue" => {
+                let x = numbers(&fields[1..]);
+                shots.last_mut().expect("a shot").cue = Cue {
+                    v0: x[0],
+                    phi: x[1],
+                    theta: x[2],
+                    a: x[3],
+                    b: x[4],
+                    specs: CueSpecs {
+                        mass: x[5],
+                        end_mass: x[6],
+                        tip_radius: x[7],
+                    },
+                };
+            }
+            "event" => {
+                let time = fields[2].parse().expect("a time");
+                let agents = fields[3..].iter().map(|s| s.to_string()).collect();
+                let shot = shots.last_mut().expect("a shot");
+                shot.events.push((fields[1].to_string(), time, agents));
+            }
+            "final" => {
+                let x = numbers(&fields[3..]);
+                let s = fields[2].parse().expect("a motion state");
+                let shot = shots.last_mut().expect("a shot");
+                shot.finals.push((s, Vector2::new(x[0], x[1])));
+            }
+            "end" => {}
+            other => panic!("unknown line {other}"),
+        }
+    }
+    Cases {
+        params,
+        table,
+        shots,
+    }
+}
+
+/// An event's agents as the data file names them (a collision's two balls in pooltool's
+/// order are compared as a set: see `same_agents`).
+fn agents(kind: ShotEventKind, balls: &[usize]) -> Vec<String> {
+    let mut names: Vec<String> = balls.iter().map(|b| format!("b{b}")).collect();
+    match kind {
+        ShotEventKind::Stick => names.insert(0, "cue".to_string()),
+        ShotEventKind::LinearCushion(k) => names.push(format!("l{k}")),
+        ShotEventKind::CircularCushion(k) => names.push(format!("c{k}")),
+        ShotEventKind::Pocket(k) => names.push(format!("p{k}")),
+        ShotEventKind::Transition(_) | ShotEventKind::BallBall => {}
+    }
+    names
+}
+
+fn same_agents(a: &[String], b: &[String]) -> bool {
+    let (mut a, mut b) = (a.to_vec(), b.to_vec());
+    a.sort();
+    b.sort();
+    a == b
+}
+
+fn play(cases: &Cases, case: &Case) -> Shot {
+    let balls: Vec<BallState> = case.spots.iter().map(|&p| BallState::at_rest(p)).collect();
+    let params = vec![cases.params; balls.len()];
+    let options = ShotOptions {
+        strike: Some((0, case.cue)),
+        ..Default::default()
+    };
+    simulate_shot(&cases.table, &balls, &params, &options).expect("a shot")
+}
+
+/// How a replayed shot compares with pooltool's: `None` if the same, else what differs first.
+fn compare(cases: &Cases, case: &Case, worst: &mut f64) -> Option<String> {
+    let shot = play(cases, case);
+    for (k, (want, got)) in case.events.iter().zip(&shot.events).enumerate() {
+        let names = agents(got.kind, &got.balls);
+        if want.0 != got.kind.name() || !same_agents(&want.2, &names) {
+            return Some(format!(
+                "event {k}: pooltool {} {:?} at {}, engine {} {:?} at {}",
+                want.0,
+                want.2,
+                want.1,
+                got.kind.name(),
+                names,
+                got.time
+            ));
+        }
+        let off = (want.1 - got.time).abs();
+        *worst = worst.max(off);
+        if off > 1e-6 {
+            return Some(format!(
+                "event {k} ({}): time {} against pooltool's {} ({off:.1e} s)",
+                want.0, got.time, want.1
+            ));
+        }
+    }
+    if case.events.len() != shot.events.len() {
+        return Some(format!(
+            "{} events against pooltool's {}",
+            shot.events.len(),
+            case.events.len()
+        ));
+    }
+    for (k, ((s, at), state)) in case.finals.iter().zip(&shot.states).enumerate() {
+        let off = (state.position - at).norm();
+        if state.motion.code() != *s || off > 1e-6 {
+            return Some(format!(
+                "ball {k} ends {:?} at {:?}, pooltool's in state {s} at {:?} ({off:.1e} m)",
+                state.motion, state.position, at
+            ));
+        }
+    }
+    None
+}
+
+#[test]
+fn shots_give_pooltools_events() {
+    let cases = read_cases();
+    assert!(cases.shots.len() >= 10);
+    let mut worst = 0.0f64;
+    let mut differ = Vec::new();
+    let events: usize = cases.shots.iter().map(|c| c.events.len()).sum();
+    for case in &cases.shots {
+        if let Some(why) = compare(&cases, case, &mut worst) {
+            differ.push(format!("{}: {why}", case.name));
+        }
+    }
+    println!(
+        "{} of {} shots ({events} events) as pooltool's; worst time {worst:.2e} s",
+        cases.shots.len() - differ.len(),
+        cases.shots.len()
+    );
+    assert!(
+        differ.is_empty(),
+        "shots that differ:\n{}",
+        differ.join("\n")
+    );
+}
+
+/// The kinetic energy of a ball, translation and rotation (a solid sphere, `I = 2/5·m·R²`).
+fn energy(state: &BallState, params: &BallParams) -> f64 {
+    let inertia = 0.4 * params.mass * params.radius * params.radius;
+    0.5 * params.mass * state.velocity.norm_squared()
+        + 0.5 * inertia * state.angular_velocity.norm_squared()
+}
+
+/// A random shot on the data file's table: one to four balls at free spots, the first struck
+/// anywhere at up to 6 m/s, with any spin on its face and the cue up to 30° above level.
+fn random_shot(rng: &mut Rng, cases: &Cases) -> (Vec<BallState>, Cue) {
+    let r = cases.params.radius;
+    let count = 1 + rng.below(4) as usize;
+    let mut spots: Vec<Vector2<f64>> = Vec::new();
+    while spots.len() < count {
+        let p = Vector2::new(rng.uniform(0.1, 0.89), rng.uniform(0.1, 1.88));
+        if spots.iter().all(|q| (p - q).norm() > 2.0 * r + 1e-3) {
+            spots.push(p);
+        }
+    }
+    let (a, b) = loop {
+        let (a, b) = (rng.uniform(-0.6, 0.6), rng.uniform(-0.6, 0.6));
+        if a * a + b * b < 0.5 {
+            break (a, b);
+        }
+    };
+    let cue = Cue {
+        v0: rng.uniform(0.2, 6.0),
+        phi: rng.uniform(0.0, 360.0),
+        theta: rng.uniform(0.0, 30.0),
+        a,
+        b,
+        ..Cue::default()
+    };
+    (spots.into_iter().map(BallState::at_rest).collect(), cue)
+}
+
+/// The invariants of one shot, from its log alone: each ball's state is followed from event to
+/// event by `evolve`.
+fn check_invariants(shot: &Shot, start: &[BallState], params: &BallParams, what: &str) {
+    let r = params.radius;
+    // Per ball: its state as of its last event, and that event's time.
+    let mut known: Vec<(BallState, f64)> = start.iter().map(|s| (*s, 0.0)).collect();
+    let at = |known: &[(BallState, f64)], t: f64| -> Vec<BallState> {
+        known
+            .iter()
+            .map(|(s, since)| evolve(s, params, t - since))
+            .collect()
+    };
+    let overlap_free = |states: &[BallState], when: &str| {
+        for i in 0..states.len() {
+            for j in i + 1..states.len() {
+                let pocketed =
+                    [states[i].motion, states[j].motion].contains(&MotionState::Pocketed);
+                let distance = (states[i].position - states[j].position).norm();
+                assert!(
+                    pocketed || distance > 2.0 * r - 1e-9,
+                    "{what}: balls {i} and {j} overlap {} m {when}",
+                    2.0 * r - distance
+                );
+            }
+        }
+    };
+    let mut last_time = 0.0;
+    let mut last_energy = f64::INFINITY;
+    for (k, event) in shot.events.iter().enumerate() {
+        assert!(
+            event.time >= last_time,
+            "{what}: event {k} before the one before"
+        );
+        // Between the events: a few times in the gap.
+        for m in 1..4 {
+            let t = last_time + (event.time - last_time) * f64::from(m) / 4.0;
+            overlap_free(&at(&known, t), &format!("before event {k}"));
+        }
+        for (&b, state) in event.balls.iter().zip(&event.states) {
+            known[b] = (*state, event.time);
+        }
+        let now = at(&known, event.time);
+        overlap_free(&now, &format!("after event {k}"));
+        let total: f64 = now.iter().map(|s| energy(s, params)).sum();
+        assert!(
+            total <= last_energy * (1.0 + 1e-12),
+            "{what}: the energy grows at event {k} ({:?}): {last_energy} to {total}",
+            event.kind
+        );
+        last_energy = total;
+        last_time = event.time;
+    }
+    assert!(!shot.stopped);
+    for (i, state) in shot.states.iter().enumerate() {
+        assert!(
+            matches!(
+                state.motion,
+                MotionState::Stationary | MotionState::Pocketed
+            ),
+            "{what}: ball {i} ends {:?}",
+            state.motion
+        );
+        assert_eq!(
+            state.velocity,
+            Vector2::zeros(),
+            "{what}: ball {i} moves at the end"
+        );
+    }
+}
+
+#[test]
+fn pooltools_shots_keep_the_invariants() {
+    let cases = read_cases();
+    for case in &cases.shots {
+        let shot = play(&cases, case);
+        let start: Vec<BallState> = case.spots.iter().map(|&p| BallState::at_rest(p)).collect();
+        check_invariants(&shot, &start, &cases.params, &case.name);
+    }
+}
+
+#[test]
+fn random_shots_keep_the_invariants() {
+    let cases = read_cases();
+    let mut rng = Rng(0x5eed_0040);
+    let (mut events, mut pocketed) = (0, 0);
+    for n in 0..200 {
+        let (balls, cue) = random_shot(&mut rng, &cases);
+        let params = vec![cases.params; balls.len()];
+        let options = ShotOptions {
+            strike: Some((0, cue)),
+            ..Default::default()
+        };
+        let what = format!("shot {n} ({cue:?}, {balls:?})");
+        let shot = simulate_shot(&cases.table, &balls, &params, &options)
+            .unwrap_or_else(|e| panic!("{what}: {e}"));
+        check_invariants(&shot, &balls, &cases.params, &what);
+        events += shot.events.len();
+        pocketed += shot
+            .states
+            .iter()
+            .filter(|s| s.motion == MotionState::Pocketed)
+            .count();
+    }
+    println!("200 random shots: {events} events, {pocketed} balls pocketed");
+    assert!(events > 1000 && pocketed > 0);
+}

@@ -1,0 +1,164 @@
+"""pooltool 0.6.0's event sequences of simple seeded shots, for ``ballcollide.billiards``' engine.
+
+This script plays seeded shots on pooltool's default table (``Table.default()``, the 7-foot
+pocket table) with pooltool's own ``simulate`` and default physics, and writes each shot's
+inputs and event sequence to ``tests/data/shot_cases.txt``, which ``tests/billiards_shots.rs``
+reads and replays with ``simulate_shot``.  It does not import ballcollide.  It needs pooltool
+(run it in ``.venv-pooltool``, made by ``scripts/install-pooltool``).
+
+Shots, by kind (each from its own seed):
+
+* ``object``: the cue ball struck at one object ball, cut by up to 25 degrees, with some
+  side, top or back spin;
+* ``rail``: the cue ball alone, struck at a rail;
+* ``pocket``: the cue ball alone, struck at a pocket's centre;
+* ``two``: the cue ball struck at the first of two object balls.
+
+Every number is Python's ``repr`` of a float64 (it reads back to the same float).  Line
+formats, one shot after the table:
+
+* ``params m R u_s u_r u_sp_proportionality u_b e_b e_c f_c g`` (every ball's);
+* ``linear ID p1x p1y p2x p2y height direction`` (``direction`` pooltool's
+  ``CushionDirection``), ``circular ID cx cy radius height``, ``pocket ID cx cy radius depth``:
+  the table, each kind's objects numbered in this order from 0;
+* ``shot NAME`` then ``ball ID x y`` per ball (numbered from 0, the cue ball first),
+  ``cue v0 phi theta a b M end_mass tip_radius`` (the strike of ball 0), ``event TYPE TIME
+  AGENT...`` per event in pooltool's order (without the null events at both ends; agents
+  ``b<k>`` a ball, ``l<k>``, ``c<k>``, ``p<k>`` a straight or rounded cushion or a pocket,
+  ``cue`` the cue), ``final k s x y`` per ball (its motion state and position at the end),
+  then ``end``.
+
+Usage::
+
+    .venv-pooltool/bin/python tools/shot_reference.py            # the whole file
+    .venv-pooltool/bin/python tools/shot_reference.py --count 2  # 2 shots of each kind
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+
+import numpy as np
+import pooltool as pt
+
+OUT = Path(__file__).resolve().parent.parent / "tests" / "data" / "shot_cases.txt"
+KINDS = ("object", "rail", "pocket", "two")
+
+
+def fmt(*xs: float) -> str:
+    return " ".join(repr(float(x)) for x in xs)
+
+
+def spin(rng: np.random.Generator) -> tuple[float, float]:
+    """A contact point well inside the ball's face."""
+    return float(rng.uniform(-0.4, 0.4)), float(rng.uniform(-0.5, 0.5))
+
+
+def free_spot(rng: np.random.Generator, table, taken: list[tuple[float, float]], R: float):
+    """A spot at least 0.15 m from the rails and 3 R from every ball in ``taken``."""
+    while True:
+        x = float(rng.uniform(0.15, table.w - 0.15))
+        y = float(rng.uniform(0.15, table.l - 0.15))
+        if all(math.hypot(x - a, y - b) > 3 * R for a, b in taken):
+            return x, y
+
+
+def towards(a: tuple[float, float], b) -> float:
+    return math.degrees(math.atan2(b[1] - a[1], b[0] - a[0]))
+
+
+def shot_of(kind: str, seed: int, table, R: float):
+    """The balls' spots and the strike (v0, phi, theta, a, b) of one shot."""
+    rng = np.random.default_rng([KINDS.index(kind), seed])
+    cue = free_spot(rng, table, [], R)
+    spots = [cue]
+    a, b = spin(rng)
+    v0 = float(rng.uniform(1.0, 3.0))
+    if kind in ("object", "two"):
+        for _ in range(1 if kind == "object" else 2):
+            spots.append(free_spot(rng, table, spots, R))
+        # A cut: aim at a point beside the object ball's centre (up to sin 25° of 2R).
+        target = spots[1]
+        phi = towards(cue, target)
+        offset = 2 * R * math.sin(math.radians(float(rng.uniform(-25.0, 25.0))))
+        distance = math.hypot(target[0] - cue[0], target[1] - cue[1])
+        phi += math.degrees(math.asin(offset / distance))
+    elif kind == "rail":
+        phi = float(rng.choice([0.0, 90.0, 180.0, 270.0]) + rng.uniform(-30.0, 30.0))
+    else:
+        pocket = list(table.pockets.values())[int(rng.integers(len(table.pockets)))]
+        phi = towards(cue, pocket.center)
+        v0 = float(rng.uniform(0.8, 2.0))
+        a, b = 0.0, float(rng.uniform(0.0, 0.4))
+    return spots, (v0, phi % 360.0, 0.0, a, b)
+
+
+def table_lines(table) -> tuple[list[str], dict[str, str]]:
+    """The table's lines, and each object's agent name by pooltool id."""
+    lines, names = [], {}
+    for k, (key, c) in enumerate(table.cushion_segments.linear.items()):
+        lines.append(
+            f"linear {key} {fmt(c.p1[0], c.p1[1], c.p2[0], c.p2[1], c.height)} {int(c.direction)}"
+        )
+        names[key] = f"l{k}"
+    for k, (key, c) in enumerate(table.cushion_segments.circular.items()):
+        lines.append(f"circular {key} {fmt(c.center[0], c.center[1], c.radius, c.height)}")
+        names[key] = f"c{k}"
+    for k, (key, p) in enumerate(table.pockets.items()):
+        lines.append(f"pocket {key} {fmt(p.center[0], p.center[1], p.radius, p.depth)}")
+        names[key] = f"p{k}"
+    return lines, names
+
+
+def play(name: str, spots, strike, table, names: dict[str, str]) -> list[str]:
+    ids = ["cue"] + [str(k) for k in range(1, len(spots))]
+    balls = {i: pt.Ball.create(i, xy=xy) for i, xy in zip(ids, spots)}
+    system = pt.System(cue=pt.Cue(cue_ball_id="cue"), table=table, balls=balls)
+    v0, phi, theta, a, b = strike
+    system.strike(V0=v0, phi=phi, theta=theta, a=a, b=b)
+    specs = system.cue.specs
+    pt.simulate(system, inplace=True)
+    agents = {**names, **{i: f"b{k}" for k, i in enumerate(ids)}, "cue_stick": "cue"}
+    lines = [f"shot {name}"]
+    lines += [f"ball {i} {fmt(*xy)}" for i, xy in zip(ids, spots)]
+    lines.append(f"cue {fmt(v0, phi, theta, a, b, specs.M, specs.end_mass, specs.tip_radius)}")
+    for event in system.events:
+        kind = event.event_type.value
+        if kind == "none":
+            continue
+        who = " ".join(agents.get(i, i) for i in event.ids)
+        lines.append(f"event {kind} {event.time!r} {who}")
+    for k, i in enumerate(ids):
+        state = system.balls[i].state
+        lines.append(f"final {k} {state.s} {fmt(state.rvw[0, 0], state.rvw[0, 1])}")
+    lines.append("end")
+    return lines
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--count", type=int, default=4, help="shots of each kind")
+    parser.add_argument("--out", type=Path, default=OUT)
+    args = parser.parse_args()
+    table = pt.Table.default()
+    R = pt.BallParams.default().R
+    p = pt.BallParams.default()
+    params = (p.m, p.R, p.u_s, p.u_r, p.u_sp_proportionality, p.u_b, p.e_b, p.e_c, p.f_c, p.g)
+    lines = [
+        "# pooltool 0.6.0's events of seeded shots: written by tools/shot_reference.py",
+        f"params {fmt(*params)}",
+    ]
+    object_lines, names = table_lines(table)
+    lines += object_lines
+    for kind in KINDS:
+        for seed in range(args.count):
+            spots, strike = shot_of(kind, seed, table, R)
+            lines += play(f"{kind}-{seed}", spots, strike, table, names)
+    args.out.write_text("\n".join(lines) + "\n")
+    print(f"wrote {args.out} ({len(lines)} lines)")
+
+
+if __name__ == "__main__":
+    main()
