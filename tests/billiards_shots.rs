@@ -173,8 +173,15 @@ fn play(cases: &Cases, case: &Case) -> Shot {
     simulate_shot(&cases.table, &balls, &params, &options).expect("a shot")
 }
 
+/// How far a replayed shot is from pooltool's: the worst event time and final position.
+#[derive(Clone, Copy, Default)]
+struct Worst {
+    time: f64,
+    position: f64,
+}
+
 /// How a replayed shot compares with pooltool's: `None` if the same, else what differs first.
-fn compare(cases: &Cases, case: &Case, worst: &mut f64) -> Option<String> {
+fn compare(cases: &Cases, case: &Case, worst: &mut Worst) -> Option<String> {
     let shot = play(cases, case);
     for (k, (want, got)) in case.events.iter().zip(&shot.events).enumerate() {
         let names = agents(got.kind, &got.balls);
@@ -190,7 +197,7 @@ fn compare(cases: &Cases, case: &Case, worst: &mut f64) -> Option<String> {
             ));
         }
         let off = (want.1 - got.time).abs();
-        *worst = worst.max(off);
+        worst.time = worst.time.max(off);
         if off > 1e-6 {
             return Some(format!(
                 "event {k} ({}): time {} against pooltool's {} ({off:.1e} s)",
@@ -207,6 +214,7 @@ fn compare(cases: &Cases, case: &Case, worst: &mut f64) -> Option<String> {
     }
     for (k, ((s, at), state)) in case.finals.iter().zip(&shot.states).enumerate() {
         let off = (state.position - at).norm();
+        worst.position = worst.position.max(off);
         if state.motion.code() != *s || off > 1e-6 {
             return Some(format!(
                 "ball {k} ends {:?} at {:?}, pooltool's in state {s} at {:?} ({off:.1e} m)",
@@ -221,19 +229,35 @@ fn compare(cases: &Cases, case: &Case, worst: &mut f64) -> Option<String> {
 fn shots_give_pooltools_events() {
     let cases = read_cases();
     assert!(cases.shots.len() >= 10);
-    let mut worst = 0.0f64;
     let mut differ = Vec::new();
     let events: usize = cases.shots.iter().map(|c| c.events.len()).sum();
+    // Per kind of shot (the name before its seed): shots, events, the worst.
+    let mut kinds: Vec<(String, usize, usize, Worst)> = Vec::new();
     for case in &cases.shots {
-        if let Some(why) = compare(&cases, case, &mut worst) {
+        let kind = case.name.split('-').next().unwrap_or_default().to_string();
+        if kinds.last().is_none_or(|k| k.0 != kind) {
+            kinds.push((kind, 0, 0, Worst::default()));
+        }
+        let Some(row) = kinds.last_mut() else {
+            continue;
+        };
+        row.1 += 1;
+        row.2 += case.events.len();
+        if let Some(why) = compare(&cases, case, &mut row.3) {
             differ.push(format!("{}: {why}", case.name));
         }
     }
     println!(
-        "{} of {} shots ({events} events) as pooltool's; worst time {worst:.2e} s",
+        "{} of {} shots ({events} events) as pooltool's",
         cases.shots.len() - differ.len(),
         cases.shots.len()
     );
+    for (kind, shots, events, worst) in &kinds {
+        println!(
+            "  {kind}: {shots} shots, {events} events, worst time {:.1e} s, final position {:.1e} m",
+            worst.time, worst.position
+        );
+    }
     assert!(
         differ.is_empty(),
         "shots that differ:\n{}",

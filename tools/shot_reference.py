@@ -12,7 +12,10 @@ Shots, by kind (each from its own seed):
   side, top or back spin;
 * ``rail``: the cue ball alone, struck at a rail;
 * ``pocket``: the cue ball alone, struck at a pocket's centre;
-* ``two``: the cue ball struck at the first of two object balls.
+* ``two``: the cue ball struck at the first of two object balls;
+* ``masse``: as ``object``, with the cue raised 5 to 35 degrees (a curved slide);
+* ``break``: pooltool's 9-ball rack (``get_rack``, seeded), the cue ball struck at 5 to
+  8 m/s at the head ball, up to a degree off.
 
 Every number is Python's ``repr`` of a float64 (it reads back to the same float).  Line
 formats, one shot after the table:
@@ -30,21 +33,22 @@ formats, one shot after the table:
 
 Usage::
 
-    .venv-pooltool/bin/python tools/shot_reference.py            # the whole file
-    .venv-pooltool/bin/python tools/shot_reference.py --count 2  # 2 shots of each kind
+    .venv-pooltool/bin/python tools/shot_reference.py            # the whole file (16 of each)
+    .venv-pooltool/bin/python tools/shot_reference.py --count 2  # the first 2 of each kind
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import random
 from pathlib import Path
 
 import numpy as np
 import pooltool as pt
 
 OUT = Path(__file__).resolve().parent.parent / "tests" / "data" / "shot_cases.txt"
-KINDS = ("object", "rail", "pocket", "two")
+KINDS = ("object", "rail", "pocket", "two", "masse", "break")
 
 
 def fmt(*xs: float) -> str:
@@ -69,15 +73,30 @@ def towards(a: tuple[float, float], b) -> float:
     return math.degrees(math.atan2(b[1] - a[1], b[0] - a[0]))
 
 
+def rack(seed: int, table):
+    """pooltool's 9-ball rack, seeded: the ids (the cue ball first) and spots."""
+    random.seed(seed)
+    np.random.seed(seed)  # noqa: NPY002 (get_rack draws from the legacy global generator)
+    balls = pt.get_rack(pt.GameType.NINEBALL, table)
+    ids = ["cue"] + sorted((i for i in balls if i != "cue"), key=int)
+    return ids, [tuple(float(x) for x in balls[i].state.rvw[0, :2]) for i in ids]
+
+
 def shot_of(kind: str, seed: int, table, R: float):
-    """The balls' spots and the strike (v0, phi, theta, a, b) of one shot."""
+    """The balls' ids and spots and the strike (v0, phi, theta, a, b) of one shot."""
     rng = np.random.default_rng([KINDS.index(kind), seed])
+    if kind == "break":
+        ids, spots = rack(seed, table)
+        phi = towards(spots[0], spots[1]) + float(rng.uniform(-1.0, 1.0))
+        v0 = float(rng.uniform(5.0, 8.0))
+        return ids, spots, (v0, phi % 360.0, 0.0, 0.0, float(rng.uniform(-0.3, 0.3)))
     cue = free_spot(rng, table, [], R)
     spots = [cue]
     a, b = spin(rng)
     v0 = float(rng.uniform(1.0, 3.0))
-    if kind in ("object", "two"):
-        for _ in range(1 if kind == "object" else 2):
+    theta = float(rng.uniform(5.0, 35.0)) if kind == "masse" else 0.0
+    if kind in ("object", "two", "masse"):
+        for _ in range(2 if kind == "two" else 1):
             spots.append(free_spot(rng, table, spots, R))
         # A cut: aim at a point beside the object ball's centre (up to sin 25° of 2R).
         target = spots[1]
@@ -92,35 +111,36 @@ def shot_of(kind: str, seed: int, table, R: float):
         phi = towards(cue, pocket.center)
         v0 = float(rng.uniform(0.8, 2.0))
         a, b = 0.0, float(rng.uniform(0.0, 0.4))
-    return spots, (v0, phi % 360.0, 0.0, a, b)
+    ids = ["cue"] + [str(k) for k in range(1, len(spots))]
+    return ids, spots, (v0, phi % 360.0, theta, a, b)
 
 
-def table_lines(table) -> tuple[list[str], dict[str, str]]:
-    """The table's lines, and each object's agent name by pooltool id."""
+def table_lines(table) -> tuple[list[str], dict[tuple[str, str], str]]:
+    """The table's lines, and each object's agent name by its agent type and pooltool id
+    (ids repeat across kinds and balls: the linear cushion "1", the ball "1")."""
     lines, names = [], {}
     for k, (key, c) in enumerate(table.cushion_segments.linear.items()):
         lines.append(
             f"linear {key} {fmt(c.p1[0], c.p1[1], c.p2[0], c.p2[1], c.height)} {int(c.direction)}"
         )
-        names[key] = f"l{k}"
+        names[("linear_cushion_segment", key)] = f"l{k}"
     for k, (key, c) in enumerate(table.cushion_segments.circular.items()):
         lines.append(f"circular {key} {fmt(c.center[0], c.center[1], c.radius, c.height)}")
-        names[key] = f"c{k}"
+        names[("circular_cushion_segment", key)] = f"c{k}"
     for k, (key, p) in enumerate(table.pockets.items()):
         lines.append(f"pocket {key} {fmt(p.center[0], p.center[1], p.radius, p.depth)}")
-        names[key] = f"p{k}"
+        names[("pocket", key)] = f"p{k}"
     return lines, names
 
 
-def play(name: str, spots, strike, table, names: dict[str, str]) -> list[str]:
-    ids = ["cue"] + [str(k) for k in range(1, len(spots))]
+def play(name: str, ids, spots, strike, table, names: dict) -> list[str]:
     balls = {i: pt.Ball.create(i, xy=xy) for i, xy in zip(ids, spots)}
     system = pt.System(cue=pt.Cue(cue_ball_id="cue"), table=table, balls=balls)
     v0, phi, theta, a, b = strike
     system.strike(V0=v0, phi=phi, theta=theta, a=a, b=b)
     specs = system.cue.specs
     pt.simulate(system, inplace=True)
-    agents = {**names, **{i: f"b{k}" for k, i in enumerate(ids)}, "cue_stick": "cue"}
+    agents = {**names, **{("ball", i): f"b{k}" for k, i in enumerate(ids)}}
     lines = [f"shot {name}"]
     lines += [f"ball {i} {fmt(*xy)}" for i, xy in zip(ids, spots)]
     lines.append(f"cue {fmt(v0, phi, theta, a, b, specs.M, specs.end_mass, specs.tip_radius)}")
@@ -128,7 +148,10 @@ def play(name: str, spots, strike, table, names: dict[str, str]) -> list[str]:
         kind = event.event_type.value
         if kind == "none":
             continue
-        who = " ".join(agents.get(i, i) for i in event.ids)
+        who = " ".join(
+            "cue" if a.agent_type.value == "cue" else agents[(a.agent_type.value, a.id)]
+            for a in event.agents
+        )
         lines.append(f"event {kind} {event.time!r} {who}")
     for k, i in enumerate(ids):
         state = system.balls[i].state
@@ -139,7 +162,7 @@ def play(name: str, spots, strike, table, names: dict[str, str]) -> list[str]:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--count", type=int, default=4, help="shots of each kind")
+    parser.add_argument("--count", type=int, default=16, help="shots of each kind")
     parser.add_argument("--out", type=Path, default=OUT)
     args = parser.parse_args()
     table = pt.Table.default()
@@ -154,8 +177,8 @@ def main() -> None:
     lines += object_lines
     for kind in KINDS:
         for seed in range(args.count):
-            spots, strike = shot_of(kind, seed, table, R)
-            lines += play(f"{kind}-{seed}", spots, strike, table, names)
+            ids, spots, strike = shot_of(kind, seed, table, R)
+            lines += play(f"{kind}-{seed}", ids, spots, strike, table, names)
     args.out.write_text("\n".join(lines) + "\n")
     print(f"wrote {args.out} ({len(lines)} lines)")
 
