@@ -169,7 +169,9 @@ pub struct Shot {
 /// `make_kiss`, `1e-6` apart, never overlap).
 ///
 /// # Errors
-/// An [`InputError`]: `params` of another length than `balls`; a ball's state or parameters
+/// An [`InputError`]: `params` of another length than `balls`; no `max_events` when a ball
+/// with a sliding or rolling friction of 0 may move (`max_events`,
+/// [`InputErrorKind::Endless`]: it may never stop); a ball's state or parameters
 /// that fail their checks (`position[i, k]`, `mass[i]`, …: the ball, then the component); a
 /// bad table object ([`BilliardTable::geometry`]); a strike of a ball out of range
 /// (`strike`) or that fails the stick model's checks; a contact its model cannot resolve
@@ -208,6 +210,13 @@ pub fn simulate_shot(
             found: params.len(),
         };
         return Err(InputError::new("params", kind));
+    }
+    // A ball without sliding or rolling friction that is set moving may go on for ever,
+    // between the cushions.
+    let moves = options.strike.is_some() || balls.iter().any(|b| b.motion.translates());
+    let frictionless = params.iter().any(|p| p.u_s == 0.0 || p.u_r == 0.0);
+    if moves && frictionless && options.max_events.is_none() {
+        return Err(InputError::new("max_events", InputErrorKind::Endless));
     }
     let geometry = table.geometry()?;
     let resolvers = &options.resolvers;
@@ -395,4 +404,137 @@ fn replace(
         motions[i] = motion;
     }
     calendar.update(indices, paths)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::billiards::LinearCushion;
+    use crate::geometry::SegmentSide;
+    use nalgebra::{Vector2, Vector3};
+
+    fn one_rail() -> BilliardTable {
+        let rail = LinearCushion::new(Vector2::new(0.0, 1.0), Vector2::new(1.0, 1.0), 0.036576);
+        BilliardTable {
+            linear: vec![(rail, SegmentSide::Right)],
+            ..Default::default()
+        }
+    }
+
+    fn strike(ball: usize) -> ShotOptions {
+        ShotOptions {
+            strike: Some((ball, Cue::default())),
+            ..Default::default()
+        }
+    }
+
+    #[test]
+    fn bad_input_is_an_error_naming_it() {
+        let table = one_rail();
+        let ball = [BallState::at_rest(Vector2::new(0.5, 0.5))];
+        let params = [BallParams::default()];
+        let run = |table: &BilliardTable, balls: &[BallState], params: &[BallParams], options| {
+            simulate_shot(table, balls, params, &options).map(|_| ())
+        };
+        let err = run(&table, &ball, &[], strike(0)).unwrap_err();
+        assert_eq!(err.argument(), "params");
+        let err = run(&table, &ball, &params, strike(1)).unwrap_err();
+        assert_eq!(
+            (err.argument(), err.kind().code()),
+            ("strike", "index_out_of_range")
+        );
+        let mut nan = ball;
+        nan[0].velocity.y = f64::NAN;
+        let err = run(&table, &nan, &params, ShotOptions::default()).unwrap_err();
+        assert_eq!(
+            (err.argument(), err.index(), err.segment()),
+            ("velocity", Some(0), Some(1))
+        );
+        let slick = [BallParams {
+            u_r: 0.0,
+            ..BallParams::default()
+        }];
+        let err = run(&table, &ball, &slick, strike(0)).unwrap_err();
+        assert_eq!(
+            (err.argument(), err.kind()),
+            ("max_events", InputErrorKind::Endless)
+        );
+        // Up to the rail, back, and rolling away for ever: the last state still moves.
+        let up = ShotOptions {
+            strike: Some((
+                0,
+                Cue {
+                    phi: 90.0,
+                    ..Cue::default()
+                },
+            )),
+            max_events: Some(100),
+            ..Default::default()
+        };
+        let shot = simulate_shot(&table, &ball, &slick, &up).unwrap();
+        let kinds: Vec<_> = shot.events.iter().map(|e| e.kind.name()).collect();
+        assert_eq!(
+            kinds,
+            [
+                "stick_ball",
+                "sliding_rolling",
+                "ball_linear_cushion",
+                "sliding_rolling"
+            ]
+        );
+        assert_eq!(
+            (shot.stopped, shot.states[0].motion),
+            (false, MotionState::Rolling)
+        );
+        let shot = simulate_shot(
+            &table,
+            &ball,
+            &slick,
+            &ShotOptions {
+                max_events: Some(3),
+                ..up
+            },
+        )
+        .unwrap();
+        assert_eq!((shot.events.len(), shot.stopped), (3, true));
+        let mut degenerate = one_rail();
+        degenerate.linear[0].0.p2 = degenerate.linear[0].0.p1;
+        let err = run(&degenerate, &ball, &params, strike(0)).unwrap_err();
+        assert_eq!((err.argument(), err.index()), ("linear", Some(0)));
+    }
+
+    #[test]
+    fn a_ball_at_rest_has_no_events_and_a_pocketed_one_stays_out() {
+        let table = one_rail();
+        let params = [BallParams::default(); 2];
+        let pocketed = BallState::new(
+            Vector2::new(0.5, 0.5),
+            Vector2::zeros(),
+            Vector3::zeros(),
+            MotionState::Pocketed,
+        );
+        let balls = [BallState::at_rest(Vector2::new(0.5, 0.2)), pocketed];
+        // The struck ball runs through the pocketed one's spot to the rail.
+        let options = ShotOptions {
+            strike: Some((
+                0,
+                Cue {
+                    phi: 90.0,
+                    ..Cue::default()
+                },
+            )),
+            ..Default::default()
+        };
+        let shot = simulate_shot(&table, &balls, &params, &options).unwrap();
+        assert!(shot.events.iter().all(|e| e.balls == [0]));
+        assert!(
+            shot.events
+                .iter()
+                .any(|e| e.kind == ShotEventKind::LinearCushion(0))
+        );
+        assert_eq!(shot.states[1], pocketed);
+        let still = simulate_shot(&table, &balls, &params, &ShotOptions::default()).unwrap();
+        assert_eq!((still.events.len(), still.end), (0, 0.0));
+        assert_eq!(still.states, balls);
+    }
 }
