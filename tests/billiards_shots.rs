@@ -14,7 +14,7 @@ mod rng;
 
 use ballcollide::billiards::{
     BallParams, BallState, BilliardTable, CircularCushion, Cue, CueSpecs, LinearCushion,
-    MotionState, Pocket, Shot, ShotEventKind, ShotOptions, evolve, side_of_direction,
+    MotionState, Overlaps, Pocket, Shot, ShotEventKind, ShotOptions, evolve, side_of_direction,
     simulate_shot,
 };
 use nalgebra::Vector2;
@@ -47,11 +47,11 @@ fn numbers(fields: &[&str]) -> Vec<f64> {
 }
 
 fn read_cases() -> Cases {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/shot_cases.txt"
-    ))
-    .expect("tests/data/shot_cases.txt");
+    // Another file of the same format (more shots of `tools/shot_reference.py`) if named.
+    let path = std::env::var("BALLCOLLIDE_SHOT_CASES").unwrap_or_else(|_| {
+        concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/shot_cases.txt").to_string()
+    });
+    let text = std::fs::read_to_string(&path).expect("the shots' file");
     let mut params = BallParams::default();
     let mut table = BilliardTable::default();
     let mut shots: Vec<Case> = Vec::new();
@@ -183,6 +183,8 @@ struct Worst {
 /// How a replayed shot compares with pooltool's: `None` if the same, else what differs first.
 fn compare(cases: &Cases, case: &Case, worst: &mut Worst) -> Option<String> {
     let shot = play(cases, case);
+    // The events' types and agents first, then their times: a shot whose events are the
+    // same but drift in time says so.
     for (k, (want, got)) in case.events.iter().zip(&shot.events).enumerate() {
         let names = agents(got.kind, &got.balls);
         if want.0 != got.kind.name() || !same_agents(&want.2, &names) {
@@ -196,14 +198,20 @@ fn compare(cases: &Cases, case: &Case, worst: &mut Worst) -> Option<String> {
                 got.time
             ));
         }
+    }
+    let mut late = None;
+    for (k, (want, got)) in case.events.iter().zip(&shot.events).enumerate() {
         let off = (want.1 - got.time).abs();
         worst.time = worst.time.max(off);
-        if off > 1e-6 {
-            return Some(format!(
-                "event {k} ({}): time {} against pooltool's {} ({off:.1e} s)",
+        if off > 1e-6 && late.is_none() {
+            late = Some(format!(
+                "the same events, but event {k} ({}) at {} against pooltool's {} ({off:.1e} s)",
                 want.0, got.time, want.1
             ));
         }
+    }
+    if late.is_some() {
+        return late;
     }
     if case.events.len() != shot.events.len() {
         return Some(format!(
@@ -265,6 +273,41 @@ fn shots_give_pooltools_events() {
     );
 }
 
+/// `BALLCOLLIDE_SHOT_SHOW=NAME`: prints a shot's events, pooltool's beside the engine's.
+#[test]
+fn show_a_shot() {
+    let Ok(name) = std::env::var("BALLCOLLIDE_SHOT_SHOW") else {
+        return;
+    };
+    let cases = read_cases();
+    let Some(case) = cases.shots.iter().find(|c| c.name == name) else {
+        panic!("no shot {name}");
+    };
+    let shot = play(&cases, case);
+    for k in 0..case.events.len().max(shot.events.len()) {
+        let want = case
+            .events
+            .get(k)
+            .map_or(String::new(), |(kind, time, agents)| {
+                format!("{kind} {agents:?} {time}")
+            });
+        let got = shot.events.get(k).map_or(String::new(), |e| {
+            let states: Vec<_> = e
+                .states
+                .iter()
+                .map(|s| (s.position.x, s.position.y, s.velocity.x, s.velocity.y))
+                .collect();
+            format!(
+                "{} {:?} {} {states:?}",
+                e.kind.name(),
+                agents(e.kind, &e.balls),
+                e.time
+            )
+        });
+        println!("{k:4} {want:70} | {got}");
+    }
+}
+
 /// The kinetic energy of a ball, translation and rotation (a solid sphere, `I = 2/5·m·R²`).
 fn energy(state: &BallState, params: &BallParams) -> f64 {
     let inertia = 0.4 * params.mass * params.radius * params.radius;
@@ -274,7 +317,27 @@ fn energy(state: &BallState, params: &BallParams) -> f64 {
 
 /// A random shot on the data file's table: one to four balls at free spots, the first struck
 /// anywhere at up to 6 m/s, with any spin on its face and the cue up to 30° above level.
+///
+/// One shot in four is a break instead: the rack of one of the file's breaks, struck at 3 to
+/// 8 m/s at the head ball, up to 2° off, with any spin.
 fn random_shot(rng: &mut Rng, cases: &Cases) -> (Vec<BallState>, Cue) {
+    let racks: Vec<&Case> = cases
+        .shots
+        .iter()
+        .filter(|c| c.name.starts_with("break"))
+        .collect();
+    if !racks.is_empty() && rng.below(4) == 0 {
+        let spots = &racks[rng.below(racks.len() as u64) as usize].spots;
+        let d = spots[1] - spots[0];
+        let cue = Cue {
+            v0: rng.uniform(3.0, 8.0),
+            phi: d.y.atan2(d.x).to_degrees() + rng.uniform(-2.0, 2.0),
+            a: rng.uniform(-0.3, 0.3),
+            b: rng.uniform(-0.3, 0.3),
+            ..Cue::default()
+        };
+        return (spots.iter().map(|&p| BallState::at_rest(p)).collect(), cue);
+    }
     let r = cases.params.radius;
     let count = 1 + rng.below(4) as usize;
     let mut spots: Vec<Vector2<f64>> = Vec::new();
@@ -303,7 +366,20 @@ fn random_shot(rng: &mut Rng, cases: &Cases) -> (Vec<BallState>, Cue) {
 
 /// The invariants of one shot, from its log alone: each ball's state is followed from event to
 /// event by `evolve`.
-fn check_invariants(shot: &Shot, start: &[BallState], params: &BallParams, what: &str) {
+///
+/// Overlaps beyond `tolerance` between events and at the end of each instant are errors, and
+/// within an instant (between events at the same time) beyond `1e-5 m`: pooltool's
+/// `make_kiss` may move a ball back along its path by up to `5e-6 m`, into a third ball,
+/// which its rule then collides at once. The deepest overlap at an instant's end or between
+/// events is returned.
+fn check_invariants(
+    shot: &Shot,
+    start: &[BallState],
+    params: &BallParams,
+    tolerance: f64,
+    what: &str,
+) -> f64 {
+    let deepest = std::cell::Cell::new(0.0f64);
     let r = params.radius;
     // Per ball: its state as of its last event, and that event's time.
     let mut known: Vec<(BallState, f64)> = start.iter().map(|s| (*s, 0.0)).collect();
@@ -313,14 +389,17 @@ fn check_invariants(shot: &Shot, start: &[BallState], params: &BallParams, what:
             .map(|(s, since)| evolve(s, params, t - since))
             .collect()
     };
-    let overlap_free = |states: &[BallState], when: &str| {
+    let overlap_free = |states: &[BallState], tolerance: f64, mid_instant: bool, when: &str| {
         for i in 0..states.len() {
             for j in i + 1..states.len() {
                 let pocketed =
                     [states[i].motion, states[j].motion].contains(&MotionState::Pocketed);
                 let distance = (states[i].position - states[j].position).norm();
+                if !pocketed && !mid_instant {
+                    deepest.set(deepest.get().max(2.0 * r - distance));
+                }
                 assert!(
-                    pocketed || distance > 2.0 * r - 1e-9,
+                    pocketed || distance > 2.0 * r - tolerance,
                     "{what}: balls {i} and {j} overlap {} m {when}",
                     2.0 * r - distance
                 );
@@ -337,13 +416,22 @@ fn check_invariants(shot: &Shot, start: &[BallState], params: &BallParams, what:
         // Between the events: a few times in the gap.
         for m in 1..4 {
             let t = last_time + (event.time - last_time) * f64::from(m) / 4.0;
-            overlap_free(&at(&known, t), &format!("before event {k}"));
+            if t > last_time && t < event.time {
+                overlap_free(
+                    &at(&known, t),
+                    tolerance,
+                    false,
+                    &format!("before event {k}"),
+                );
+            }
         }
         for (&b, state) in event.balls.iter().zip(&event.states) {
             known[b] = (*state, event.time);
         }
         let now = at(&known, event.time);
-        overlap_free(&now, &format!("after event {k}"));
+        let instant_ends = shot.events.get(k + 1).is_none_or(|e| e.time > event.time);
+        let bound = if instant_ends { tolerance } else { 1e-5 };
+        overlap_free(&now, bound, !instant_ends, &format!("after event {k}"));
         let total: f64 = now.iter().map(|s| energy(s, params)).sum();
         assert!(
             total <= last_energy * (1.0 + 1e-12),
@@ -369,6 +457,7 @@ fn check_invariants(shot: &Shot, start: &[BallState], params: &BallParams, what:
             "{what}: ball {i} moves at the end"
         );
     }
+    deepest.get()
 }
 
 #[test]
@@ -377,33 +466,44 @@ fn pooltools_shots_keep_the_invariants() {
     for case in &cases.shots {
         let shot = play(&cases, case);
         let start: Vec<BallState> = case.spots.iter().map(|&p| BallState::at_rest(p)).collect();
-        check_invariants(&shot, &start, &cases.params, &case.name);
+        check_invariants(&shot, &start, &cases.params, 1e-9, &case.name);
     }
 }
 
 #[test]
 fn random_shots_keep_the_invariants() {
     let cases = read_cases();
-    let mut rng = Rng(0x5eed_0040);
-    let (mut events, mut pocketed) = (0, 0);
-    for n in 0..200 {
-        let (balls, cue) = random_shot(&mut rng, &cases);
-        let params = vec![cases.params; balls.len()];
-        let options = ShotOptions {
-            strike: Some((0, cue)),
-            ..Default::default()
-        };
-        let what = format!("shot {n} ({cue:?}, {balls:?})");
-        let shot = simulate_shot(&cases.table, &balls, &params, &options)
-            .unwrap_or_else(|e| panic!("{what}: {e}"));
-        check_invariants(&shot, &balls, &cases.params, &what);
-        events += shot.events.len();
-        pocketed += shot
-            .states
-            .iter()
-            .filter(|s| s.motion == MotionState::Pocketed)
-            .count();
+    // Under pooltool's rule overlaps are collided at once; under the calendar's, balls that
+    // `make_kiss` pushes into a third one and that part are left to part (up to `1e-5 m`).
+    for (overlaps, tolerance) in [
+        (Overlaps::CollideAtOnce, 1e-9),
+        (Overlaps::CollideIfApproaching, 1e-5),
+    ] {
+        let mut rng = Rng(0x5eed_0040);
+        let (mut events, mut pocketed, mut deepest) = (0, 0, 0.0f64);
+        for n in 0..200 {
+            let (balls, cue) = random_shot(&mut rng, &cases);
+            let params = vec![cases.params; balls.len()];
+            let options = ShotOptions {
+                strike: Some((0, cue)),
+                overlaps,
+                ..Default::default()
+            };
+            let what = format!("shot {n} ({overlaps:?}, {cue:?}, {balls:?})");
+            let shot = simulate_shot(&cases.table, &balls, &params, &options)
+                .unwrap_or_else(|e| panic!("{what}: {e}"));
+            let deep = check_invariants(&shot, &balls, &cases.params, tolerance, &what);
+            deepest = deepest.max(deep);
+            events += shot.events.len();
+            pocketed += shot
+                .states
+                .iter()
+                .filter(|s| s.motion == MotionState::Pocketed)
+                .count();
+        }
+        println!(
+            "200 random shots ({overlaps:?}): {events} events, {pocketed} balls pocketed, deepest overlap {deepest:.1e} m"
+        );
+        assert!(events > 3000 && pocketed > 0);
     }
-    println!("200 random shots: {events} events, {pocketed} balls pocketed");
-    assert!(events > 1000 && pocketed > 0);
 }

@@ -35,6 +35,9 @@ Usage::
 
     .venv-pooltool/bin/python tools/shot_reference.py            # the whole file (16 of each)
     .venv-pooltool/bin/python tools/shot_reference.py --count 2  # the first 2 of each kind
+    .venv-pooltool/bin/python tools/shot_reference.py --count 200 --kind break --out /tmp/b.txt
+
+(``tests/billiards_shots.rs`` reads another file named by ``BALLCOLLIDE_SHOT_CASES``.)
 """
 
 from __future__ import annotations
@@ -164,6 +167,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--count", type=int, default=16, help="shots of each kind")
     parser.add_argument("--out", type=Path, default=OUT)
+    parser.add_argument("--kind", choices=KINDS, action="append", help="only these kinds")
     args = parser.parse_args()
     table = pt.Table.default()
     R = pt.BallParams.default().R
@@ -175,7 +179,7 @@ def main() -> None:
     ]
     object_lines, names = table_lines(table)
     lines += object_lines
-    for kind in KINDS:
+    for kind in args.kind or KINDS:
         for seed in range(args.count):
             ids, spots, strike = shot_of(kind, seed, table, R)
             lines += play(f"{kind}-{seed}", ids, spots, strike, table, names)

@@ -98,7 +98,9 @@ pub use evolve_spin::evolve_spin;
 pub use frictional_inelastic::{AlciatoreFriction, FrictionalInelastic};
 pub use instantaneous_point::{InstantaneousPoint, squirt_angle};
 pub use params::BallParams;
-pub use shot::{Shot, ShotEvent, ShotEventKind, ShotOptions, ShotResolvers, simulate_shot};
+pub use shot::{
+    Overlaps, Shot, ShotEvent, ShotEventKind, ShotOptions, ShotResolvers, simulate_shot,
+};
 pub use slip_velocity::slip_velocity;
 pub use state::{BallState, MotionState};
 pub use stick_ball::{Cue, CueSpecs, StickBallResolver};

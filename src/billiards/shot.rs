@@ -68,6 +68,29 @@ pub struct ShotOptions {
     pub resolvers: ShotResolvers,
     /// The shot ends after this many events (the strike counts). Default none.
     pub max_events: Option<usize>,
+    /// What becomes of two balls found overlapping. Default pooltool's rule.
+    pub overlaps: Overlaps,
+}
+
+/// What becomes of two balls whose centres are found closer than the sum of their radii
+/// (rounding, or `make_kiss` moving a ball back along its path into a third one, as in a
+/// break's rack).
+///
+/// ```
+/// use ballcollide::billiards::{Overlaps, ShotOptions};
+/// assert_eq!(ShotOptions::default().overlaps, Overlaps::CollideAtOnce);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Overlaps {
+    /// pooltool 0.6.0's rule: when a pair's next contact is sought (at the start, and after
+    /// every event of either ball, transitions included) and its balls overlap, they collide
+    /// at once, even if they are parting; unless one is pocketed or neither translates.
+    /// Collisions at once at one instant come in the order pooltool's cache gives them.
+    #[default]
+    CollideAtOnce,
+    /// The calendar's rule: balls collide only when they come into contact, approaching;
+    /// overlapping balls that part are left to part.
+    CollideIfApproaching,
 }
 
 /// What happened at an event of a shot (pooltool's `EventType`), with the cushion's or the
@@ -267,90 +290,117 @@ pub fn simulate_shot(
     let mut at_this_instant = 0usize;
     let mut end = 0.0;
     let mut stopped = false;
+    // pooltool's collisions at once (see `Overlaps::CollideAtOnce`): the pairs found
+    // overlapping when their contact was last sought, in the order it would take them.
+    let mut at_once: Vec<[usize; 2]> = Vec::new();
+    let at_once_rule = options.overlaps == Overlaps::CollideAtOnce;
+    if at_once_rule {
+        let all: Vec<usize> = (0..n).collect();
+        overlapping(&motions, params, &all, 0.0, &mut at_once);
+    }
     loop {
         if events.len() >= max_events {
             stopped = true;
             break;
         }
-        let Some(event) = calendar.next_event() else {
-            break;
+        let next = calendar.next_event();
+        let event = match (at_once.first(), next) {
+            // The calendar's transitions and pockets at the same instant come first, as
+            // pooltool's priority has it (its tier 2 before collisions' tier 3).
+            (Some(&pair), next) if next.is_none_or(|e| !before_collisions(&e, end)) => {
+                at_once.remove(0);
+                Next::AtOnce(pair)
+            }
+            (_, Some(event)) => Next::Calendar(event),
+            (_, None) => break,
         };
-        let t = event.time();
+        let t = match event {
+            Next::Calendar(event) => event.time(),
+            Next::AtOnce(_) => end,
+        };
         at_this_instant = if t == end { at_this_instant + 1 } else { 1 };
         end = t;
         let logged = match event {
-            Event::Transition(transition) => {
-                let i = transition.ball;
-                let reached = &motions[i].states()[transition.segment..];
-                let (Some(before), Some(after)) = (
-                    motions[i].states().get(transition.segment.wrapping_sub(1)),
-                    reached.first(),
-                ) else {
-                    return Err(unresolved(i, t));
-                };
-                let Some(kind) = transition_kind(before.motion, after.motion) else {
-                    return Err(unresolved(i, t));
-                };
-                let after = *after;
-                replace(&mut calendar, &mut motions, &[i], &[after], params, t)?;
-                ShotEvent {
-                    time: t,
-                    kind: ShotEventKind::Transition(kind),
-                    balls: vec![i],
-                    states: vec![after],
-                }
+            Next::AtOnce([i, j]) => {
+                collide(resolvers, &mut calendar, &mut motions, params, [i, j], t)?
             }
-            Event::Collision(c) => {
-                let (a, b) = (motions[c.i].state_at(t), motions[c.j].state_at(t));
-                let after = resolvers
-                    .ball_ball
-                    .resolve([&a, &b], [&params[c.i], &params[c.j]]);
-                replace(&mut calendar, &mut motions, &[c.i, c.j], &after, params, t)?;
-                ShotEvent {
-                    time: t,
-                    kind: ShotEventKind::BallBall,
-                    balls: vec![c.i, c.j],
-                    states: after.to_vec(),
-                }
-            }
-            Event::Object(contact) => {
-                let i = contact.ball;
-                let state = motions[i].state_at(t);
-                let p = &params[i];
-                let (after, kind) = match contact.kind {
-                    ObjectKind::Segment => {
-                        let cushion = &table.linear[contact.index].0;
-                        let after = resolvers.linear_cushion.resolve(&state, p, cushion);
-                        (after, ShotEventKind::LinearCushion(contact.index))
+            Next::Calendar(event) => match event {
+                Event::Transition(transition) => {
+                    let i = transition.ball;
+                    let reached = &motions[i].states()[transition.segment..];
+                    let (Some(before), Some(after)) = (
+                        motions[i].states().get(transition.segment.wrapping_sub(1)),
+                        reached.first(),
+                    ) else {
+                        return Err(unresolved(i, t));
+                    };
+                    let Some(kind) = transition_kind(before.motion, after.motion) else {
+                        return Err(unresolved(i, t));
+                    };
+                    let after = *after;
+                    replace(&mut calendar, &mut motions, &[i], &[after], params, t)?;
+                    ShotEvent {
+                        time: t,
+                        kind: ShotEventKind::Transition(kind),
+                        balls: vec![i],
+                        states: vec![after],
                     }
-                    ObjectKind::Circle => {
-                        let cushion = &table.circular[contact.index];
-                        let after = resolvers.circular_cushion.resolve(&state, p, cushion);
-                        (after, ShotEventKind::CircularCushion(contact.index))
-                    }
-                    ObjectKind::Target => {
-                        let pocket = &table.pockets[contact.index];
-                        let after = resolvers.pocket.resolve(&state, p, pocket);
-                        (Some(after), ShotEventKind::Pocket(contact.index))
-                    }
-                    // The table has no planes.
-                    ObjectKind::Plane => (None, ShotEventKind::Stick),
-                };
-                let after = after.ok_or_else(|| unresolved(i, t))?;
-                replace(&mut calendar, &mut motions, &[i], &[after], params, t)?;
-                if after.motion == MotionState::Pocketed {
-                    calendar.retire(i)?;
                 }
-                ShotEvent {
-                    time: t,
-                    kind,
-                    balls: vec![i],
-                    states: vec![after],
+                Event::Collision(c) => {
+                    at_once.retain(|&pair| pair != [c.i, c.j]);
+                    collide(
+                        resolvers,
+                        &mut calendar,
+                        &mut motions,
+                        params,
+                        [c.i, c.j],
+                        t,
+                    )?
                 }
-            }
-            // The calendar has no walls.
-            Event::Wall(w) => return Err(unresolved(w.ball, t)),
+                Event::Object(contact) => {
+                    let i = contact.ball;
+                    let state = motions[i].state_at(t);
+                    let p = &params[i];
+                    let (after, kind) = match contact.kind {
+                        ObjectKind::Segment => {
+                            let cushion = &table.linear[contact.index].0;
+                            let after = resolvers.linear_cushion.resolve(&state, p, cushion);
+                            (after, ShotEventKind::LinearCushion(contact.index))
+                        }
+                        ObjectKind::Circle => {
+                            let cushion = &table.circular[contact.index];
+                            let after = resolvers.circular_cushion.resolve(&state, p, cushion);
+                            (after, ShotEventKind::CircularCushion(contact.index))
+                        }
+                        ObjectKind::Target => {
+                            let pocket = &table.pockets[contact.index];
+                            let after = resolvers.pocket.resolve(&state, p, pocket);
+                            (Some(after), ShotEventKind::Pocket(contact.index))
+                        }
+                        // The table has no planes.
+                        ObjectKind::Plane => (None, ShotEventKind::Stick),
+                    };
+                    let after = after.ok_or_else(|| unresolved(i, t))?;
+                    replace(&mut calendar, &mut motions, &[i], &[after], params, t)?;
+                    if after.motion == MotionState::Pocketed {
+                        calendar.retire(i)?;
+                    }
+                    ShotEvent {
+                        time: t,
+                        kind,
+                        balls: vec![i],
+                        states: vec![after],
+                    }
+                }
+                // The calendar has no walls.
+                Event::Wall(w) => return Err(unresolved(w.ball, t)),
+            },
         };
+        if at_once_rule {
+            // As pooltool's cache after the event: the pairs of its balls sought again.
+            at_once.retain(|pair| !pair.iter().any(|b| logged.balls.contains(b)));
+            overlapping(&motions, params, &logged.balls, t, &mut at_once);
+        }
         if at_this_instant > most_at_one_instant {
             let other = logged.balls.get(1).copied();
             let kind = InputErrorKind::NoProgress {
@@ -369,6 +419,81 @@ pub fn simulate_shot(
         states,
         stopped,
     })
+}
+
+/// What comes next: the calendar's event, or one of pooltool's collisions at once.
+#[derive(Clone, Copy, Debug)]
+enum Next {
+    Calendar(Event),
+    AtOnce([usize; 2]),
+}
+
+/// Whether the calendar's `event` comes before a collision at once at `now`: it is at `now`
+/// and of pooltool's tier 2 (a transition, a ball dropping into a pocket).
+fn before_collisions(event: &Event, now: f64) -> bool {
+    let tier_2 = match event {
+        Event::Transition(_) => true,
+        Event::Object(o) => o.kind == ObjectKind::Target,
+        _ => false,
+    };
+    tier_2 && event.time() <= now
+}
+
+/// The collision of balls `[i, j]` at `t`, resolved and put in the calendar.
+fn collide(
+    resolvers: &ShotResolvers,
+    calendar: &mut CollisionSchedule<2>,
+    motions: &mut [BallPath],
+    params: &[BallParams],
+    [i, j]: [usize; 2],
+    t: f64,
+) -> Result<ShotEvent, InputError> {
+    let (a, b) = (motions[i].state_at(t), motions[j].state_at(t));
+    let after = resolvers
+        .ball_ball
+        .resolve([&a, &b], [&params[i], &params[j]]);
+    replace(calendar, motions, &[i, j], &after, params, t)?;
+    Ok(ShotEvent {
+        time: t,
+        kind: ShotEventKind::BallBall,
+        balls: vec![i, j],
+        states: after.to_vec(),
+    })
+}
+
+/// Appends to `pairs` each pair with a ball of `changed` that pooltool's ball–ball detector
+/// would collide at once at `t` (`get_next_ball_ball_collision`): neither ball pocketed, not
+/// both without translation (stationary or spinning), and their centres closer than the sum
+/// of their radii (`is_overlapping`). In pooltool's order: the pairs `(i, j)`, `i < j`, in
+/// the order of `itertools.combinations` over the balls, skipping those already listed.
+fn overlapping(
+    motions: &[BallPath],
+    params: &[BallParams],
+    changed: &[usize],
+    t: f64,
+    pairs: &mut Vec<[usize; 2]>,
+) {
+    let n = motions.len();
+    let states: Vec<BallState> = motions.iter().map(|m| m.state_at(t)).collect();
+    for i in 0..n {
+        for j in i + 1..n {
+            if !(changed.contains(&i) || changed.contains(&j)) || pairs.contains(&[i, j]) {
+                continue;
+            }
+            let (a, b) = (&states[i], &states[j]);
+            let out = |s: &BallState| s.motion == MotionState::Pocketed;
+            let still = |s: &BallState| !s.motion.translates();
+            if out(a) || out(b) || (still(a) && still(b)) {
+                continue;
+            }
+            let d = a.position - b.position;
+            // pooltool's norm3d: the heights are equal, so their difference adds an exact 0.
+            let distance = (d.x * d.x + d.y * d.y + 0.0).sqrt();
+            if distance < params[i].radius + params[j].radius {
+                pairs.push([i, j]);
+            }
+        }
+    }
 }
 
 /// The transition from motion state `before` to `after`, if one leads there.
