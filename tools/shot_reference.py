@@ -77,12 +77,19 @@ def towards(a: tuple[float, float], b) -> float:
 
 
 def rack(seed: int, table):
-    """pooltool's 9-ball rack, seeded: the ids (the cue ball first) and spots."""
+    """pooltool's 9-ball rack, seeded: the ids (the cue ball first) and spots.
+
+    pooltool gives the rack's spots ids in an order that hash randomisation changes from run
+    to run, so the object balls are named here by their spots, "1" the nearest the cue ball
+    (the lowest y, then x).
+    """
     random.seed(seed)
     np.random.seed(seed)  # noqa: NPY002 (get_rack draws from the legacy global generator)
     balls = pt.get_rack(pt.GameType.NINEBALL, table)
-    ids = ["cue"] + sorted((i for i in balls if i != "cue"), key=int)
-    return ids, [tuple(float(x) for x in balls[i].state.rvw[0, :2]) for i in ids]
+    spot = {i: tuple(float(x) for x in b.state.rvw[0, :2]) for i, b in balls.items()}
+    rest = sorted((spot[i] for i in balls if i != "cue"), key=lambda p: (p[1], p[0]))
+    spots = [spot["cue"], *rest]
+    return ["cue"] + [str(k) for k in range(1, len(spots))], spots
 
 
 def shot_of(kind: str, seed: int, table, R: float):
@@ -163,14 +170,9 @@ def play(name: str, ids, spots, strike, table, names: dict) -> list[str]:
     return lines
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--count", type=int, default=16, help="shots of each kind")
-    parser.add_argument("--out", type=Path, default=OUT)
-    parser.add_argument("--kind", choices=KINDS, action="append", help="only these kinds")
-    args = parser.parse_args()
+def cases(count: int, kinds: tuple[str, ...] = KINDS) -> list[str]:
+    """The file's lines: the table, then ``count`` shots of each of ``kinds``."""
     table = pt.Table.default()
-    R = pt.BallParams.default().R
     p = pt.BallParams.default()
     params = (p.m, p.R, p.u_s, p.u_r, p.u_sp_proportionality, p.u_b, p.e_b, p.e_c, p.f_c, p.g)
     lines = [
@@ -179,10 +181,20 @@ def main() -> None:
     ]
     object_lines, names = table_lines(table)
     lines += object_lines
-    for kind in args.kind or KINDS:
-        for seed in range(args.count):
-            ids, spots, strike = shot_of(kind, seed, table, R)
+    for kind in kinds:
+        for seed in range(count):
+            ids, spots, strike = shot_of(kind, seed, table, p.R)
             lines += play(f"{kind}-{seed}", ids, spots, strike, table, names)
+    return lines
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--count", type=int, default=16, help="shots of each kind")
+    parser.add_argument("--out", type=Path, default=OUT)
+    parser.add_argument("--kind", choices=KINDS, action="append", help="only these kinds")
+    args = parser.parse_args()
+    lines = cases(args.count, tuple(args.kind or KINDS))
     args.out.write_text("\n".join(lines) + "\n")
     print(f"wrote {args.out} ({len(lines)} lines)")
 
