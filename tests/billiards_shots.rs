@@ -15,7 +15,7 @@ mod rng;
 mod shot_cases;
 
 use ballcollide::billiards::{
-    BallParams, BallState, Cue, MotionState, Overlaps, Shot, ShotEventKind, ShotOptions, evolve,
+    BallParams, BallState, ContactRule, Cue, MotionState, Shot, ShotEventKind, ShotOptions, evolve,
     simulate_shot,
 };
 use nalgebra::Vector2;
@@ -113,11 +113,31 @@ fn compare(cases: &Cases, case: &Case, worst: &mut Worst) -> Option<String> {
     None
 }
 
+/// Why the shots of `KNOWN_DIFFERENCES` differ: in a straight shot along an axis both balls
+/// move along the axis after the collision, with velocity components across it of `1e-17`
+/// to `1e-14` m/s that are rounding. pooltool's rule collides the two balls at once when
+/// their accelerations, which these components turn by their angle, are the same to the bit
+/// ([`ContactRule::Pooltool`]), so those bits decide: pooltool's ball–ball resolution turns
+/// the velocities into the line of centres' frame and back (rotations and BLAS), which this
+/// crate's `FrictionalInelastic` does not follow to the bit, and the signs of the components
+/// across the axis differ (in `straight-2`, pooltool's `−6.9e-16` and `+6.7e-16` after the
+/// collision, the engine's `−2.2e-17` and `−1.8e-18`: both the same angle, `2π`).
+const ACROSS_THE_AXIS: &str = "a collision at once or not, by the rounding across the axis";
+
+/// The shots of the data file that differ from pooltool's, and why (checked: a shot that
+/// comes to agree, or another that differs, fails the test).
+const KNOWN_DIFFERENCES: &[(&str, &str)] = &[
+    ("straight-2", ACROSS_THE_AXIS),
+    ("straight-4", ACROSS_THE_AXIS),
+    ("straight-5", ACROSS_THE_AXIS),
+    ("straight-12", ACROSS_THE_AXIS),
+];
+
 #[test]
 fn shots_give_pooltools_events() {
     let cases = read_cases();
     assert!(cases.shots.len() >= 10);
-    let mut differ = Vec::new();
+    let mut differ: Vec<(String, String)> = Vec::new();
     let events: usize = cases.shots.iter().map(|c| c.events.len()).sum();
     // Per kind of shot (the name before its seed): shots, events, the worst.
     let mut kinds: Vec<(String, usize, usize, Worst)> = Vec::new();
@@ -132,7 +152,7 @@ fn shots_give_pooltools_events() {
         row.1 += 1;
         row.2 += case.events.len();
         if let Some(why) = compare(&cases, case, &mut row.3) {
-            differ.push(format!("{}: {why}", case.name));
+            differ.push((case.name.clone(), why));
         }
     }
     println!(
@@ -146,11 +166,21 @@ fn shots_give_pooltools_events() {
             worst.time, worst.position
         );
     }
-    assert!(
-        differ.is_empty(),
-        "shots that differ:\n{}",
-        differ.join("\n")
-    );
+    for (name, why) in &differ {
+        let known = KNOWN_DIFFERENCES.iter().find(|k| k.0 == name);
+        println!(
+            "  {name} differs ({}): {why}",
+            known.map_or("not known", |k| k.1)
+        );
+    }
+    // Another file (`BALLCOLLIDE_SHOT_CASES`) has no list of its own: every difference shows.
+    let known: Vec<&str> = if std::env::var("BALLCOLLIDE_SHOT_CASES").is_ok() {
+        Vec::new()
+    } else {
+        KNOWN_DIFFERENCES.iter().map(|k| k.0).collect()
+    };
+    let names: Vec<&str> = differ.iter().map(|d| d.0.as_str()).collect();
+    assert_eq!(names, known, "the shots that differ from pooltool's");
 }
 
 /// `BALLCOLLIDE_SHOT_SHOW=NAME`: prints a shot's events, pooltool's beside the engine's.
@@ -355,9 +385,9 @@ fn random_shots_keep_the_invariants() {
     let cases = read_cases();
     // Under pooltool's rule overlaps are collided at once; under the calendar's, balls that
     // `make_kiss` pushes into a third one and that part are left to part (up to `1e-5 m`).
-    for (overlaps, tolerance) in [
-        (Overlaps::CollideAtOnce, 1e-9),
-        (Overlaps::CollideIfApproaching, 1e-5),
+    for (rule, tolerance) in [
+        (ContactRule::Pooltool, 1e-9),
+        (ContactRule::Approaching, 1e-5),
     ] {
         let mut rng = Rng(0x5eed_0040);
         let (mut events, mut pocketed, mut deepest) = (0, 0, 0.0f64);
@@ -366,10 +396,10 @@ fn random_shots_keep_the_invariants() {
             let params = vec![cases.params; balls.len()];
             let options = ShotOptions {
                 strike: Some((0, cue)),
-                overlaps,
+                contact_rule: rule,
                 ..Default::default()
             };
-            let what = format!("shot {n} ({overlaps:?}, {cue:?}, {balls:?})");
+            let what = format!("shot {n} ({rule:?}, {cue:?}, {balls:?})");
             let shot = simulate_shot(&cases.table, &balls, &params, &options)
                 .unwrap_or_else(|e| panic!("{what}: {e}"));
             let deep = check_invariants(&shot, &balls, &cases.params, tolerance, &what);
@@ -382,7 +412,7 @@ fn random_shots_keep_the_invariants() {
                 .count();
         }
         println!(
-            "200 random shots ({overlaps:?}): {events} events, {pocketed} balls pocketed, deepest overlap {deepest:.1e} m"
+            "200 random shots ({rule:?}): {events} events, {pocketed} balls pocketed, deepest overlap {deepest:.1e} m"
         );
         assert!(events > 3000 && pocketed > 0);
     }

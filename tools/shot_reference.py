@@ -15,7 +15,11 @@ Shots, by kind (each from its own seed):
 * ``two``: the cue ball struck at the first of two object balls;
 * ``masse``: as ``object``, with the cue raised 5 to 35 degrees (a curved slide);
 * ``break``: pooltool's 9-ball rack (``get_rack``, seeded), the cue ball struck at 5 to
-  8 m/s at the head ball, up to a degree off.
+  8 m/s at the head ball, up to a degree off;
+* ``straight``: the cue ball struck along an axis (``phi`` 0, 90, 180 or 270) straight at an
+  object ball on the same line, so that both roll the same way after the collision: the two
+  balls' accelerations are then equal, and pooltool's quartic, with a zero leading
+  coefficient, makes them collide at once.
 
 Every number is Python's ``repr`` of a float64 (it reads back to the same float).  Line
 formats, one shot after the table:
@@ -51,7 +55,7 @@ import numpy as np
 import pooltool as pt
 
 OUT = Path(__file__).resolve().parent.parent / "tests" / "data" / "shot_cases.txt"
-KINDS = ("object", "rail", "pocket", "two", "masse", "break")
+KINDS = ("object", "rail", "pocket", "two", "masse", "break", "straight")
 
 
 def fmt(*xs: float) -> str:
@@ -100,6 +104,17 @@ def shot_of(kind: str, seed: int, table, R: float):
         phi = towards(spots[0], spots[1]) + float(rng.uniform(-1.0, 1.0))
         v0 = float(rng.uniform(5.0, 8.0))
         return ids, spots, (v0, phi % 360.0, 0.0, 0.0, float(rng.uniform(-0.3, 0.3)))
+    if kind == "straight":
+        phi = float(rng.choice([0.0, 90.0, 180.0, 270.0]))
+        cue = free_spot(rng, table, [], R)
+        step = float(rng.uniform(0.1, 0.5))
+        direction = (round(math.cos(math.radians(phi))), round(math.sin(math.radians(phi))))
+        target = (cue[0] + step * direction[0], cue[1] + step * direction[1])
+        if not (0.1 < target[0] < table.w - 0.1 and 0.1 < target[1] < table.l - 0.1):
+            target = (cue[0] - step * direction[0], cue[1] - step * direction[1])
+            phi = (phi + 180.0) % 360.0
+        v0 = float(rng.uniform(0.5, 3.0))
+        return ["cue", "1"], [cue, target], (v0, phi, 0.0, 0.0, float(rng.uniform(-0.5, 0.5)))
     cue = free_spot(rng, table, [], R)
     spots = [cue]
     a, b = spin(rng)

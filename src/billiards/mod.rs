@@ -99,7 +99,7 @@ pub use frictional_inelastic::{AlciatoreFriction, FrictionalInelastic};
 pub use instantaneous_point::{InstantaneousPoint, squirt_angle};
 pub use params::BallParams;
 pub use shot::{
-    Overlaps, Shot, ShotEvent, ShotEventKind, ShotOptions, ShotResolvers, simulate_shot,
+    ContactRule, Shot, ShotEvent, ShotEventKind, ShotOptions, ShotResolvers, simulate_shot,
 };
 pub use slip_velocity::slip_velocity;
 pub use state::{BallState, MotionState};

@@ -1,6 +1,7 @@
 //! [`simulate_shot`]: pooltool's event loop on the calendar. A shot on a [`BilliardTable`],
 //! from an optional cue strike until every ball is at rest or pocketed, with its event log.
 
+use super::slip_velocity;
 use super::{
     BallBallResolver, BallCircularCushionResolver, BallLinearCushionResolver, BallParams, BallPath,
     BallPocketResolver, BallState, BilliardTable, CanonicalBallPocket, Cue, FrictionalInelastic,
@@ -68,29 +69,33 @@ pub struct ShotOptions {
     pub resolvers: ShotResolvers,
     /// The shot ends after this many events (the strike counts). Default none.
     pub max_events: Option<usize>,
-    /// What becomes of two balls found overlapping. Default pooltool's rule.
-    pub overlaps: Overlaps,
+    /// When two balls collide. Default pooltool's rule.
+    pub contact_rule: ContactRule,
 }
 
-/// What becomes of two balls whose centres are found closer than the sum of their radii
-/// (rounding, or `make_kiss` moving a ball back along its path into a third one, as in a
-/// break's rack).
+/// When two balls collide: besides coming into contact, pooltool 0.6.0 collides some pairs at
+/// once, and this engine follows it by default.
 ///
 /// ```
-/// use ballcollide::billiards::{Overlaps, ShotOptions};
-/// assert_eq!(ShotOptions::default().overlaps, Overlaps::CollideAtOnce);
+/// use ballcollide::billiards::{ContactRule, ShotOptions};
+/// assert_eq!(ShotOptions::default().contact_rule, ContactRule::Pooltool);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum Overlaps {
+pub enum ContactRule {
     /// pooltool 0.6.0's rule: when a pair's next contact is sought (at the start, and after
-    /// every event of either ball, transitions included) and its balls overlap, they collide
-    /// at once, even if they are parting; unless one is pocketed or neither translates.
-    /// Collisions at once at one instant come in the order pooltool's cache gives them.
+    /// every event of either ball, transitions included), unless one ball is pocketed or
+    /// neither translates, the balls collide at once if their centres are closer than the
+    /// sum of their radii (`is_overlapping`: rounding, or `make_kiss` moving a ball back by
+    /// up to `5e-6 m` into a third one, as in a rack), even if they part; or if their
+    /// accelerations, as pooltool's detector forms them, are the same to the bit (the gap
+    /// quartic's leading coefficient is then 0, and pooltool's solver answers with four
+    /// roots at 0: two balls rolling the same way along an axis, after a straight shot).
+    /// `make_kiss` then brings the balls to `2R + 1e-6` apart wherever they were.
     #[default]
-    CollideAtOnce,
+    Pooltool,
     /// The calendar's rule: balls collide only when they come into contact, approaching;
     /// overlapping balls that part are left to part.
-    CollideIfApproaching,
+    Approaching,
 }
 
 /// What happened at an event of a shot (pooltool's `EventType`), with the cushion's or the
@@ -176,10 +181,9 @@ pub struct Shot {
 /// ([`BallPath::state_at`]), and the paths of the balls it changed are replaced from then
 /// on; a pocketed ball leaves play ([`CollisionSchedule::retire`]).
 ///
-/// **Collisions at once.** Under pooltool's rule ([`Overlaps::CollideAtOnce`], the default),
-/// two balls found overlapping when their pair is looked at again (after an event of either)
-/// collide at once, even if they part: `make_kiss` moving a ball back by up to `5e-6 m` into
-/// a third one, in a rack, makes such collisions.
+/// **Collisions at once.** Under pooltool's rule ([`ContactRule::Pooltool`], the default),
+/// two balls found overlapping, or with the same acceleration, when their pair is looked at
+/// again (after an event of either) collide at once, even if they part.
 ///
 /// **Ties.** pooltool takes events at the same instant by `get_event_priority`: the stick,
 /// then transitions and pockets (tier 2), then collisions and cushions (tier 3), the ball of
@@ -190,7 +194,7 @@ pub struct Shot {
 /// calendar's events in the calendar's order (by the lower ball index, then a ball's
 /// transition, its cushion and pocket contacts, its collisions). So one ball's transition
 /// comes before its contacts as in pooltool, but a tie between two balls' events goes by
-/// their indices, not their energies. Such exact ties did not come in the 296 shots of
+/// their indices, not their energies. Such exact ties did not come in the 312 shots of
 /// pooltool's that `tests/billiards_shots.rs` was run on.
 ///
 /// **Rounding.** pooltool evolves every ball to every event and detects from the evolved
@@ -297,10 +301,10 @@ pub fn simulate_shot(
     let mut at_this_instant = 0usize;
     let mut end = 0.0;
     let mut stopped = false;
-    // pooltool's collisions at once (see `Overlaps::CollideAtOnce`): the pairs found
+    // pooltool's collisions at once (see `ContactRule::Pooltool`): the pairs found
     // overlapping when their contact was last sought, in the order it would take them.
     let mut at_once: Vec<[usize; 2]> = Vec::new();
-    let at_once_rule = options.overlaps == Overlaps::CollideAtOnce;
+    let at_once_rule = options.contact_rule == ContactRule::Pooltool;
     if at_once_rule {
         let all: Vec<usize> = (0..n).collect();
         overlapping(&motions, params, &all, 0.0, &mut at_once);
@@ -471,7 +475,8 @@ fn collide(
 /// Appends to `pairs` each pair with a ball of `changed` that pooltool's ball–ball detector
 /// would collide at once at `t` (`get_next_ball_ball_collision`): neither ball pocketed, not
 /// both without translation (stationary or spinning), and their centres closer than the sum
-/// of their radii (`is_overlapping`). In pooltool's order: the pairs `(i, j)`, `i < j`, in
+/// of their radii (`is_overlapping`) or the leading coefficient of its quartic 0
+/// ([`ContactRule::Pooltool`]). In pooltool's order: the pairs `(i, j)`, `i < j`, in
 /// the order of `itertools.combinations` over the balls, skipping those already listed.
 fn overlapping(
     motions: &[BallPath],
@@ -496,11 +501,51 @@ fn overlapping(
             let d = a.position - b.position;
             // pooltool's norm3d: the heights are equal, so their difference adds an exact 0.
             let distance = (d.x * d.x + d.y * d.y + 0.0).sqrt();
-            if distance < params[i].radius + params[j].radius {
+            let overlap = distance < params[i].radius + params[j].radius;
+            let (ai, aj) = (
+                detector_acceleration(a, &params[i]),
+                detector_acceleration(b, &params[j]),
+            );
+            let (ax, ay) = (aj[0] - ai[0], aj[1] - ai[1]);
+            if overlap || ax * ax + ay * ay == 0.0 {
                 pairs.push([i, j]);
             }
         }
     }
+}
+
+/// A ball's acceleration `(a_x, a_y)` as pooltool's ball–ball detector forms it
+/// (`ball_ball_collision_coeffs` with `get_u`), where only whether two balls' are the same to
+/// the bit matters: `0` without translation; else `K·(u_0·cos φ − u_1·sin φ, u_0·sin φ +
+/// u_1·cos φ)` with `φ` the velocity's angle (in `[0, 2π)`), `K = −½·μ·g` (`μ` the sliding
+/// friction while sliding, else the rolling one) and `u` the unit slip turned by `−φ`
+/// (`(1, 0)` while rolling or without slip).
+fn detector_acceleration(state: &BallState, params: &BallParams) -> [f64; 2] {
+    let mu = match state.motion {
+        MotionState::Sliding => params.u_s,
+        MotionState::Rolling => params.u_r,
+        _ => return [0.0; 2],
+    };
+    let v = state.velocity;
+    let angle = v.y.atan2(v.x) - 0.0f64.atan2(1.0);
+    let phi = if angle < 0.0 {
+        2.0 * std::f64::consts::PI + angle
+    } else {
+        angle
+    };
+    let (sin, cos) = (phi.sin(), phi.cos());
+    let slip = slip_velocity(state, params.radius);
+    let u = if state.motion == MotionState::Rolling || (slip.x == 0.0 && slip.y == 0.0) {
+        [1.0, 0.0]
+    } else {
+        let n = (slip.x * slip.x + slip.y * slip.y + 0.0).sqrt();
+        let (x, y) = (slip.x / n, slip.y / n);
+        // The rotation by −φ: cos(−φ), sin(−φ) as pooltool's coordinate_rotation takes them.
+        let (s, c) = ((-phi).sin(), (-phi).cos());
+        [c * x + -s * y, s * x + c * y]
+    };
+    let k = -0.5 * mu * params.g;
+    [k * (u[0] * cos - u[1] * sin), k * (u[0] * sin + u[1] * cos)]
 }
 
 /// The transition from motion state `before` to `after`, if one leads there.
@@ -633,6 +678,29 @@ mod tests {
         degenerate.linear[0].0.p2 = degenerate.linear[0].0.p1;
         let err = run(&degenerate, &ball, &params, strike(0)).unwrap_err();
         assert_eq!((err.argument(), err.index()), ("linear", Some(0)));
+    }
+
+    #[test]
+    fn pooltools_detector_sees_equal_accelerations_by_the_velocitys_angle() {
+        let params = BallParams::default();
+        let rolling = |vx: f64, vy: f64| {
+            let w = Vector3::new(-vy / params.radius, vx / params.radius, 0.0);
+            BallState::new(
+                Vector2::zeros(),
+                Vector2::new(vx, vy),
+                w,
+                MotionState::Rolling,
+            )
+        };
+        let along = detector_acceleration(&rolling(0.5, 0.0), &params);
+        assert_eq!(along, detector_acceleration(&rolling(0.1, 0.0), &params));
+        // Below the x axis by a rounding, the angle is 2π: the same bits as along it...
+        let below = detector_acceleration(&rolling(0.1, -2e-18), &params);
+        assert_eq!(below[0], along[0]);
+        // ... above it, not.
+        assert_ne!(detector_acceleration(&rolling(0.1, 7e-16), &params), along);
+        let still = BallState::at_rest(Vector2::zeros());
+        assert_eq!(detector_acceleration(&still, &params), [0.0; 2]);
     }
 
     #[test]
