@@ -301,13 +301,13 @@ pub fn simulate_shot(
     let mut at_this_instant = 0usize;
     let mut end = 0.0;
     let mut stopped = false;
-    // pooltool's collisions at once (see `ContactRule::Pooltool`): the pairs found
-    // overlapping when their contact was last sought, in the order it would take them.
+    // pooltool's collisions at once (see `ContactRule::Pooltool`): the pairs it would collide
+    // at once when their contact was last sought, in the order it would take them.
     let mut at_once: Vec<[usize; 2]> = Vec::new();
     let at_once_rule = options.contact_rule == ContactRule::Pooltool;
     if at_once_rule {
         let all: Vec<usize> = (0..n).collect();
-        overlapping(&motions, params, &all, 0.0, &mut at_once);
+        collisions_at_once(&motions, params, &all, 0.0, &mut at_once);
     }
     loop {
         if events.len() >= max_events {
@@ -338,10 +338,10 @@ pub fn simulate_shot(
             Next::Calendar(event) => match event {
                 Event::Transition(transition) => {
                     let i = transition.ball;
-                    let reached = &motions[i].states()[transition.segment..];
+                    let states = motions[i].states();
                     let (Some(before), Some(after)) = (
-                        motions[i].states().get(transition.segment.wrapping_sub(1)),
-                        reached.first(),
+                        states.get(transition.segment.wrapping_sub(1)),
+                        states.get(transition.segment),
                     ) else {
                         return Err(unresolved(i, t));
                     };
@@ -389,7 +389,7 @@ pub fn simulate_shot(
                             (Some(after), ShotEventKind::Pocket(contact.index))
                         }
                         // The table has no planes.
-                        ObjectKind::Plane => (None, ShotEventKind::Stick),
+                        ObjectKind::Plane => return Err(unresolved(i, t)),
                     };
                     let after = after.ok_or_else(|| unresolved(i, t))?;
                     replace(&mut calendar, &mut motions, &[i], &[after], params, t)?;
@@ -410,7 +410,7 @@ pub fn simulate_shot(
         if at_once_rule {
             // As pooltool's cache after the event: the pairs of its balls sought again.
             at_once.retain(|pair| !pair.iter().any(|b| logged.balls.contains(b)));
-            overlapping(&motions, params, &logged.balls, t, &mut at_once);
+            collisions_at_once(&motions, params, &logged.balls, t, &mut at_once);
         }
         if at_this_instant > most_at_one_instant {
             let other = logged.balls.get(1).copied();
@@ -473,45 +473,60 @@ fn collide(
 }
 
 /// Appends to `pairs` each pair with a ball of `changed` that pooltool's ball–ball detector
-/// would collide at once at `t` (`get_next_ball_ball_collision`): neither ball pocketed, not
-/// both without translation (stationary or spinning), and their centres closer than the sum
-/// of their radii (`is_overlapping`) or the leading coefficient of its quartic 0
-/// ([`ContactRule::Pooltool`]). In pooltool's order: the pairs `(i, j)`, `i < j`, in
-/// the order of `itertools.combinations` over the balls, skipping those already listed.
-fn overlapping(
+/// would collide at once at `t` (`get_next_ball_ball_collision`; see [`at_once`]), in
+/// pooltool's order: the pairs `(i, j)`, `i < j`, in the order of `itertools.combinations`
+/// over the balls, skipping those already listed.
+fn collisions_at_once(
     motions: &[BallPath],
     params: &[BallParams],
     changed: &[usize],
     t: f64,
     pairs: &mut Vec<[usize; 2]>,
 ) {
-    let n = motions.len();
-    let states: Vec<BallState> = motions.iter().map(|m| m.state_at(t)).collect();
-    for i in 0..n {
-        for j in i + 1..n {
-            if !(changed.contains(&i) || changed.contains(&j)) || pairs.contains(&[i, j]) {
+    let changed: Vec<(usize, BallState)> = changed
+        .iter()
+        .map(|&b| (b, motions[b].state_at(t)))
+        .collect();
+    let mut found: Vec<[usize; 2]> = Vec::new();
+    for (o, motion) in motions.iter().enumerate() {
+        // Each other ball's state once, and only if some pair needs it.
+        let mut other = None;
+        for (b, state) in &changed {
+            let pair = [o.min(*b), o.max(*b)];
+            if *b == o || found.contains(&pair) || pairs.contains(&pair) {
                 continue;
             }
-            let (a, b) = (&states[i], &states[j]);
-            let out = |s: &BallState| s.motion == MotionState::Pocketed;
-            let still = |s: &BallState| !s.motion.translates();
-            if out(a) || out(b) || (still(a) && still(b)) {
-                continue;
-            }
-            let d = a.position - b.position;
-            // pooltool's norm3d: the heights are equal, so their difference adds an exact 0.
-            let distance = (d.x * d.x + d.y * d.y + 0.0).sqrt();
-            let overlap = distance < params[i].radius + params[j].radius;
-            let (ai, aj) = (
-                detector_acceleration(a, &params[i]),
-                detector_acceleration(b, &params[j]),
-            );
-            let (ax, ay) = (aj[0] - ai[0], aj[1] - ai[1]);
-            if overlap || ax * ax + ay * ay == 0.0 {
-                pairs.push([i, j]);
+            let other = *other.get_or_insert_with(|| motion.state_at(t));
+            let (first, second) = if *b < o {
+                (state, &other)
+            } else {
+                (&other, state)
+            };
+            if at_once([first, second], [&params[pair[0]], &params[pair[1]]]) {
+                found.push(pair);
             }
         }
     }
+    found.sort_unstable();
+    pairs.extend(found);
+}
+
+/// Whether pooltool's ball–ball detector collides two balls at once: neither pocketed, not
+/// both without translation (stationary or spinning), and their centres closer than the sum
+/// of their radii (`is_overlapping`) or their accelerations the same to the bit (the leading
+/// coefficient of its quartic 0; see [`ContactRule::Pooltool`]).
+fn at_once([a, b]: [&BallState; 2], [pa, pb]: [&BallParams; 2]) -> bool {
+    let out = |s: &BallState| s.motion == MotionState::Pocketed;
+    let still = |s: &BallState| !s.motion.translates();
+    if out(a) || out(b) || (still(a) && still(b)) {
+        return false;
+    }
+    let d = a.position - b.position;
+    // pooltool's norm3d: the heights are equal, so their difference adds an exact 0.
+    let distance = (d.x * d.x + d.y * d.y + 0.0).sqrt();
+    let (aa, ab) = (detector_acceleration(a, pa), detector_acceleration(b, pb));
+    let (ax, ay) = (ab[0] - aa[0], ab[1] - aa[1]);
+    distance < pa.radius + pb.radius || ax * ax + ay * ay == 0.0
 }
 
 /// A ball's acceleration `(a_x, a_y)` as pooltool's ball–ball detector forms it
