@@ -16,6 +16,8 @@ Shots, by kind (each from its own seed):
 * ``masse``: as ``object``, with the cue raised 5 to 35 degrees (a curved slide);
 * ``break``: pooltool's 9-ball rack (``get_rack``, seeded), the cue ball struck at 5 to
   8 m/s at the head ball, up to a degree off;
+* ``break8``: the same with pooltool's 8-ball rack (15 object balls; not in the committed
+  file, whose size it would double: ``--kind break8``);
 * ``straight``: the cue ball struck along an axis (``phi`` 0, 90, 180 or 270) straight at an
   object ball on the same line, so that both roll the same way after the collision: the two
   balls' accelerations are then equal, and pooltool's quartic, with a zero leading
@@ -55,7 +57,8 @@ import numpy as np
 import pooltool as pt
 
 OUT = Path(__file__).resolve().parent.parent / "tests" / "data" / "shot_cases.txt"
-KINDS = ("object", "rail", "pocket", "two", "masse", "break", "straight")
+KINDS = ("object", "rail", "pocket", "two", "masse", "break", "straight", "break8")
+COMMITTED = KINDS[:-1]  # the kinds of the committed file
 
 
 def fmt(*xs: float) -> str:
@@ -80,8 +83,9 @@ def towards(a: tuple[float, float], b) -> float:
     return math.degrees(math.atan2(b[1] - a[1], b[0] - a[0]))
 
 
-def rack(seed: int, table):
-    """pooltool's 9-ball rack, seeded: the ids (the cue ball first) and spots.
+def rack(seed: int, table, game=pt.GameType.NINEBALL):
+    """pooltool's rack of ``game`` (9-ball by default), seeded: the ids (the cue ball first)
+    and spots.
 
     pooltool gives the rack's spots ids in an order that hash randomisation changes from run
     to run, so the object balls are named here by their spots, "1" the nearest the cue ball
@@ -89,7 +93,7 @@ def rack(seed: int, table):
     """
     random.seed(seed)
     np.random.seed(seed)  # noqa: NPY002 (get_rack draws from the legacy global generator)
-    balls = pt.get_rack(pt.GameType.NINEBALL, table)
+    balls = pt.get_rack(game, table)
     spot = {i: tuple(float(x) for x in b.state.rvw[0, :2]) for i, b in balls.items()}
     rest = sorted((spot[i] for i in balls if i != "cue"), key=lambda p: (p[1], p[0]))
     spots = [spot["cue"], *rest]
@@ -99,8 +103,9 @@ def rack(seed: int, table):
 def shot_of(kind: str, seed: int, table, R: float):
     """The balls' ids and spots and the strike (v0, phi, theta, a, b) of one shot."""
     rng = np.random.default_rng([KINDS.index(kind), seed])
-    if kind == "break":
-        ids, spots = rack(seed, table)
+    if kind in ("break", "break8"):
+        game = pt.GameType.NINEBALL if kind == "break" else pt.GameType.EIGHTBALL
+        ids, spots = rack(seed, table, game)
         phi = towards(spots[0], spots[1]) + float(rng.uniform(-1.0, 1.0))
         v0 = float(rng.uniform(5.0, 8.0))
         return ids, spots, (v0, phi % 360.0, 0.0, 0.0, float(rng.uniform(-0.3, 0.3)))
@@ -185,7 +190,7 @@ def play(name: str, ids, spots, strike, table, names: dict) -> list[str]:
     return lines
 
 
-def cases(count: int, kinds: tuple[str, ...] = KINDS) -> list[str]:
+def cases(count: int, kinds: tuple[str, ...] = COMMITTED) -> list[str]:
     """The file's lines: the table, then ``count`` shots of each of ``kinds``."""
     table = pt.Table.default()
     p = pt.BallParams.default()
@@ -209,7 +214,7 @@ def main() -> None:
     parser.add_argument("--out", type=Path, default=OUT)
     parser.add_argument("--kind", choices=KINDS, action="append", help="only these kinds")
     args = parser.parse_args()
-    lines = cases(args.count, tuple(args.kind or KINDS))
+    lines = cases(args.count, tuple(args.kind or COMMITTED))
     args.out.write_text("\n".join(lines) + "\n")
     print(f"wrote {args.out} ({len(lines)} lines)")
 
