@@ -483,24 +483,28 @@ fn collisions_at_once(
     t: f64,
     pairs: &mut Vec<[usize; 2]>,
 ) {
-    let changed: Vec<(usize, BallState)> = changed
-        .iter()
-        .map(|&b| (b, motions[b].state_at(t)))
-        .collect();
+    // Each ball's state and detector acceleration once per call (the trigonometry of the
+    // acceleration is most of the cost).
+    let seen = |b: usize| {
+        let state = motions[b].state_at(t);
+        (state, detector_acceleration(&state, &params[b]))
+    };
+    let changed: Vec<(usize, (BallState, [f64; 2]))> =
+        changed.iter().map(|&b| (b, seen(b))).collect();
     let mut found: Vec<[usize; 2]> = Vec::new();
-    for (o, motion) in motions.iter().enumerate() {
-        // Each other ball's state once, and only if some pair needs it.
+    for o in 0..motions.len() {
+        // Each other ball's only if some pair needs it.
         let mut other = None;
-        for (b, state) in &changed {
+        for (b, ball) in &changed {
             let pair = [o.min(*b), o.max(*b)];
             if *b == o || found.contains(&pair) || pairs.contains(&pair) {
                 continue;
             }
-            let other = *other.get_or_insert_with(|| motion.state_at(t));
+            let other = *other.get_or_insert_with(|| seen(o));
             let (first, second) = if *b < o {
-                (state, &other)
+                (ball, &other)
             } else {
-                (&other, state)
+                (&other, ball)
             };
             if at_once([first, second], [&params[pair[0]], &params[pair[1]]]) {
                 found.push(pair);
@@ -511,11 +515,15 @@ fn collisions_at_once(
     pairs.extend(found);
 }
 
-/// Whether pooltool's ball–ball detector collides two balls at once: neither pocketed, not
-/// both without translation (stationary or spinning), and their centres closer than the sum
-/// of their radii (`is_overlapping`) or their accelerations the same to the bit (the leading
-/// coefficient of its quartic 0; see [`ContactRule::Pooltool`]).
-fn at_once([a, b]: [&BallState; 2], [pa, pb]: [&BallParams; 2]) -> bool {
+/// Whether pooltool's ball–ball detector collides two balls (each its state and
+/// [`detector_acceleration`]) at once: neither pocketed, not both without translation
+/// (stationary or spinning), and their centres closer than the sum of their radii
+/// (`is_overlapping`) or their accelerations the same to the bit (the leading coefficient of
+/// its quartic 0; see [`ContactRule::Pooltool`]).
+fn at_once(
+    [(a, acc_a), (b, acc_b)]: [&(BallState, [f64; 2]); 2],
+    [pa, pb]: [&BallParams; 2],
+) -> bool {
     let out = |s: &BallState| s.motion == MotionState::Pocketed;
     let still = |s: &BallState| !s.motion.translates();
     if out(a) || out(b) || (still(a) && still(b)) {
@@ -524,8 +532,7 @@ fn at_once([a, b]: [&BallState; 2], [pa, pb]: [&BallParams; 2]) -> bool {
     let d = a.position - b.position;
     // pooltool's norm3d: the heights are equal, so their difference adds an exact 0.
     let distance = (d.x * d.x + d.y * d.y + 0.0).sqrt();
-    let (aa, ab) = (detector_acceleration(a, pa), detector_acceleration(b, pb));
-    let (ax, ay) = (ab[0] - aa[0], ab[1] - aa[1]);
+    let (ax, ay) = (acc_b[0] - acc_a[0], acc_b[1] - acc_a[1]);
     distance < pa.radius + pb.radius || ax * ax + ay * ay == 0.0
 }
 
