@@ -133,6 +133,12 @@ pub enum InputErrorKind {
     NonPositiveGravity(f64),
     /// A cue's contact point off the ball: `a² + b² > 1` (the value is `a² + b²`).
     ContactOffBall(f64),
+    /// A contact that the event's resolver could not resolve (for pooltool's cushion models:
+    /// where pooltool fails, as for a ball not moving into the cushion), at `time`.
+    UnresolvedContact {
+        /// When the contact came.
+        time: f64,
+    },
 }
 
 impl InputErrorKind {
@@ -177,6 +183,7 @@ impl InputErrorKind {
             Self::TableDimension { .. } => "table_dimension",
             Self::NonPositiveGravity(_) => "non_positive_gravity",
             Self::ContactOffBall(_) => "contact_off_ball",
+            Self::UnresolvedContact { .. } => "unresolved_contact",
         }
     }
 
@@ -204,7 +211,7 @@ impl InputErrorKind {
             Self::InvalidSide(side) => Some(side as f64),
             Self::TableDimension { value, .. } => Some(value),
             Self::DecreasingStart { start, .. } | Self::StartsDiffer { start, .. } => Some(start),
-            Self::BeforeCurrentTime { time, .. } => Some(time),
+            Self::BeforeCurrentTime { time, .. } | Self::UnresolvedContact { time } => Some(time),
             Self::IndexOutOfRange { index, .. } => Some(index as f64),
             Self::RepeatedIndex(i) => Some(i as f64),
             Self::EmptyBox { lo, .. } => Some(lo),
@@ -476,6 +483,11 @@ impl fmt::Display for InputErrorKind {
                 f,
                 "the contact point must lie on the ball (a² + b² ≤ 1), got a² + b² = {}",
                 Brief(x)
+            ),
+            Self::UnresolvedContact { time } => write!(
+                f,
+                "the contact at t = {} could not be resolved by its model",
+                Brief(time)
             ),
         }
     }

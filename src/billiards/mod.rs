@@ -40,6 +40,8 @@
 //! | `stick_ball.rs` | [`Cue`], [`CueSpecs`] (a stroke and the cue) and [`StickBallResolver`], the trait of stick–ball models |
 //! | `instantaneous_point.rs` | [`InstantaneousPoint`], pooltool's stick–ball model, and its [`squirt_angle`] |
 //! | `ball_path.rs` | [`ball_path`], [`BallPath`]: the motion until the ball stops as constant-acceleration segments, with the state at each segment's start |
+//! | `table.rs` | [`BilliardTable`]: straight and rounded cushions and pockets, as the calendar's table; [`side_of_direction`] (pooltool's cushion `direction`) |
+//! | `shot.rs` | [`simulate_shot`]: pooltool's event loop on the calendar, from the cue's strike until every ball is at rest or pocketed ([`Shot`], [`ShotEvent`], [`ShotEventKind`], [`ShotOptions`], [`ShotResolvers`]) |
 //!
 //! ```
 //! use ballcollide::billiards::{BallParams, BallState, MotionState, ball_path, evolve};
@@ -71,10 +73,12 @@ mod frictional_inelastic;
 mod instantaneous_point;
 mod params;
 mod root;
+mod shot;
 mod slip_velocity;
 mod state;
 mod stick_ball;
 mod stronge;
+mod table;
 mod transition;
 mod transition_time;
 
@@ -94,9 +98,13 @@ pub use evolve_spin::evolve_spin;
 pub use frictional_inelastic::{AlciatoreFriction, FrictionalInelastic};
 pub use instantaneous_point::{InstantaneousPoint, squirt_angle};
 pub use params::BallParams;
+pub use shot::{
+    ContactRule, Shot, ShotEvent, ShotEventKind, ShotOptions, ShotResolvers, simulate_shot,
+};
 pub use slip_velocity::slip_velocity;
 pub use state::{BallState, MotionState};
 pub use stick_ball::{Cue, CueSpecs, StickBallResolver};
 pub use stronge::compliant_collinear_collision;
+pub use table::{BilliardTable, side_of_direction};
 pub use transition::{NextTransition, TransitionKind, next_transition};
 pub use transition_time::{roll_time, slide_time, spin_time};
