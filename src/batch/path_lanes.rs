@@ -88,7 +88,8 @@ struct LaneBounds<S: Simd, const D: usize, const K: usize> {
 /// values, `pos`, `vel`, `acc` of `n·K` rows, as
 /// [`path_collision_times`](super::path_collision_times) checks them), per-pair `radius` and
 /// `t_max` of `n` values, and `first + LANES ≤ n`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 pub(crate) fn settled<S: Simd, const D: usize, const K: usize>(
     s: S,
     pairs: &PathPairs<'_, D>,
@@ -151,13 +152,15 @@ pub(crate) fn settled<S: Simd, const D: usize, const K: usize>(
 }
 
 /// Lanes whose value is finite.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn finite<S: Simd>(s: S, x: S::V) -> Mask {
     s.lt(s.abs(x), s.splat(f64::INFINITY))
 }
 
 /// The per-pair values of pairs `first..first + LANES`, a lane each.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn lanes_of<S: Simd>(s: S, values: PerPair<'_>, first: usize) -> S::V {
     let mut lanes = [0.0; LANES];
     for (l, lane) in lanes.iter_mut().enumerate() {
@@ -174,7 +177,8 @@ const AHEAD: usize = 16 * LANES;
 
 /// Asks for the `width·LANES` values from `at + width·AHEAD` in the cache (nothing past the
 /// end; a hint, on x86-64 only).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn ahead(values: &[f64], at: usize, width: usize) {
     #[cfg(target_arch = "x86_64")]
     {
@@ -204,7 +208,8 @@ fn ahead(values: &[f64], at: usize, width: usize) {
 /// # Panics
 /// If the side's rows do not hold paths `first..first + LANES` of `K` rows each (as
 /// [`settled`] promises).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn lane_rows<S: Simd, const D: usize, const K: usize>(
     s: S,
     side: &PathRows<'_, D>,
@@ -235,7 +240,8 @@ fn lane_rows<S: Simd, const D: usize, const K: usize>(
 
 /// A block's `K` rows of `D` values, from their values in the order of the rows. (Loops,
 /// not `from_fn`: no closure in lane code.)
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn by_row<S: Simd, const D: usize, const K: usize>(s: S, flat: [S::V; MOST]) -> [[S::V; D]; K] {
     let mut rows = [[s.zero(); D]; K];
     for (k, row) in rows.iter_mut().enumerate() {
@@ -249,7 +255,8 @@ fn by_row<S: Simd, const D: usize, const K: usize>(s: S, flat: [S::V; MOST]) -> 
 ///
 /// # Panics
 /// If `values` holds fewer than `LANES·width` values.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn transposed<S: Simd>(s: S, values: &[f64], width: usize) -> [S::V; MOST] {
     match width {
         1 => s.transposed::<1>(values),
@@ -265,7 +272,8 @@ fn transposed<S: Simd>(s: S, values: &[f64], width: usize) -> [S::V; MOST] {
 /// The bounds of a block's paths, as `PathBounds::set_to` forms them for paths whose rows are
 /// all used and whose segments are all non-empty, and the checks of `Path::from_rows` in that
 /// case (every value finite, starts increasing).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn lane_bounds<S: Simd, const D: usize, const K: usize>(
     s: S,
     rows: &LaneRows<S, D, K>,
@@ -335,7 +343,8 @@ fn lane_bounds<S: Simd, const D: usize, const K: usize>(
 
 /// `bernstein_hull` (`collision::path_bounds`) lane-wise: the least and greatest of `p`,
 /// `p + ½·v·L` and `p + (v + ½·a·L)·L`, with its selects (`x < y ? x : y` is `min_pd(x, y)`).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn bernstein_hull<S: Simd>(s: S, p: S::V, v: S::V, a: S::V, length: S::V) -> [S::V; 2] {
     let half = s.splat(0.5);
     let middle = s.add(p, s.mul(s.mul(half, v), length));
@@ -345,7 +354,8 @@ fn bernstein_hull<S: Simd>(s: S, p: S::V, v: S::V, a: S::V, length: S::V) -> [S:
 }
 
 /// Lanes whose path ends at rest (`rests_at_end` in `collision::chord_normals`).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn rests_at_end<S: Simd, const D: usize, const K: usize>(s: S, rows: &LaneRows<S, D, K>) -> Mask {
     let zero = s.zero();
     let mut rests: Mask = !0;
@@ -358,7 +368,8 @@ fn rests_at_end<S: Simd, const D: usize, const K: usize>(s: S, rows: &LaneRows<S
 
 /// `apart_across_chord_of` (`collision::chord_normals`) lane-wise, for taken paths that end
 /// at rest: the normal of `own`'s chord, and the spans on it.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn apart_across_chord<S: Simd, const D: usize, const K: usize>(
     s: S,
     own: &LaneRows<S, D, K>,
@@ -387,7 +398,8 @@ fn apart_across_chord<S: Simd, const D: usize, const K: usize>(
 }
 
 /// `normal·x` lane-wise, summed in the order of the axes (as `along` does).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn along<S: Simd, const D: usize>(s: S, normal: &[S::V; D], x: &[S::V; D]) -> S::V {
     let mut sum = s.mul(normal[0], x[0]);
     for i in 1..D {
@@ -398,7 +410,8 @@ fn along<S: Simd, const D: usize>(s: S, normal: &[S::V; D], x: &[S::V; D]) -> S:
 
 /// `span` (`collision::chord_normals`) lane-wise: the least and greatest of `normal·x` along
 /// the path (every segment non-empty, the last at rest).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn span<S: Simd, const D: usize, const K: usize>(
     s: S,
     rows: &LaneRows<S, D, K>,

@@ -48,7 +48,8 @@ struct LaneGap<S: Simd, const D: usize> {
 
 /// Which of the lanes `open` have every window proven apart, at contact distance `radius`,
 /// with the pair's whole-path `reach` for the segment boxes (both as `settled` forms them).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 pub(super) fn windows_apart<S: Simd, const D: usize, const K: usize>(
     s: S,
     a: &LaneSide<'_, S, D, K>,
@@ -93,7 +94,8 @@ pub(super) fn windows_apart<S: Simd, const D: usize, const K: usize>(
 }
 
 /// Where segment `k` of `side` ends: where the next starts (the last, `infinity`: never).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn end<S: Simd, const D: usize, const K: usize>(
     side: &LaneSide<'_, S, D, K>,
     k: usize,
@@ -108,21 +110,24 @@ fn end<S: Simd, const D: usize, const K: usize>(
 
 /// Segment `(p, v, a)` after `t`: `p + (v + a·(½·t))·t` and `v + a·t`, as
 /// `Segment::position_at` and `velocity_at` form them.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn moved<S: Simd>(s: S, p: S::V, v: S::V, a: S::V, t: S::V) -> (S::V, S::V) {
     let mid = s.add(v, s.mul(a, s.mul(s.splat(0.5), t)));
     (s.add(p, s.mul(mid, t)), s.add(v, s.mul(a, t)))
 }
 
 /// `p + (v + ½·a·t)·t` (as `axis_range` forms it).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn axis_at<S: Simd>(s: S, p: S::V, v: S::V, a: S::V, t: S::V) -> S::V {
     s.add(p, s.mul(s.add(v, s.mul(s.mul(s.splat(0.5), a), t)), t))
 }
 
 /// `PathBounds::segments_apart` lane-wise: segment `i`'s box of `a` and segment `j`'s of `b`
 /// farther apart than `reach` on some axis.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn segments_apart<S: Simd, const D: usize, const K: usize>(
     s: S,
     a: &LaneBoxes<S, D, K>,
@@ -141,7 +146,8 @@ fn segments_apart<S: Simd, const D: usize, const K: usize>(
 
 /// `window_gap` (`collision::path_contact`) lane-wise: A's segment `i` less B's segment `j`
 /// at `start`, each by `Segment::position_at` and `velocity_at`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn window_gap<S: Simd, const D: usize, const K: usize>(
     s: S,
     a: &LaneRows<S, D, K>,
@@ -169,7 +175,8 @@ fn window_gap<S: Simd, const D: usize, const K: usize>(
 
 /// `apart_on_window` (`collision::window_box`) lane-wise, where no underflow can count (else
 /// not proven).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn apart_on_window<S: Simd, const D: usize>(
     s: S,
     gap: &LaneGap<S, D>,
@@ -204,7 +211,8 @@ fn apart_on_window<S: Simd, const D: usize>(
 
 /// `apart_across_window_chord` (`collision::window_chord`) lane-wise, where no underflow can
 /// count (else not proven).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn apart_across_window_chord<S: Simd, const D: usize>(
     s: S,
     gap: &LaneGap<S, D>,
@@ -263,13 +271,15 @@ fn apart_across_window_chord<S: Simd, const D: usize>(
 
 /// Lanes whose `reach` is beyond what underflow can cost boxes of `spread` (`with_underflow`
 /// leaves it as it is).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn plain<S: Simd>(s: S, reach: S::V, spread: S::V) -> Mask {
     s.ge(reach, s.mul(s.splat(NORMAL_FLOOR), spread))
 }
 
 /// Lanes whose squared reach is above [`NORMAL_FLOOR`] (no slack for underflowing squares).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[cfg_attr(debug_assertions, inline(never))]
 fn square_normal<S: Simd>(s: S, far: S::V) -> Mask {
     s.gt(far, s.splat(NORMAL_FLOOR))
 }

@@ -150,15 +150,26 @@ mod tests {
         assert!(apart_on_window(&g, 0.35));
     }
 
+    /// `2^e`, exactly, from its bits (`powi` is exact only where the compiler folds it: an
+    /// unoptimised build computes `2^-1070` as `1 / 2^1070`, which overflows).
+    fn two_to(e: i32) -> f64 {
+        if e >= -1022 {
+            f64::from_bits(((e + 1023) as u64) << 52)
+        } else {
+            f64::from_bits(1 << (e + 1074))
+        }
+    }
+
     #[test]
     fn the_underflow_margins_are_the_powers_of_two_they_say() {
-        assert_eq!(UNDERFLOW, 2f64.powi(-1070));
-        assert_eq!(SQUARE_SLACK, 2f64.powi(-1070));
-        assert_eq!(NORMAL_FLOOR, 2f64.powi(-1000));
+        assert_eq!(two_to(-1000) * two_to(-74), two_to(-1074));
+        assert_eq!(UNDERFLOW, two_to(-1070));
+        assert_eq!(SQUARE_SLACK, two_to(-1070));
+        assert_eq!(NORMAL_FLOOR, two_to(-1000));
         // The absolute part counts only where it can matter.
         assert_eq!(with_underflow(1e-3, 4.0), 1e-3);
-        let tiny = 2f64.powi(-1060);
-        assert_eq!(with_underflow(tiny, 4.0), tiny + 4.0 * 2f64.powi(-1070));
+        let tiny = two_to(-1060);
+        assert_eq!(with_underflow(tiny, 4.0), tiny + 4.0 * two_to(-1070));
     }
 
     #[test]

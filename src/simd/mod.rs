@@ -21,6 +21,12 @@
 //! portable level is the reference; the tests run every level the CPU has against it
 //! ([`test_levels`]).
 //!
+//! The stages are `#[inline(always)]` in optimised builds (a stage left out of line is
+//! compiled without the level's features, and its operations become calls) and
+//! `#[inline(never)]` in builds with debug assertions: unoptimised code gives every inlined
+//! temporary its own stack slot, and the whole batch inlined into one shim took a 2 MiB frame,
+//! more than a test thread's or a rayon worker's stack.
+//!
 //! Why a small trait of our own rather than `pulp` or `fearless_simd`: the stages' proofs
 //! depend on the exact operations, their order and their NaN and signed-zero semantics
 //! (`minpd`'s, not IEEE `minNum`'s, which is what generic SIMD crates give on NEON); the
