@@ -696,7 +696,8 @@ pub(crate) fn check_ball_arrays(
     t.check_shared("t", finite)
 }
 
-fn check_len(argument: &'static str, len: usize, n: usize) -> Result<(), InputError> {
+/// `len == n`, else a length mismatch naming `argument`.
+pub(crate) fn check_len(argument: &'static str, len: usize, n: usize) -> Result<(), InputError> {
     if len == n {
         Ok(())
     } else {

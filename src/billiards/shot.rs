@@ -238,13 +238,7 @@ pub fn simulate_shot(
     options: &ShotOptions,
 ) -> Result<Shot, InputError> {
     let n = balls.len();
-    if params.len() != n {
-        let kind = InputErrorKind::LengthMismatch {
-            expected: n,
-            found: params.len(),
-        };
-        return Err(InputError::new("params", kind));
-    }
+    crate::batch::check_len("params", params.len(), n)?;
     // A ball without sliding or rolling friction that is set moving may go on for ever,
     // between the cushions.
     let moves = options.strike.is_some() || balls.iter().any(|b| b.motion.translates());

@@ -9,6 +9,7 @@ simulates.
 from __future__ import annotations
 
 import importlib.util
+import math
 import sys
 from collections.abc import Iterator
 from pathlib import Path
@@ -24,6 +25,22 @@ TOUCH = 1e-9  # m: |distance − (R₁ + R₂)| at a contact, and the overlap al
 SAME_TIME = 1e-9  # s: two detectors' times of one event
 
 POCKETED = 4
+
+
+def same_words(now: list[str], then: list[str], tolerance: float) -> bool:
+    """Two reference lines' words: each the same, or numbers within ``tolerance`` (relative
+    above 1): what the committed tables allow another CPU's BLAS or numba to round otherwise."""
+
+    def same(a: str, b: str) -> bool:
+        if a == b:
+            return True
+        try:
+            x, y = float(a), float(b)
+        except ValueError:
+            return False
+        return math.isclose(x, y, rel_tol=tolerance, abs_tol=tolerance)
+
+    return all(map(same, now, then))
 
 
 def script(relative: str) -> Any:

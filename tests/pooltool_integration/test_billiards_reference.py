@@ -9,16 +9,15 @@ otherwise on another CPU).
 
 from __future__ import annotations
 
-import math
-
 import pytest
 
 pytest.importorskip("pooltool")
 
-from .reference import ROOT, script
+from .reference import ROOT, same_words, script
 
 TABLE = ROOT / "tests" / "data" / "billiards_cases.txt"
 COUNT = 200  # cases of each kind drawn again
+TOLERANCE = 1e-12  # numbers of a line another CPU may round otherwise (relative above 1)
 
 
 def committed() -> dict[str, list[str]]:
@@ -28,17 +27,6 @@ def committed() -> dict[str, list[str]]:
         if line and not line.startswith("#"):
             kinds.setdefault(line.split()[0], []).append(line)
     return kinds
-
-
-def close(a: str, b: str) -> bool:
-    """Two words of a line: the same, or numbers within 1e-12 (relative above 1)."""
-    if a == b:
-        return True
-    try:
-        x, y = float(a), float(b)
-    except ValueError:
-        return False
-    return math.isclose(x, y, rel_tol=1e-12, abs_tol=1e-12)
 
 
 def test_the_table_is_what_pooltool_computes() -> None:
@@ -55,7 +43,7 @@ def test_the_table_is_what_pooltool_computes() -> None:
             assert inputs_now == inputs_then, "the same random inputs"
             words_now, words_then = outputs_now.split(), outputs_then.split()
             assert len(words_now) == len(words_then), (ours, theirs)
-            assert all(map(close, words_now, words_then)), (ours, theirs)
+            assert same_words(words_now, words_then, TOLERANCE), (ours, theirs)
             differing += outputs_now != outputs_then
     # On the machine that wrote the table, every output is the same to the bit.
     print(f"{differing} of {sum(map(len, fresh.values()))} lines not equal to the bit")

@@ -8,27 +8,15 @@ with numbers within ``1e-9`` (pooltool's BLAS and numba may round otherwise on a
 
 from __future__ import annotations
 
-import math
-
 import pytest
 
 pytest.importorskip("pooltool")
 
-from .reference import ROOT, script
+from .reference import ROOT, same_words, script
 
 FILE = ROOT / "tests" / "data" / "shot_cases.txt"
 COUNT = 2  # shots of each kind played again
-
-
-def close(a: str, b: str) -> bool:
-    """Two words of a line: the same, or numbers within 1e-9 (relative above 1)."""
-    if a == b:
-        return True
-    try:
-        x, y = float(a), float(b)
-    except ValueError:
-        return False
-    return math.isclose(x, y, rel_tol=1e-9, abs_tol=1e-9)
+TOLERANCE = 1e-9  # numbers of a line another CPU may round otherwise (relative above 1)
 
 
 def shots(lines: list[str]) -> dict[str, list[str]]:
@@ -55,4 +43,4 @@ def test_the_shots_are_what_pooltool_simulates() -> None:
         for now, before in zip(lines, then):
             words_now, words_then = now.split(), before.split()
             assert len(words_now) == len(words_then), (now, before)
-            assert all(map(close, words_now, words_then)), (now, before)
+            assert same_words(words_now, words_then, TOLERANCE), (now, before)
