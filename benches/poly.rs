@@ -3,7 +3,7 @@
 //!
 //! Run: `cargo bench --bench poly`. Besides the timings it prints, once, how many real roots
 //! `roots` misses (or reports that are not roots) compared with `solve_quartic`, whose roots
-//! are checked against high-precision references in `tests/poly_reference.rs`.
+//! are checked against high-precision references in `tests/reference/poly.rs`.
 
 use ballcollide::poly::solve_quartic;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};

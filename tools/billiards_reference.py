@@ -8,7 +8,7 @@ spin decay (``_evolve_perpendicular_spin_component``), the slide and the roll
 (``evolve_ball_motion``), and a lone ball's transitions until it stops, chained as its
 ``simulate`` loop chains them (``_next_transition``, ``evolve_ball_motion`` over the time to
 the event, ``CanonicalTransition.resolve``).  It writes inputs and outputs to
-``tests/data/billiards_cases.txt``, which ``tests/billiards_reference.rs`` reads.  It does not
+``tests/data/billiards_cases.txt``, which ``tests/reference/billiards.rs`` reads.  It does not
 import ballcollide.  It needs pooltool (run it in ``.venv-pooltool``, made by
 ``scripts/install-pooltool``).
 

@@ -23,7 +23,7 @@ when POLY_CASES names it (the committed file is checked otherwise):
 
         python3 tools/poly_reference.py --only quartic-tiny-coeffs --count 100000 --seed 7 \
             --out /tmp/tiny.txt
-        POLY_CASES=/tmp/tiny.txt cargo test --release --test poly_reference
+        POLY_CASES=/tmp/tiny.txt cargo test --release --test reference poly::
 """
 
 import argparse

@@ -2,7 +2,7 @@
 
 This script plays seeded shots on pooltool's default table (``Table.default()``, the 7-foot
 pocket table) with pooltool's own ``simulate`` and default physics, and writes each shot's
-inputs and event sequence to ``tests/data/shot_cases.txt``, which ``tests/billiards_shots.rs``
+inputs and event sequence to ``tests/data/shot_cases.txt``, which ``tests/reference/shots.rs``
 reads and replays with ``simulate_shot``.  It does not import ballcollide.  It needs pooltool
 (run it in ``.venv-pooltool``, made by ``scripts/install-pooltool``).
 
@@ -43,7 +43,7 @@ Usage::
     .venv-pooltool/bin/python tools/shot_reference.py --count 2  # the first 2 of each kind
     .venv-pooltool/bin/python tools/shot_reference.py --count 200 --kind break --out /tmp/b.txt
 
-(``tests/billiards_shots.rs`` reads another file named by ``BALLCOLLIDE_SHOT_CASES``.)
+(``tests/reference/shots.rs`` reads another file named by ``BALLCOLLIDE_SHOT_CASES``.)
 """
 
 from __future__ import annotations

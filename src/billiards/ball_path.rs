@@ -94,7 +94,7 @@ impl BallPath {
 /// velocity, which pooltool never makes, does not move.
 ///
 /// The centre's positions and velocities on the path agree with [`evolve`](super::evolve) to a
-/// few roundings (the path's segment formula against pooltool's, see `tests/billiards.rs`).
+/// few roundings (the path's segment formula against pooltool's, see `tests/integration/billiards.rs`).
 ///
 /// # Errors
 /// An [`InputError`] naming the first offending field of `params` ([`BallParams::check`]) or

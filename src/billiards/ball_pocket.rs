@@ -107,7 +107,7 @@ pub trait BallPocketResolver {
 /// Example: [`BallPocketResolver`].
 ///
 /// Checked against pooltool's own `resolve` on 2,000 random balls and pockets
-/// (`tests/billiards_reference.rs`): the same state to the bit (the arithmetic is the same:
+/// (`tests/reference/billiards.rs`): the same state to the bit (the arithmetic is the same:
 /// none, but for the sign of the depth), and pooltool's pocket holds the ball after each.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct CanonicalBallPocket;

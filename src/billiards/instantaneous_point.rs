@@ -21,7 +21,7 @@ use crate::error::{InputError, finite};
 /// before is kept.
 ///
 /// Checked against pooltool's own `resolve` on 2,000 random strokes, cues and balls
-/// (`tests/billiards_reference.rs`): the same velocity and spin to the bit in 1,998; in the
+/// (`tests/reference/billiards.rs`): the same velocity and spin to the bit in 1,998; in the
 /// other two, within 6.1e-17 of their scale (the ball's speed plus its spin's at the surface;
 /// over the radius for spins), each differing component within 1.6e-16 of itself; the squirt
 /// angle equal in 1,997, within 1.9e-16 of itself in the rest. Not always to the bit, because

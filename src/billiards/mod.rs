@@ -13,7 +13,7 @@
 //! functions here compute what pooltool's do, to the bit where the arithmetic can be the same
 //! (the times, the roll, the spin, the placing of colliding balls and their friction), and to
 //! a few roundings where pooltool's goes through rotations and BLAS (the slide, the
-//! collision); `tests/billiards_reference.rs` checks them against pooltool's own functions on
+//! collision); `tests/reference/billiards.rs` checks them against pooltool's own functions on
 //! thousands of cases (`tools/billiards_reference.py`).
 //!
 //! ## The map

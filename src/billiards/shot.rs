@@ -195,7 +195,7 @@ pub struct Shot {
 /// transition, its cushion and pocket contacts, its collisions). So one ball's transition
 /// comes before its contacts as in pooltool, but a tie between two balls' events goes by
 /// their indices, not their energies. Such exact ties did not come in the 312 shots of
-/// pooltool's that `tests/billiards_shots.rs` was run on.
+/// pooltool's that `tests/reference/shots.rs` was run on.
 ///
 /// **Rounding.** pooltool evolves every ball to every event and detects from the evolved
 /// states; here each ball follows its path from its last change. Their times differ by

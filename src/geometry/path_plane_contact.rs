@@ -132,7 +132,7 @@ mod tests {
     #[test]
     fn a_contact_at_a_first_start_of_minus_zero_is_at_plus_zero() {
         // Beyond the line x = 0 (touched from x > 0) and moving deeper, from t = −0: a
-        // contact at once, at +0 (found by the invariants of tests/invariants_geometry.rs).
+        // contact at once, at +0 (found by the invariants of tests/integration/invariants_geometry.rs).
         let path = vec![Segment::new(
             -0.0,
             Vector2::zeros(),

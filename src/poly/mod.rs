@@ -16,7 +16,7 @@
 //! All of them rescale coefficients and variable by exact powers of two, so coefficients from
 //! 1e-300 to 1e300 work, and treat a non-finite coefficient as "no polynomial": no root.
 //! Exact multiple roots come back real and repeated. Accuracy against high-precision
-//! references is measured in `tests/poly_reference.rs` and recorded in `docs/poly-accuracy.md`.
+//! references is measured in `tests/reference/poly.rs` and recorded in `docs/poly-accuracy.md`.
 
 mod bracketed;
 mod cubic;

@@ -1,5 +1,5 @@
 """The committed table of pooltool's answers (``tests/data/billiards_cases.txt``, read by
-``tests/billiards_reference.rs``) is what the installed pooltool computes.
+``tests/reference/billiards.rs``) is what the installed pooltool computes.
 
 The first cases of each kind are drawn again by ``tools/billiards_reference.py`` and asked of
 pooltool again, here: the same inputs to the bit, and the same outputs (to the bit, or within

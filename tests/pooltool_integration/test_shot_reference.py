@@ -1,5 +1,5 @@
 """The committed shots of pooltool (``tests/data/shot_cases.txt``, read by
-``tests/billiards_shots.rs``) are what the installed pooltool simulates.
+``tests/reference/shots.rs``) are what the installed pooltool simulates.
 
 The first shots of each kind are played again by ``tools/shot_reference.py``: the same
 inputs and events to the bit on the machine that wrote the file, and elsewhere the same lines

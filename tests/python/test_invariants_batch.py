@@ -1,6 +1,6 @@
 """collision_times over the whole float range (hypothesis): each pair's time is collision_time's,
 bit for bit, on one thread and on two, with shared or per-pair parameters; valid input never
-raises. The Rust fuzz target ``batch`` and tests/invariants_batch.rs check the same."""
+raises. The Rust fuzz target ``batch`` and tests/integration/invariants_batch.rs check the same."""
 
 from __future__ import annotations
 

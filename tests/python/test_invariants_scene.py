@@ -1,7 +1,7 @@
 """The scene queries over the whole float range (hypothesis): pairwise_collision_times equals
 the brute-force collision_time loop bit for bit, on one thread and on two; earliest_collision
 and first_contacts are read off it with the documented tie-breaking; valid input never raises.
-The Rust fuzz target ``scene`` and tests/invariants_scene.rs check the same."""
+The Rust fuzz target ``scene`` and tests/integration/invariants_scene.rs check the same."""
 
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
 """``simulate`` always moves on, ends, and never lets balls sink into each other. The Rust
-suite (tests/simulation_progress.rs) has the families of cases; these are the reported
+suite (tests/integration/simulation_progress.rs) has the families of cases; these are the reported
 reproducers through the Python call (Ctrl-C: tests/python/test_interrupt.py)."""
 
 import numpy as np

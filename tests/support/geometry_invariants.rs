@@ -1,6 +1,6 @@
 //! The invariants of the static-geometry entry points (`batch::path_geometry_times`,
 //! `geometry::path_table_contact` and the object constructors), checked by the fuzz target
-//! `geometry` (`fuzz/`) and by the property test `tests/invariants_geometry.rs`: one
+//! `geometry` (`fuzz/`) and by the property test `tests/integration/invariants_geometry.rs`: one
 //! implementation for both.
 //!
 //! For 1 to 3 paths of 1 to 6 segments in 2-D or 3-D and up to 3 objects of each kind, any

@@ -1,6 +1,6 @@
 //! One pair, two queries (issue 39): friction balls built so that their depth is known without a
 //! reference, and the invariant that `collision_time` and `path_collision_time` on the same
-//! balls as paths (`Ball::path`) agree. Shared by `tests/narrow_properties.rs` (proptest) and
+//! balls as paths (`Ball::path`) agree. Shared by `tests/integration/narrow_properties.rs` (proptest) and
 //! the fuzz target `queries` (`fuzz/`).
 //!
 //! The pairs: head on along an axis or a diagonal (where a friction ball's friction vector

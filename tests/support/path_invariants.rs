@@ -1,5 +1,5 @@
 //! The invariants of the path entry points, checked by the fuzz target `path` (`fuzz/`) and
-//! by the property test `tests/invariants_path.rs`: one implementation for both.
+//! by the property test `tests/integration/invariants_path.rs`: one implementation for both.
 //!
 //! For two paths of 1 to 6 segments in 2-D or 3-D, any values (valid or not):
 //! - construction and the batch agree on validity: a path is accepted exactly when every value

@@ -2,14 +2,14 @@
 //! (position, velocity, spin) becomes a path that slides, rolls and rests ([`PoolBall::path`]);
 //! random balls on a table ([`PoolBall::random`]) and the rack of a break ([`rack`]).
 //!
-//! Included by path next to `rng.rs`, which it uses as `crate::rng`:
+//! Included by path next to `rng.rs`, which it uses as `super::rng`:
 //! `#[path = "../tests/support/pool_balls.rs"] mod pool_balls;`.
 #![allow(dead_code)]
 
 use ballcollide::path::{Path2, Segment2};
 use nalgebra::Vector2;
 
-use crate::rng::Rng;
+use super::rng::Rng;
 
 /// Ball radius (m); two balls touch at `2·BALL_RADIUS`.
 pub const BALL_RADIUS: f64 = 0.028575;

@@ -1,5 +1,5 @@
-//! What the property suites on paths share (`tests/path_properties.rs`,
-//! `tests/geometry_properties.rs`; included by path, beside `support/cases.rs` as `cases`):
+//! What the property suites on paths share (`tests/integration/path_properties.rs`,
+//! `tests/integration/geometry_properties.rs`; included by path, beside `support/cases.rs` as `cases`):
 //! the fixed-seed configuration, a simulator's kind of path, paths with values from the whole
 //! float range, the check that a horizon only cuts, and the range of exact power-of-two
 //! scalings.

@@ -1,5 +1,5 @@
 //! The event calendar's invariants (`schedule::CollisionSchedule`), checked by the property
-//! tests (`tests/schedule.rs`) and by the fuzz target `schedule` (`fuzz/`): one implementation
+//! tests (`tests/integration/schedule.rs`) and by the fuzz target `schedule` (`fuzz/`): one implementation
 //! for both.
 //!
 //! A [`Draw`] makes a scene from a source of [`Choices`] (a seeded generator in the tests,

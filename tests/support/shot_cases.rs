@@ -1,5 +1,5 @@
 //! `tests/data/shot_cases.txt` (pooltool's shots, written by `tools/shot_reference.py`) read
-//! into a table, ball parameters and shots: shared by `tests/billiards_shots.rs` and
+//! into a table, ball parameters and shots: shared by `tests/reference/shots.rs` and
 //! `examples/shot_timing.rs`.
 #![allow(dead_code)]
 

@@ -1,5 +1,5 @@
 //! The invariants of `simulate`, checked by the fuzz target `simulate` (`fuzz/`) and by the
-//! property tests (`tests/simulation_progress.rs`): one implementation for both.
+//! property tests (`tests/integration/simulation_progress.rs`): one implementation for both.
 //!
 //! - a valid start either runs or is refused as a start no motion comes from (a ball
 //!   overlapping another or a wall, outside the box, as wide as the box), and then the named

@@ -1,7 +1,7 @@
 //! Sets of friction-ball pairs for the benchmarks ([`set`], in the batch layout of
 //! [`Pairs`]): random table pairs, grazing shots, shots at a ball at rest, grazing chases.
 //!
-//! Included by path next to `rng.rs`, which it uses as `crate::rng`:
+//! Included by path next to `rng.rs`, which it uses as `super::rng`:
 //! `#[path = "../tests/support/rng.rs"] mod rng;` and
 //! `#[path = "../tests/support/table_pairs.rs"] mod table_pairs;`. Not every includer uses
 //! every kind.
@@ -9,7 +9,7 @@
 
 use ballcollide::batch::{Pairs, PerPair};
 
-use crate::rng::Rng;
+use super::rng::Rng;
 
 /// The contact distance: two pool balls of radius 28.575 mm.
 pub const RADIUS: f64 = 2.0 * 0.028575;

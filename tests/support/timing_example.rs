@@ -3,7 +3,7 @@
 //! arguments FILE [THREADS] [REPEATS] ([`Args`], [`threads`]), timing repeated batch calls
 //! ([`time_calls`]), and printing the result or the error ([`report`]).
 //!
-//! Included by path next to `thread_cpu_time.rs`, which it uses as `crate::thread_cpu_time`:
+//! Included by path next to `thread_cpu_time.rs`, which it uses as `super::thread_cpu_time`:
 //! `#[path = "../tests/support/timing_example.rs"] mod timing_example;`.
 
 use std::num::NonZeroUsize;
@@ -13,7 +13,7 @@ use std::time::Instant;
 use ballcollide::InputError;
 use ballcollide::batch::Threads;
 
-use crate::thread_cpu_time::thread_cpu_ns;
+use super::thread_cpu_time::thread_cpu_ns;
 
 /// Reads little-endian words from a byte buffer, front to back.
 pub struct Reader<'a> {

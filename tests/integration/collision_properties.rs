@@ -6,8 +6,7 @@
 //! tolerance, on configurations that are not within rounding of a grazing contact or of a stop
 //! (where the hit/miss answer is legitimately undecided).
 
-#[path = "support/cases.rs"]
-mod cases;
+use crate::support::cases;
 
 use ballcollide::{Ball, collision_time};
 use nalgebra::{Rotation2, Vector2};

@@ -14,7 +14,7 @@
 //!   [`BAND`] floors of the real axis (same reason, the other way round);
 //! - the classical multiple-root cases must come back with exactly their real roots.
 //!
-//! Run with `cargo test --release --test poly_reference -- --nocapture` to see the accuracy
+//! Run with `cargo test --release --test reference poly:: -- --nocapture` to see the accuracy
 //! table (per category: max and p99.9 of error/floor and of relative error; per published
 //! case: the accuracy reached). With `POLY_CASES=path`, the same checks run on another file
 //! of the same format instead, such as a randomized search written by

@@ -16,10 +16,7 @@
 //!
 //! Every property runs a fixed number of cases from a fixed seed.
 
-#[path = "support/cases.rs"]
-mod cases;
-#[path = "support/property_paths.rs"]
-mod property_paths;
+use crate::support::property_paths;
 
 use ballcollide::geometry::{
     Circle, LineSegment, Plane, SegmentSide, Target, path_circle_contact, path_plane_contact,

@@ -10,10 +10,8 @@
 //!
 //! Run with `--nocapture` to see the error/floor distribution per category.
 
-#[path = "support/fields.rs"]
-mod fields;
-#[path = "support/reference_table.rs"]
-mod reference_table;
+use crate::support::fields;
+use crate::support::reference_table;
 
 use ballcollide::CollisionOptions;
 use ballcollide::geometry::{

@@ -20,10 +20,7 @@
 //! Every property runs a fixed number of cases from a fixed seed, so that a run is the same
 //! on every machine.
 
-#[path = "support/cases.rs"]
-mod cases;
-#[path = "support/property_paths.rs"]
-mod property_paths;
+use crate::support::property_paths;
 
 use ballcollide::batch::{PathPairs, PathRows, PerPair, Threads, path_collision_times};
 use ballcollide::path::{Path, Segment};
@@ -243,7 +240,7 @@ fn robust<const D: usize>(pair: &Pair<D>) -> bool {
 /// The times in these tests are of the order of seconds (lengths of metres, speeds of m/s).
 /// On [`robust`] configurations, the transformations here change the inputs by a few roundings
 /// and so move the exact contact by less than 5e-10 s; the library's answers are within a few
-/// floors (~1e-15 s here) of it (tests/path_reference.rs). A bug (a wrong window, a missed
+/// floors (~1e-15 s here) of it (tests/reference/path.rs). A bug (a wrong window, a missed
 /// root, a wrong segment) moves the answer by far more.
 fn close(x: Option<f64>, y: Option<f64>) -> Result<(), TestCaseError> {
     close_at(x, y, 1.0)
@@ -418,7 +415,7 @@ fn ball() -> impl Strategy<Value = Ball> {
         })
 }
 
-/// Balls, A aimed at B three times out of four, as in tests/collision_properties.rs.
+/// Balls, A aimed at B three times out of four, as in tests/integration/collision_properties.rs.
 fn ball_pair() -> impl Strategy<Value = (Ball, Ball, f64)> {
     (
         ball(),

@@ -3,8 +3,7 @@
 //! down to contact distances of `2⁻⁴⁰⁰` of the separation (issue 39). The pairs and the check
 //! are shared with the fuzz target `queries` (`tests/support/narrow_pairs.rs`).
 
-#[path = "support/narrow_pairs.rs"]
-mod narrow_pairs;
+use crate::support::narrow_pairs;
 
 use narrow_pairs::{NarrowDraw, narrow_pair, queries_agree};
 use proptest::prelude::*;

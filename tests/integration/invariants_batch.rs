@@ -4,14 +4,9 @@
 //! never errors. The fuzz target `batch`
 //! checks the same (docs/fuzzing.md).
 
-#[path = "support/cases.rs"]
-mod cases;
-#[path = "support/exact.rs"]
-mod exact;
-#[path = "support/invariants.rs"]
-mod invariants;
-#[path = "support/strategies.rs"]
-mod strategies;
+use crate::support::cases;
+use crate::support::invariants;
+use crate::support::strategies;
 
 use proptest::prelude::*;
 

@@ -27,8 +27,7 @@
 //!
 //! Run with `--nocapture` for the counts and the worst differences.
 
-#[path = "support/fields.rs"]
-mod fields;
+use crate::support::fields;
 
 use ballcollide::billiards::{
     AlciatoreFriction, BallBallResolver, BallCircularCushionResolver, BallLinearCushionResolver,
@@ -41,7 +40,7 @@ use ballcollide::billiards::{
 use fields::Fields;
 use nalgebra::{Vector2, Vector3};
 
-const DATA: &str = include_str!("data/billiards_cases.txt");
+const DATA: &str = include_str!("../data/billiards_cases.txt");
 
 /// The largest difference allowed, relative to the scale of the terms.
 const TOLERANCE: f64 = 1e-12;

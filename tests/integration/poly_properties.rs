@@ -18,8 +18,7 @@
 //! with a margin of about 6, yet any real loss of accuracy in the solver (a missed polishing
 //! step, a wrong branch) shows up far above it.
 
-#[path = "support/cases.rs"]
-mod cases;
+use crate::support::cases;
 
 use ballcollide::poly::{solve_cubic, solve_quartic};
 use proptest::prelude::*;

@@ -1,7 +1,7 @@
 //! `billiards::ball_path` against the evolution it stands for, and in the calendar.
 //!
 //! - the path's centre and velocity at random times agree with [`evolve`] (pooltool's
-//!   closed-form motion, checked against pooltool itself in `tests/billiards_reference.rs`) to
+//!   closed-form motion, checked against pooltool itself in `tests/reference/billiards.rs`) to
 //!   a few roundings; [`BallPath::state_at`] is that evolution;
 //! - its shape: the motion states in order, the accelerations of the model, continuity at the
 //!   segment starts, at rest at the end; made again from a segment's start state it is the
@@ -11,8 +11,7 @@
 //!   in order: the transitions at the segment starts, the collision where the centres are two
 //!   radii apart, the cushion where the centre is a radius from the rail.
 
-#[path = "support/rng.rs"]
-mod rng;
+use crate::support::rng;
 
 use ballcollide::billiards::{
     BallBallResolver, BallParams, BallPath, BallState, FrictionalInelastic, KISS_SPACER,

@@ -11,8 +11,7 @@ use ballcollide::geometry::{LineSegment, ObjectKind, PoolTable, SegmentSide, Tab
 use ballcollide::schedule::{Simulation, SimulationOptions, Walls, simulate};
 use nalgebra::Vector2;
 
-#[path = "support/rng.rs"]
-mod rng;
+use crate::support::rng;
 use rng::Rng;
 
 /// A pool ball's radius (2¼ in).

@@ -10,13 +10,11 @@ use ballcollide::{Ball, InputErrorKind};
 use nalgebra::Vector2;
 use std::ops::ControlFlow;
 
-#[path = "support/rng.rs"]
-mod rng;
-use rng::Rng;
-#[path = "support/simulation_invariants.rs"]
-mod simulation_invariants;
+use crate::support::rng;
+use crate::support::simulation_invariants;
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
+use rng::Rng;
 use simulation_invariants::{SimulationCase, simulation};
 
 fn ball(p: [f64; 2], v: [f64; 2], friction: f64) -> Ball {

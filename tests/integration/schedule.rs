@@ -8,10 +8,8 @@
 //! The scenes, the operations and the checks are `tests/support/schedule_invariants.rs`,
 //! which the fuzz target `schedule` runs too (docs/fuzzing.md).
 
-#[path = "support/cases.rs"]
-mod cases;
-#[path = "support/schedule_invariants.rs"]
-mod schedule_invariants;
+use crate::support::cases;
+use crate::support::schedule_invariants;
 
 use ballcollide::Ball;
 use ballcollide::geometry::{LineSegment, SegmentSide, Table};
@@ -22,8 +20,7 @@ use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 use schedule_invariants::{Choices, Draw, Numbers, Plan, Scene, Seen, brute_collision};
 
-#[path = "support/rng.rs"]
-mod rng;
+use crate::support::rng;
 use rng::Rng;
 
 impl Choices for Rng {

@@ -8,24 +8,9 @@
 //! bit of a segment's or a plane's query. The fuzz target `geometry` checks the same
 //! (docs/fuzzing.md).
 
-#[path = "support/cases.rs"]
-mod cases;
-#[path = "support/exact.rs"]
-mod exact;
-#[path = "support/geometry_invariants.rs"]
-mod geometry_invariants;
-#[path = "support/geometry_strategies.rs"]
-mod geometry_strategies;
-#[path = "support/invariants.rs"]
-mod invariants;
-#[path = "support/path_invariants.rs"]
-mod path_invariants;
-#[path = "support/path_strategies.rs"]
-mod path_strategies;
-#[path = "support/path_table.rs"]
-mod path_table;
-#[path = "support/strategies.rs"]
-mod strategies;
+use crate::support::cases;
+use crate::support::geometry_invariants;
+use crate::support::geometry_strategies;
 
 use proptest::prelude::*;
 

@@ -14,8 +14,7 @@ use ballcollide::{Ball, CollisionOptions, InputErrorKind, collision_time_with};
 use nalgebra::Vector2;
 use proptest::prelude::*;
 
-#[path = "support/rng.rs"]
-mod rng;
+use crate::support::rng;
 use rng::Rng;
 
 /// What a random scene is made of.

@@ -6,20 +6,9 @@
 //! thread and two) gives the single query's bits. The fuzz target `path` checks the same
 //! (docs/fuzzing.md).
 
-#[path = "support/cases.rs"]
-mod cases;
-#[path = "support/exact.rs"]
-mod exact;
-#[path = "support/invariants.rs"]
-mod invariants;
-#[path = "support/path_invariants.rs"]
-mod path_invariants;
-#[path = "support/path_strategies.rs"]
-mod path_strategies;
-#[path = "support/path_table.rs"]
-mod path_table;
-#[path = "support/strategies.rs"]
-mod strategies;
+use crate::support::cases;
+use crate::support::path_invariants;
+use crate::support::path_strategies;
 
 use proptest::prelude::*;
 

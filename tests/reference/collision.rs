@@ -9,14 +9,13 @@
 //!
 //! Run with `--nocapture` to see the error/floor distribution per category.
 
-#[path = "support/reference_table.rs"]
-mod reference_table;
+use crate::support::reference_table;
 
 use ballcollide::{Ball, CollisionOptions, collision_time_with};
 use nalgebra::Vector2;
 use reference_table::Table;
 
-const DATA: &str = include_str!("data/collision_cases.txt");
+const DATA: &str = include_str!("../data/collision_cases.txt");
 
 struct Case {
     line: usize,

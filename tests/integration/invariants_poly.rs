@@ -4,14 +4,10 @@
 //! invariance under ±0 flips and power-of-two scalings. The fuzz target `poly` checks the
 //! same (docs/fuzzing.md).
 
-#[path = "support/cases.rs"]
-mod cases;
-#[path = "support/exact.rs"]
-mod exact;
-#[path = "support/invariants.rs"]
-mod invariants;
-#[path = "support/strategies.rs"]
-mod strategies;
+use crate::support::cases;
+use crate::support::exact;
+use crate::support::invariants;
+use crate::support::strategies;
 
 use proptest::prelude::*;
 

@@ -11,8 +11,7 @@ use ballcollide::poly::{eval, solve_quartic};
 use ballcollide::{Ball, Gap, collision_time};
 use nalgebra::Vector2;
 
-#[path = "support/rng.rs"]
-mod rng;
+use crate::support::rng;
 use rng::Rng;
 
 #[test]

@@ -3,14 +3,9 @@
 //! only cuts, and A/B swap, ±0 flips and power-of-two scalings of lengths and of time change
 //! no bit. The fuzz target `pair` checks the same (docs/fuzzing.md).
 
-#[path = "support/cases.rs"]
-mod cases;
-#[path = "support/exact.rs"]
-mod exact;
-#[path = "support/invariants.rs"]
-mod invariants;
-#[path = "support/strategies.rs"]
-mod strategies;
+use crate::support::cases;
+use crate::support::invariants;
+use crate::support::strategies;
 
 use invariants::PairCase;
 use proptest::prelude::*;

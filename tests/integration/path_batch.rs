@@ -12,8 +12,7 @@ use ballcollide::path::Path;
 use ballcollide::simd::{test_levels, with_level};
 use ballcollide::{CollisionOptions, path_collision_time};
 
-#[path = "support/rng.rs"]
-mod rng;
+use crate::support::rng;
 use rng::Rng;
 
 /// `n` random paths of up to `k` segments in rows (padded with `+∞` starts), on a 2 m table.

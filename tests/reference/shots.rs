@@ -9,10 +9,8 @@
 //!   order, no two balls overlap beyond rounding at the events or between them, every ball
 //!   ends at rest or pocketed, and the balls' kinetic energy never grows from event to event.
 
-#[path = "support/rng.rs"]
-mod rng;
-#[path = "support/shot_cases.rs"]
-mod shot_cases;
+use crate::support::rng;
+use crate::support::shot_cases;
 
 use ballcollide::billiards::{
     BallParams, BallState, ContactRule, Cue, MotionState, Shot, ShotEventKind, ShotOptions, evolve,
