@@ -589,6 +589,124 @@ pub fn simulation_case(u: &mut Unstructured) -> Result<simulation_invariants::Si
     ))
 }
 
+/// A simulation on a table: [`simulation_case`]'s balls and box, with 0 to 3 segments (each
+/// capped by circles of radius 0 at its ends; sides both, left or right), 0 to 2 circles
+/// (radius 0 now and then), 0 to 2 targets and 0 or 1 plane, anywhere in the box, and a
+/// table restitution of 0, 1 or between. Balls that would start on an object or in a target
+/// are left out (their refusal is `tests/simulation_table.rs`' subject), so that most cases
+/// run.
+pub fn simulation_table_case(u: &mut Unstructured) -> Result<simulation_invariants::TableCase> {
+    use ballcollide::geometry::{Circle, LineSegment, Plane, SegmentSide, Table, Target};
+    use nalgebra::Vector2;
+    // The table's choices first (short inputs still get objects), in units of the box.
+    let mut fractions = [[0.0; 2]; 8];
+    for point in &mut fractions {
+        for c in point.iter_mut() {
+            *c = f64::from(u.arbitrary::<u16>()?) / 65535.0;
+        }
+    }
+    let segments = u.int_in_range(0..=3usize)?;
+    let mut sides = [0u8; 3];
+    for side in &mut sides {
+        *side = u.arbitrary::<u8>()? % 4;
+    }
+    let circles = u.int_in_range(0..=2usize)?;
+    let mut circle_sizes = [(0u8, 0u8); 2];
+    for size in &mut circle_sizes {
+        *size = (u.arbitrary::<u8>()?, u.arbitrary::<u8>()?);
+    }
+    let targets = u.int_in_range(0..=2usize)?;
+    let target_sizes = [u.arbitrary::<u8>()?, u.arbitrary::<u8>()?];
+    let plane = (u.arbitrary::<u8>()? % 3 == 0).then_some((
+        f64::from(u.arbitrary::<i8>()?),
+        f64::from(u.arbitrary::<i8>()?),
+    ));
+    let table_restitution = match u.arbitrary::<u8>()? % 4 {
+        0 => 0.0,
+        1 => 1.0,
+        _ => f64::from(u.arbitrary::<u8>()?) / 255.0,
+    };
+    let mut case = simulation_case(u)?;
+    let side = case.hi[0];
+    let points: Vec<Vector2<f64>> = fractions
+        .iter()
+        .map(|f| Vector2::new(f[0] * side, f[1] * side))
+        .collect();
+    let mut table = Table::<2>::default();
+    let kinds = [
+        SegmentSide::Both,
+        SegmentSide::Both,
+        SegmentSide::Left,
+        SegmentSide::Right,
+    ];
+    for k in 0..segments {
+        let (p, q) = (points[2 * k], points[2 * k + 1]);
+        if let Ok(segment) = LineSegment::new(p, q, kinds[usize::from(sides[k])]) {
+            table.segments.push(segment);
+            for end in [p, q] {
+                if let Ok(cap) = Circle::new(end, 0.0) {
+                    table.circles.push(cap);
+                }
+            }
+        }
+    }
+    for (k, &(zero, size)) in circle_sizes.iter().enumerate().take(circles) {
+        let rho = if zero % 4 == 0 {
+            0.0
+        } else {
+            side * f64::from(size) / 1024.0
+        };
+        if let Ok(c) = Circle::new(points[6 + k], rho) {
+            table.circles.push(c);
+        }
+    }
+    for (k, &size) in target_sizes.iter().enumerate().take(targets) {
+        let rho = side * (f64::from(size) + 1.0) / 1024.0;
+        if let Ok(t) = Target::new(points[4 + k], rho) {
+            table.targets.push(t);
+        }
+    }
+    if let Some((x, y)) = plane
+        && let Ok(plane) = Plane::new(points[0] * 0.25, Vector2::new(x, y))
+    {
+        table.planes.push(plane);
+    }
+    // Leave out the balls on an object (or touching one) or in a target.
+    let keep: Vec<bool> = case
+        .balls
+        .iter()
+        .zip(&case.radii)
+        .map(|(b, &r)| {
+            let (depth, _, inside) =
+                simulation_invariants::object_overlap(&table, Vector2::new(b[0], b[1]), r, true);
+            inside.is_none() && depth < -1e-6
+        })
+        .collect();
+    let kept = |v: &[f64]| -> Vec<f64> {
+        v.iter()
+            .zip(&keep)
+            .filter(|(_, k)| **k)
+            .map(|(x, _)| *x)
+            .collect()
+    };
+    case.radii = kept(&case.radii);
+    if case.mass.len() > 1 {
+        case.mass = kept(&case.mass);
+    }
+    case.balls = case
+        .balls
+        .iter()
+        .zip(&keep)
+        .filter(|(_, k)| **k)
+        .map(|(b, _)| *b)
+        .collect();
+    Ok(simulation_invariants::TableCase {
+        case,
+        table,
+        table_restitution,
+    })
+}
+
 /// A pair of the narrow family (`tests/support/narrow_pairs.rs`): head on or off axis, the
 /// contact distance down to 2⁻⁴⁰⁰ of the separation, for the invariant that every query gives
 /// the same hit or miss for it.

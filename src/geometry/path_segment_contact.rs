@@ -7,8 +7,9 @@
 //! `D − r·|e|` (entered from the left) and `−D − r·|e|` (from the right). On each segment of
 //! the path both are quadratics in time, and the walk of
 //! [`first_entry`](super::signed_distance::first_entry) finds their entries, each kept only if
-//! the foot of the centre lies on the segment there, `0 ≤ (x − P)·e ≤ |e|²`, and the side
-//! counts.
+//! the foot of the centre lies on the segment there, `0 ≤ (x − P)·e` and `(x − Q)·e ≤ 0`
+//! (each from the centre's offset from its own end: exact to a few roundings of the centre's
+//! distance from the end it tests, whatever the other end's magnitude), and the side counts.
 //!
 //! `D` at a segment's start is formed from the exact differences `Q − P` and `x − P`
 //! (each as a sum of two floats) with the products' rounding errors restored: to within a
@@ -124,7 +125,10 @@ fn walk(segments: &[Segment<2>], object: &LineSegment, radius: f64, t_max: f64) 
         segments,
         t_max,
         |segment| {
-            let offset = Exact::difference(&scale(segment.position), &p);
+            let position = scale(segment.position);
+            let offset = Exact::difference(&position, &p);
+            // From Q too: the foot test at each end from the centre's offset from that end.
+            let from_q = Exact::difference(&position, &q).high;
             let velocity = scale(segment.velocity);
             let acceleration = scale(segment.acceleration);
             let d = direction.cross(&offset);
@@ -144,6 +148,7 @@ fn walk(segments: &[Segment<2>], object: &LineSegment, radius: f64, t_max: f64) 
                 d,
                 edges: [left, right],
                 offset: offset.high,
+                from_q,
                 velocity,
                 acceleration,
             };
@@ -156,11 +161,14 @@ fn walk(segments: &[Segment<2>], object: &LineSegment, radius: f64, t_max: f64) 
             if !side.counts(sign) {
                 return false;
             }
-            // The foot on the segment: 0 ≤ (x − P)·e ≤ |e|².
+            // The foot on the segment: 0 ≤ (x − P)·e and (x − Q)·e ≤ 0, each from the
+            // centre's offset from its own end, so that each is exact to a few roundings of
+            // the centre's distance from that end, not of the segment's length (as
+            // (x − P)·e ≤ |e|² would be next to Q).
             let s = candidate.s;
-            let x = found.offset + (found.velocity + found.acceleration * (0.5 * s)) * s;
-            let along = x.x * e.x + x.y * e.y;
-            (0.0..=length2).contains(&along)
+            let moved = (found.velocity + found.acceleration * (0.5 * s)) * s;
+            let (x, y) = (found.offset + moved, found.from_q + moved);
+            x.x * e.x + x.y * e.y >= 0.0 && y.x * e.x + y.y * e.y <= 0.0
         },
     )
 }
@@ -181,11 +189,13 @@ fn apart(segments: &[Segment<2>], p: Vector2<f64>, q: Vector2<f64>, radius: f64)
 }
 
 /// What a segment of the path gives the acceptance of its candidates: the (scaled) signed
-/// distance times `|e|` at its start, the two edges, and its motion relative to `P`.
+/// distance times `|e|` at its start, the two edges, and its motion relative to `P` (and its
+/// offset from `Q`).
 struct Found {
     d: f64,
     edges: [Quadratic; 2],
     offset: Vector2<f64>,
+    from_q: Vector2<f64>,
     velocity: Vector2<f64>,
     acceleration: Vector2<f64>,
 }
@@ -456,6 +466,33 @@ mod tests {
             }
         }
         assert!(screened > 2000, "{screened}");
+    }
+
+    #[test]
+    fn the_foot_test_is_as_accurate_next_to_either_end_whatever_the_other_ends_magnitude() {
+        // The diagonal y = x from a far end at (a, a) to the origin, either way round; a ball
+        // of radius 1/4 comes at it square on (velocity (−1, 1)) from (m + 1, m − 1): its
+        // foot stays at m·√2 along the line from the origin, on the flat part for m > 0 and
+        // beyond the near end for m < 0, by `β·r` down to 2⁻⁴⁰ of it. Contact at
+        // t = 1 − r/√2. With (x − P)·e ≤ |e|² as the test next to Q, the foot was exact only
+        // to 2⁻⁵³·a: 7e15 for a = 4e31, which decided every one of these at random.
+        let r = 0.25;
+        let exact = 1.0 - r / 2f64.sqrt();
+        for a in [1.0, 712_345.678_901, 3.3e15, 4e31, 2f64.powi(300)] {
+            for beta in [1.0, 0.5, 2f64.powi(-10), 2f64.powi(-40)] {
+                for (m, hit) in [(beta * r, true), (-beta * r, false)] {
+                    let path = one([m + 1.0, m - 1.0], [-1.0, 1.0], [0.0; 2]);
+                    for (p, q) in [([a, a], [0.0, 0.0]), ([0.0, 0.0], [a, a])] {
+                        let object = segment(p, q, SegmentSide::Both);
+                        let t = first_segment_contact(&path, &object, r, INF);
+                        assert_eq!(t.is_some(), hit, "a {a}, m {m}, P {p:?}");
+                        if let Some(t) = t {
+                            assert!((t - exact).abs() <= 4.0 * f64::EPSILON, "{a} {m}: {t}");
+                        }
+                    }
+                }
+            }
+        }
     }
 
     #[test]

@@ -7,8 +7,8 @@ use super::shapes::{Circle, LineSegment, Plane, Target};
 use crate::path::Segment;
 
 /// How far beyond its ends a segment's box reaches, relative to the largest magnitude of its
-/// ends: `2⁻³⁶`, some `2¹⁶` times the error of its contact's foot test there (see
-/// [`Table::object_box`]; the same factor as the calendar's boxes of the balls).
+/// ends: `2⁻³⁶`, some `2¹⁶` times the largest error its contact's foot test ever had there
+/// (see [`Table::object_box`]; the same factor as the calendar's boxes of the balls).
 const SEGMENT_MARGIN: f64 = 1.0 / ((1u64 << 36) as f64);
 
 /// The kind of a static object, with its number (the Python layer's `SEGMENT`, `CIRCLE`,
@@ -145,13 +145,13 @@ impl<const D: usize> Table<D> {
     /// The box `(lo, hi)` of object `index` of `kind` (`None`: unbounded, a plane), each
     /// bound rounded outwards; for a segment in 3-D the vertical extent is unbounded.
     ///
-    /// A segment's box is its ends' grown by [`SEGMENT_MARGIN`] of their largest magnitude:
-    /// its contact's foot test (`0 ≤ (x − P)·e ≤ |e|²`, `path_segment_contact`) is exact to
-    /// a few roundings of that magnitude, so that next to one end it may take a ball up to
-    /// about `2⁻⁵³` of the other end's distance beyond the end for on the segment
-    /// (docs/contract.md §4.7: such contacts may be reported or not), and the calendar, which
-    /// leaves out the objects whose boxes a ball's box misses, must find them as asking every
-    /// object does.
+    /// A segment's box is its ends' grown by [`SEGMENT_MARGIN`] of their largest magnitude, a
+    /// margin to spare: its contact's foot test (`0 ≤ (x − P)·e`, `(x − Q)·e ≤ 0`,
+    /// `path_segment_contact`) is exact to a few roundings of the centre's distance from the
+    /// end it tests, so that it takes a ball beyond an end for on the segment by at most a few
+    /// roundings of that distance (it once took one up to `2⁻⁵³` of the other end's distance
+    /// beyond it), and the calendar, which leaves out the objects whose boxes a ball's box
+    /// misses, must find every contact that asking every object finds.
     pub(crate) fn object_box(
         &self,
         kind: ObjectKind,

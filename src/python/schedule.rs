@@ -556,6 +556,10 @@ impl CollisionSchedule {
     /// TypeError
     ///     And nothing changes: an index that is not an int (a bool, a float: ``indices[1]:
     ///     expected an int (a ball index), got bool``), paths not made of real numbers.
+    /// KeyboardInterrupt
+    ///     Ctrl-C during an update of many balls (it looks every 4,096 balls): the calendar
+    ///     is as if only the balls of the chunks done (the first of ``indices``) had been
+    ///     updated, at their start; consistent.
     fn update(
         &mut self,
         py: Python<'_>,
@@ -580,11 +584,17 @@ impl CollisionSchedule {
             return Err(input_error(py, "pos", None, kind::SHAPE, &reason));
         }
         same_count(py, "start", indices.len(), paths.paths)?;
-        let result = match &mut self.inner {
-            Inner::Two(s) => paths_of(&paths).and_then(|p| s.update(&indices, p)),
-            Inner::Three(s) => paths_of(&paths).and_then(|p| s.update(&indices, p)),
-        };
-        result.map_err(|e| from_core(py, e))
+        let how = calendar_kernel(indices.len());
+        match &mut self.inner {
+            Inner::Two(s) => {
+                let paths = paths_of(&paths).map_err(|e| from_core(py, e))?;
+                run(py, how, || s.update(&indices, paths))
+            }
+            Inner::Three(s) => {
+                let paths = paths_of(&paths).map_err(|e| from_core(py, e))?;
+                run(py, how, || s.update(&indices, paths))
+            }
+        }
     }
 
     /// Gives balls ``indices`` of a 2-D calendar new friction-ball paths from time ``t``
@@ -604,6 +614,8 @@ impl CollisionSchedule {
     /// InputError
     ///     As :meth:`update` and :meth:`from_balls` (``t: must not be before the
     ///     calendar's time 2, got 1``); a 3-D calendar.
+    /// KeyboardInterrupt
+    ///     As :meth:`update`.
     ///
     /// Examples
     /// --------
@@ -628,9 +640,9 @@ impl CollisionSchedule {
         let balls = balls(py, pos, vel, friction)?;
         same_count(py, "pos", indices.len(), balls.len())?;
         match &mut self.inner {
-            Inner::Two(s) => s
-                .update_balls(&indices, t, &balls)
-                .map_err(|e| from_core(py, e)),
+            Inner::Two(s) => run(py, calendar_kernel(indices.len()), || {
+                s.update_balls(&indices, t, &balls)
+            }),
             Inner::Three(_) => Err(input_error(
                 py,
                 "pos",

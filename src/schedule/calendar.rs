@@ -60,6 +60,10 @@ pub struct HeapBytes {
     pub grid: usize,
 }
 
+/// The balls an update gives new paths to between two looks at the interrupt flag
+/// ([`CollisionSchedule::update`]): some 20 ms of work.
+pub const UPDATE_CHUNK: usize = 4096;
+
 /// An event calendar: N balls (paths and radii), a current time, and the earliest collision
 /// among them from that time on, kept up to date as the paths of a few balls change.
 ///
@@ -789,17 +793,30 @@ impl<const D: usize> CollisionSchedule<D> {
     /// An [`InputError`], and the calendar left exactly as it was: `paths` of another length
     /// than `indices`; an index out of range or given twice (`indices[m]`); a path `m` whose
     /// first start differs from path 0's, or is before the current time (`start[m, 0]`).
+    ///
+    /// Inside an [`interruptible`](crate::interrupt::interruptible) call whose flag is set,
+    /// an update of more than [`UPDATE_CHUNK`] balls stops between chunks of that many
+    /// ([`InputErrorKind::Interrupted`]): the calendar is then as if only the balls of the
+    /// chunks done (the first of `indices`) had been updated, at `t`; consistent, equal to
+    /// brute force.
     pub fn update(&mut self, indices: &[usize], paths: Vec<Path<D>>) -> Result<(), InputError> {
         self.check_update(indices, &paths)?;
         let Some(t) = paths.first().map(Path::first_start) else {
             return Ok(());
         };
         self.time = t + 0.0;
-        for (&i, path) in indices.iter().zip(paths) {
-            self.paths[i] = path;
-            self.replaced(i);
+        let interrupt = Interrupt::current();
+        let mut paths = paths.into_iter();
+        for (k, chunk) in indices.chunks(UPDATE_CHUNK).enumerate() {
+            if k > 0 {
+                interrupt.check()?;
+            }
+            for (&i, path) in chunk.iter().zip(&mut paths) {
+                self.paths[i] = path;
+                self.replaced(i);
+            }
+            self.refresh_updated(chunk);
         }
-        self.refresh_updated(indices);
         Ok(())
     }
 
@@ -856,7 +873,7 @@ impl<const D: usize> CollisionSchedule<D> {
     ///
     /// # Errors
     /// As [`update`](Self::update), with `balls` in place of `paths`; a `t` that is not
-    /// finite; a ball whose path overflows.
+    /// finite; a ball whose path overflows. Interrupted as [`update`](Self::update) is.
     ///
     /// ```
     /// use ballcollide::Ball;
@@ -902,18 +919,26 @@ impl<const D: usize> CollisionSchedule<D> {
             .enumerate()
             .try_for_each(|(m, (ball, out))| ball.write_path_from(t, out).map_err(|e| e.at(m)))
             .and_then(|()| self.check_indices(indices, balls.len()));
-        let result = written.map(|()| {
+        let result = written.and_then(|()| {
             if balls.is_empty() {
-                return;
+                return Ok(());
             }
             self.time = t;
-            for (&i, segments) in indices.iter().zip(&mut spare) {
-                // Checked by `write_path_from` (`Ball`'s, the only one: the trait and
-                // `Ball` are this crate's).
-                self.paths[i].swap_checked(segments);
-                self.replaced(i);
+            let interrupt = Interrupt::current();
+            let mut spare = spare.iter_mut();
+            for (k, chunk) in indices.chunks(UPDATE_CHUNK).enumerate() {
+                if k > 0 {
+                    interrupt.check()?;
+                }
+                for (&i, segments) in chunk.iter().zip(&mut spare) {
+                    // Checked by `write_path_from` (`Ball`'s, the only one: the trait and
+                    // `Ball` are this crate's).
+                    self.paths[i].swap_checked(segments);
+                    self.replaced(i);
+                }
+                self.refresh_updated(chunk);
             }
-            self.refresh_updated(indices);
+            Ok(())
         });
         self.spare.0 = spare;
         result

@@ -42,7 +42,7 @@ mod reach;
 mod simulation;
 mod walls;
 
-pub use calendar::{CollisionSchedule, FrictionPath, HeapBytes, ScheduleOptions};
+pub use calendar::{CollisionSchedule, FrictionPath, HeapBytes, ScheduleOptions, UPDATE_CHUNK};
 pub use event::{Collision, Event, ObjectEvent, Transition, WallContact};
 pub use objects::ObjectCounts;
 pub use simulation::{

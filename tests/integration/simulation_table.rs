@@ -7,12 +7,17 @@
 
 use ballcollide::Ball;
 use ballcollide::InputErrorKind;
-use ballcollide::geometry::{LineSegment, ObjectKind, PoolTable, SegmentSide, Table};
+use ballcollide::geometry::{
+    Circle, LineSegment, ObjectKind, Plane, PoolTable, SegmentSide, Table, Target,
+};
 use ballcollide::schedule::{Simulation, SimulationOptions, Walls, simulate};
 use nalgebra::Vector2;
 
 use crate::support::rng;
 use rng::Rng;
+#[path = "support/simulation_invariants.rs"]
+mod simulation_invariants;
+use simulation_invariants::{SimulationCase, TableCase, table_simulation};
 
 /// A pool ball's radius (2¼ in).
 const R: f64 = 0.028575;
@@ -298,4 +303,126 @@ fn a_ball_that_starts_on_an_object_or_in_a_pocket_is_refused() {
     // Touching is fine.
     let touching = Ball::new(Vector2::new(0.5, R), Vector2::zeros(), 0.0).expect("a ball");
     assert!(simulate(&[touching], &[R], walls, &options).is_ok());
+}
+
+/// A random table in the square `[0, 2]²`: up to 3 segments (capped by circles of radius 0 at
+/// their ends; sides both, left or right), 2 circles, 2 targets and a plane, and up to 6
+/// balls off them, as the fuzz target `simulate_table` makes them.
+fn random_table_case(rng: &mut Rng) -> TableCase {
+    let point = |rng: &mut Rng| Vector2::new(rng.uniform(0.0, 2.0), rng.uniform(0.0, 2.0));
+    let mut table = Table::<2>::default();
+    for _ in 0..rng.below(4) {
+        let (p, q) = (point(rng), point(rng));
+        let side =
+            [SegmentSide::Both, SegmentSide::Left, SegmentSide::Right][rng.below(3) as usize];
+        table
+            .segments
+            .push(LineSegment::new(p, q, side).expect("a segment"));
+        for end in [p, q] {
+            table.circles.push(Circle::new(end, 0.0).expect("a cap"));
+        }
+    }
+    for _ in 0..rng.below(3) {
+        let rho = if rng.below(4) == 0 {
+            0.0
+        } else {
+            rng.uniform(0.0, 0.25)
+        };
+        table
+            .circles
+            .push(Circle::new(point(rng), rho).expect("a circle"));
+    }
+    for _ in 0..rng.below(3) {
+        let rho = rng.uniform(0.01, 0.25);
+        table
+            .targets
+            .push(Target::new(point(rng), rho).expect("a target"));
+    }
+    if rng.below(3) == 0 {
+        let normal = Vector2::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+        table
+            .planes
+            .push(Plane::new(point(rng) * 0.25, normal).expect("a plane"));
+    }
+    let n = 1 + rng.below(6) as usize;
+    let balls: Vec<_> = (0..n)
+        .map(|_| {
+            let r = rng.uniform(1.0 / 64.0, 0.2);
+            let at = [rng.uniform(0.0, 1.0), rng.uniform(0.0, 1.0)];
+            let v = [rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0)];
+            (at, r, v, [0.0, 0.3, 2.0][rng.below(3) as usize])
+        })
+        .collect();
+    let restitution = [0.0, 0.5, 1.0][rng.below(3) as usize];
+    let mut case = SimulationCase::in_square(2.0, &balls, vec![1.0], restitution, 4.0);
+    let keep: Vec<bool> = case
+        .balls
+        .iter()
+        .zip(&case.radii)
+        .map(|(b, &r)| {
+            let (depth, _, inside) =
+                simulation_invariants::object_overlap(&table, Vector2::new(b[0], b[1]), r, true);
+            inside.is_none() && depth < -1e-6
+        })
+        .collect();
+    case.radii = case
+        .radii
+        .iter()
+        .zip(&keep)
+        .filter(|k| *k.1)
+        .map(|k| *k.0)
+        .collect();
+    case.balls = case
+        .balls
+        .iter()
+        .zip(&keep)
+        .filter(|k| *k.1)
+        .map(|k| *k.0)
+        .collect();
+    let table_restitution = [0.0, 0.7, 1.0][rng.below(3) as usize];
+    TableCase {
+        case,
+        table,
+        table_restitution,
+    }
+}
+
+#[test]
+fn random_tables_keep_every_invariant() {
+    // The fuzz target `simulate_table`'s invariants (tests/support/simulation_invariants.rs):
+    // no overlap with a ball, a wall or an object at any cut, captured balls never move
+    // again, energy never grows, a cut run logs the same events.
+    let mut rng = Rng(36);
+    let (mut ran, mut events, mut object_events) = (0, 0, 0);
+    for _ in 0..150 {
+        let tc = random_table_case(&mut rng);
+        if let Err(e) = table_simulation(&tc) {
+            panic!("{e}");
+        }
+        let c = &tc.case;
+        let balls: Vec<Ball> = c
+            .balls
+            .iter()
+            .map(|b| Ball::new(Vector2::new(b[0], b[1]), Vector2::new(b[2], b[3]), b[4]))
+            .collect::<Result<_, _>>()
+            .expect("balls");
+        let options = SimulationOptions {
+            restitution: c.restitution,
+            t_end: c.t_end,
+            max_events: Some(1000),
+            table: tc.table.clone(),
+            table_restitution: tc.table_restitution,
+            ..Default::default()
+        };
+        let walls = Walls::new(c.lo, c.hi).expect("a box");
+        if let Ok(run) = simulate(&balls, &c.radii, walls, &options) {
+            ran += 1;
+            events += run.events.len();
+            object_events += run.events.iter().filter(|e| e.object.is_some()).count();
+        }
+    }
+    assert!(
+        ran > 100 && events > 2000 && object_events > 300,
+        "{ran} runs, {events} events, {object_events} with objects"
+    );
 }
