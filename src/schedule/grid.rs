@@ -185,10 +185,12 @@ impl<const D: usize> Grid<D> {
 
     /// The cell along axis `k` of coordinate `x`, clamped to the grid (as [`range`](Self::range)).
     fn cell_along(&self, k: usize, x: f64) -> u32 {
-        let cell = ((x - self.origin[k]) * self.inverse_size).floor();
-        // NaN (never from valid boxes) and −∞ go to cell 0; `as` saturates.
+        // Clamped first, then truncated: the floor (no call to `floor` in a build without
+        // SSE4.1). NaN (never from valid boxes) and −∞ go to cell 0.
         let last = (self.counts[k] - 1) as f64;
-        cell.clamp(0.0, last).max(0.0) as u32
+        ((x - self.origin[k]) * self.inverse_size)
+            .clamp(0.0, last)
+            .max(0.0) as u32
     }
 
     /// The heap memory of the grid, in bytes.
