@@ -12,7 +12,8 @@
 //! than `simulate`: µs per event after the build, until EVENTS or no event is left.
 //!
 //! Prints one line of `key=value` fields: `simulate`'s µs per event over EVENTS events (its
-//! build of the calendar, timed on its own, left out), the calendar's build time and heap
+//! build of the calendar, timed on its own, left out; in wall-clock time, and in the
+//! process's CPU time, which a loaded machine disturbs less), the calendar's build time and heap
 //! bytes per ball (its own state, the paths, the grid), and the ns per call of `path_collision_time` on the pairs the calendar asks about (each ball
 //! against its grid neighbours, one constant-velocity segment each), the bulk of its work.
 
@@ -31,6 +32,33 @@ use nalgebra::Vector2;
 mod rng;
 use rng::Rng;
 
+/// The process's CPU time in seconds (Linux; elsewhere NaN): on a shared machine, where other
+/// processes take the cores for part of the wall-clock time, what the run itself cost.
+fn cpu_seconds() -> f64 {
+    #[cfg(target_os = "linux")]
+    {
+        #[repr(C)]
+        struct Timespec {
+            seconds: i64,
+            nanoseconds: i64,
+        }
+        const CLOCK_PROCESS_CPUTIME_ID: i32 = 2;
+        unsafe extern "C" {
+            fn clock_gettime(clock: i32, time: *mut Timespec) -> i32;
+        }
+        let mut time = Timespec {
+            seconds: 0,
+            nanoseconds: 0,
+        };
+        // SAFETY: `time` is a valid, writable `struct timespec` (two 64-bit fields on the
+        // 64-bit Linux targets this builds for), and the clock id is Linux's.
+        if unsafe { clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &mut time) } == 0 {
+            return time.seconds as f64 + time.nanoseconds as f64 * 1e-9;
+        }
+    }
+    f64::NAN
+}
+
 /// The scene: `side²` balls.
 fn scene(side: usize, seed: u64) -> Result<(Vec<Ball>, f64), String> {
     let mut rng = Rng(seed);
@@ -46,13 +74,19 @@ fn scene(side: usize, seed: u64) -> Result<(Vec<Ball>, f64), String> {
 }
 
 /// The open scene's run: the calendar without walls, collisions resolved elastically (equal
-/// masses) until `events` or none is left: (seconds after the build, events, build seconds).
-fn open_run(balls: &[Ball], radii: &[f64], events: usize) -> Result<(f64, usize, f64), String> {
+/// masses) until `events` or none is left: (seconds after the build, events, build seconds,
+/// CPU seconds after the build).
+fn open_run(
+    balls: &[Ball],
+    radii: &[f64],
+    events: usize,
+) -> Result<(f64, usize, f64, f64), String> {
     let begin = Instant::now();
     let mut s = CollisionSchedule::<2>::from_balls(balls, radii, 0.0, ScheduleOptions::default())
         .map_err(|e| e.to_string())?;
     let build = begin.elapsed().as_secs_f64();
     let begin = Instant::now();
+    let cpu = cpu_seconds();
     let mut done = 0;
     while done < events {
         let Some(c) = s.next_collision() else { break };
@@ -70,7 +104,12 @@ fn open_run(balls: &[Ball], radii: &[f64], events: usize) -> Result<(f64, usize,
             .map_err(|e| e.to_string())?;
         done += 1;
     }
-    Ok((begin.elapsed().as_secs_f64(), done, build))
+    Ok((
+        begin.elapsed().as_secs_f64(),
+        done,
+        build,
+        cpu_seconds() - cpu,
+    ))
 }
 
 fn run(args: &[String]) -> Result<String, String> {
@@ -101,12 +140,14 @@ fn run(args: &[String]) -> Result<String, String> {
             .collect::<Result<_, _>>()?;
     }
     if open {
-        let (seconds, done, build) = open_run(&balls, &vec![r; balls.len()], events)?;
+        let (seconds, done, build, cpu) = open_run(&balls, &vec![r; balls.len()], events)?;
         return Ok(format!(
             "n={} events={done} friction={friction} radius={radius} open=1 \
-             us_per_event={:.3} seconds={seconds:.3} build_seconds={build:.3}",
+             us_per_event={:.3} cpu_us_per_event={:.3} seconds={seconds:.3} \
+             build_seconds={build:.3}",
             balls.len(),
-            seconds / done.max(1) as f64 * 1e6
+            seconds / done.max(1) as f64 * 1e6,
+            cpu / done.max(1) as f64 * 1e6
         ));
     }
     let walls = Walls::new([0.0, 0.0], [1.0, 1.0]).map_err(|e| e.to_string())?;
@@ -121,16 +162,22 @@ fn run(args: &[String]) -> Result<String, String> {
         walls: Some(walls),
         ..Default::default()
     };
+    let cpu = cpu_seconds();
     let calendar = CollisionSchedule::<2>::from_balls(&balls, &radii, 0.0, calendar_options)
         .map_err(|e| e.to_string())?;
     let build = begin.elapsed().as_secs_f64();
+    let cpu_build = cpu_seconds() - cpu;
     let memory = calendar.heap_bytes();
     drop(calendar);
     let begin = Instant::now();
+    let cpu = cpu_seconds();
     let result = simulate(&balls, &radii, walls, &options).map_err(|e| e.to_string())?;
     let elapsed = begin.elapsed().as_secs_f64();
+    let cpu_elapsed = cpu_seconds() - cpu;
     // Per event, without the build that `simulate` does first.
     let per_event = (elapsed - build).max(0.0) / result.events.len().max(1) as f64 * 1e6;
+    let cpu_per_event =
+        (cpu_elapsed - cpu_build).max(0.0) / result.events.len().max(1) as f64 * 1e6;
 
     // The pair query on neighbours: ball k against k + 1 and k + side.
     let paths: Vec<Path2> = balls
@@ -160,7 +207,8 @@ fn run(args: &[String]) -> Result<String, String> {
     let pair_ns = begin.elapsed().as_secs_f64() / pairs.len().max(1) as f64 * 1e9;
     Ok(format!(
         "n={} events={} friction={friction} radius={radius} open=0 \
-         us_per_event={per_event:.3} seconds={elapsed:.3} build_seconds={build:.3} \
+         us_per_event={per_event:.3} cpu_us_per_event={cpu_per_event:.3} seconds={elapsed:.3} \
+         build_seconds={build:.3} \
          bytes_per_ball={:.1} path_bytes_per_ball={:.1} grid_bytes_per_ball={:.1} \
          pair_query_ns={pair_ns:.1} pairs={} pair_hits={hits}",
         balls.len(),
