@@ -166,7 +166,6 @@ fn collision_times<'py>(
     let n = pairs.pos_a.len();
     // The inputs' own errors first, then `out`'s.
     batch::check_lengths(&pairs, n).map_err(|e| from_core(py, e))?;
-    let progress = Progress::of(py, progress, Some(n), "pair")?;
     let inputs = [
         Some(&pos_a),
         Some(&vel_a),
@@ -179,6 +178,8 @@ fn collision_times<'py>(
     ];
     let expected = "a 1-D float64 array of shape (N,)";
     output::<Ix1>(py, n, out, [n], expected, &inputs, |times| {
+        // The bar once `out` is checked: made, it is closed whatever the call's end.
+        let progress = Progress::of(py, progress, Some(n), "pair")?;
         timed(py, n, progress, || {
             batch::collision_times(&pairs, times, threads)
         })
@@ -767,6 +768,10 @@ fn index_i64(i: usize) -> i64 {
 #[pymodule(name = "_core")]
 fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
+    // numpy's C API loaded now, at import, rather than at a call's first array (rust-numpy
+    // loads it lazily, running Python code, and panics if that raises): a Ctrl-C during a
+    // long call's checks, before its first array, came out as a PanicException from there.
+    numpy::PyArray1::<f64>::zeros(py, 0, false);
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("InputError", py.get_type::<InputError>())?;
     // An attribute, not an export: a hook for the benchmarks, out of `__all__`.

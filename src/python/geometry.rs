@@ -213,7 +213,6 @@ impl Call<'_> {
         let threads = self.threads;
         // The inputs' own errors first, then `out`'s.
         batch::check_path_geometry(&rows, radius, t_max, n).map_err(|e| from_core(py, e))?;
-        let progress = Progress::of(py, self.progress, Some(n), "path")?;
         let how = Kernel::for_items(n.saturating_mul(table.len().max(1)), INLINE_UP_TO);
         let released = how != Kernel::Inline;
         let _borrowed = match released {
@@ -225,6 +224,8 @@ impl Call<'_> {
             true => Some((time.tracked()?, kind.tracked()?, index.tracked()?)),
             false => None,
         };
+        // The bar once `out` is checked: made, it is closed whatever the call's end.
+        let progress = Progress::of(py, self.progress, Some(n), "path")?;
         let columns = ContactColumns {
             time: time.values(),
             kind: kind.values(),

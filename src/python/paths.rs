@@ -347,8 +347,9 @@ fn batch_times<'py, const D: usize>(
     };
     // The inputs' own errors first, then `out`'s.
     batch::check_path_pairs(&pairs, n).map_err(|e| from_core(py, e))?;
-    let progress = Progress::of(py, progress, Some(n), "pair")?;
     output::<Ix1>(py, n, out, [n], expected, inputs, |times| {
+        // The bar once `out` is checked: made, it is closed whatever the call's end.
+        let progress = Progress::of(py, progress, Some(n), "pair")?;
         timed(py, n, progress, || {
             batch::path_collision_times(&pairs, times, threads)
         })

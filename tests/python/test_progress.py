@@ -148,3 +148,11 @@ def test_a_bar_is_closed_when_the_call_fails():
     with pytest.raises(bc.InputError, match=r"^vel_a\[30000"):
         bc.collision_times(pa, va, fa, pb, vb, fb, r, progress=bar)
     assert bar.closed and bar.n < 50_000
+
+
+def test_a_bad_out_is_reported_before_the_bar_is_made():
+    pa, va, fa, pb, vb, fb, r = pairs(10)
+    bar = Bar()
+    with pytest.raises(bc.InputError, match=r"^out"):
+        bc.collision_times(pa, va, fa, pb, vb, fb, r, out=np.empty(3), progress=bar)
+    assert bar.n == 0 and not bar.closed
