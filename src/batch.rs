@@ -709,30 +709,35 @@ fn length_mismatch(argument: &'static str, expected: usize, found: usize) -> Inp
     InputError::new(argument, InputErrorKind::LengthMismatch { expected, found })
 }
 
-/// Runs `work(offset, chunk)` over `out` in chunks of [`CHUNK`] ([`run_chunks_of`]).
+/// Runs `work(offset, chunk)` over `out` in chunks of [`CHUNK`] ([`run_chunks_of`]), each
+/// item one query.
 fn run_chunks<T: Send>(
     out: &mut [T],
     threads: Threads,
     work: impl Fn(usize, &mut [T]) -> Result<(), InputError> + Sync,
 ) -> Result<(), InputError> {
-    run_chunks_of(CHUNK, out, threads, work)
+    run_chunks_of(CHUNK, out, threads, <[T]>::len, work)
 }
 
 /// Runs `work(offset, chunk)` over `out` in chunks of `size` (≥ 1) items, on the requested
 /// threads, and returns the error of the lowest index if any chunk failed (each chunk stops at
 /// its first error). Each chunk first looks at the caller's [`Interrupt`] flag: once it is
-/// set, the chunks left fail with [`InputErrorKind::Interrupted`].
+/// set, the chunks left fail with [`InputErrorKind::Interrupted`]; and once done, adds its
+/// `queries(chunk)` to the caller's counter ([`counted`](crate::interrupt::counted)).
 fn run_chunks_of<T: Send>(
     size: usize,
     out: &mut [T],
     threads: Threads,
+    queries: fn(&[T]) -> usize,
     work: impl Fn(usize, &mut [T]) -> Result<(), InputError> + Sync,
 ) -> Result<(), InputError> {
     let size = size.max(1);
     let interrupt = Interrupt::current();
     let work = |offset: usize, out: &mut [T]| {
         interrupt.check()?;
-        work(offset, out)
+        work(offset, out)?;
+        interrupt.done(queries(out));
+        Ok(())
     };
     let parallel = |out: &mut [T]| {
         out.par_chunks_mut(size)

@@ -11,6 +11,10 @@
 //! The flag travels with the calling thread: the batch, scene and calendar entry points read
 //! it where they start, on that thread, and hand it to their worker threads.
 //!
+//! [`counted`] gives a call a counter in the same way: the batch calls add the items (pairs,
+//! paths) of each chunk they finish to it, at the same place they look at the flag, so that
+//! another thread can show how far the call has come (the Python binding's progress bars).
+//!
 //! ```
 //! use ballcollide::batch::{self, Pairs, PerPair, Threads};
 //! use ballcollide::interrupt::interruptible;
@@ -39,13 +43,15 @@
 
 use std::cell::RefCell;
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use crate::error::{InputError, InputErrorKind};
 
 thread_local! {
     /// The flag of the [`interruptible`] call running on this thread, if any.
     static FLAG: RefCell<Option<Arc<AtomicBool>>> = const { RefCell::new(None) };
+    /// The counter of the [`counted`] call running on this thread, if any.
+    static DONE: RefCell<Option<Arc<AtomicUsize>>> = const { RefCell::new(None) };
 }
 
 /// Runs `call` on this thread with `stop` as its flag: the long loops of the batch, scene and
@@ -64,21 +70,75 @@ pub fn interruptible<T>(stop: Arc<AtomicBool>, call: impl FnOnce() -> T) -> T {
     call()
 }
 
-/// The flag of the calling thread's [`interruptible`] call, to look at from any thread.
+/// Runs `call` on this thread with `done` as its counter: the batch calls made inside it
+/// ([`collision_times`](crate::batch::collision_times), the path and table batches) add the
+/// items of each chunk they finish to `done` (relaxed: read it from another thread for a
+/// progress bar; it reaches the number of items when the call succeeds). Calls nest: the
+/// innermost counter counts.
+///
+/// ```
+/// use ballcollide::batch::{self, Pairs, PerPair, Threads};
+/// use ballcollide::interrupt::counted;
+/// use std::sync::Arc;
+/// use std::sync::atomic::{AtomicUsize, Ordering};
+///
+/// let n = 5000;
+/// let (pos_a, vel_a) = (vec![[0.0, 0.0]; n], vec![[1.0, 0.0]; n]);
+/// let (pos_b, vel_b) = (vec![[3.0, 0.0]; n], vec![[-1.0, 0.0]; n]);
+/// let pairs = Pairs {
+///     pos_a: &pos_a, vel_a: &vel_a, friction_a: PerPair::All(0.0),
+///     pos_b: &pos_b, vel_b: &vel_b, friction_b: PerPair::All(0.0),
+///     radius: PerPair::All(1.0), t_max: PerPair::All(f64::INFINITY),
+/// };
+/// let mut out = vec![0.0; n];
+/// let done = Arc::new(AtomicUsize::new(0));
+/// counted(Arc::clone(&done), || batch::collision_times(&pairs, &mut out, Threads::All))?;
+/// assert_eq!(done.load(Ordering::Relaxed), n);
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+pub fn counted<T>(done: Arc<AtomicUsize>, call: impl FnOnce() -> T) -> T {
+    /// Puts the outer counter back, also when `call` panics.
+    struct Restore(Option<Arc<AtomicUsize>>);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            let outer = self.0.take();
+            DONE.with(|done| *done.borrow_mut() = outer);
+        }
+    }
+    let _restore = Restore(DONE.with(|outer| outer.replace(Some(done))));
+    call()
+}
+
+/// The flag of the calling thread's [`interruptible`] call and the counter of its [`counted`]
+/// call, to use from any thread.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct Interrupt(Option<Arc<AtomicBool>>);
+pub(crate) struct Interrupt {
+    stop: Option<Arc<AtomicBool>>,
+    done: Option<Arc<AtomicUsize>>,
+}
 
 impl Interrupt {
-    /// The calling thread's flag (none outside [`interruptible`]).
+    /// The calling thread's flag and counter (none outside [`interruptible`] and
+    /// [`counted`]).
     pub(crate) fn current() -> Self {
-        Self(FLAG.with(|flag| flag.borrow().clone()))
+        Self {
+            stop: FLAG.with(|flag| flag.borrow().clone()),
+            done: DONE.with(|done| done.borrow().clone()),
+        }
     }
 
     /// `Err(Interrupted)` once the flag is set.
     pub(crate) fn check(&self) -> Result<(), InputError> {
-        match &self.0 {
+        match &self.stop {
             Some(stop) if stop.load(Ordering::Relaxed) => Err(interrupted()),
             _ => Ok(()),
+        }
+    }
+
+    /// Adds `items` finished to the counter, if any.
+    pub(crate) fn done(&self, items: usize) {
+        if let Some(done) = &self.done {
+            done.fetch_add(items, Ordering::Relaxed);
         }
     }
 }
@@ -103,6 +163,20 @@ mod tests {
             assert!(Interrupt::current().check().is_ok());
         });
         assert!(Interrupt::current().check().is_ok());
+    }
+
+    #[test]
+    fn the_counter_holds_inside_the_call_only_and_nests() {
+        let (outer, inner) = (Arc::new(AtomicUsize::new(0)), Arc::new(AtomicUsize::new(0)));
+        Interrupt::current().done(1);
+        counted(Arc::clone(&outer), || {
+            Interrupt::current().done(2);
+            counted(Arc::clone(&inner), || Interrupt::current().done(3));
+            Interrupt::current().done(4);
+        });
+        Interrupt::current().done(5);
+        assert_eq!(outer.load(Ordering::Relaxed), 6);
+        assert_eq!(inner.load(Ordering::Relaxed), 3);
     }
 
     #[test]

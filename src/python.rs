@@ -39,7 +39,7 @@ use crate::error::InputErrorKind;
 use crate::poly;
 use crate::scene::{self, SceneOptions};
 use input_error::{InputError, from_core, input_error, kind};
-use long_call::{INLINE_UP_TO, Kernel, run};
+use long_call::{INLINE_UP_TO, Kernel, Progress, run, run_shown};
 use read::{Floats, Given, number, param, point, rows, threads};
 
 // The `text_signature`s spell the default horizon `1e999`, a literal that reads as `inf`
@@ -75,6 +75,12 @@ const SCENE_INLINE_UP_TO: usize = 16;
 ///     written into it and it is returned, as numpy's ``out=``. A simulator that asks again
 ///     after every event saves the allocation, and the page faults of a fresh array, on
 ///     each call. If the call raises, its contents are unspecified.
+/// progress
+///     ``None`` or ``False`` (default): none. ``True``: a ``tqdm`` progress bar of the
+///     pairs done (tqdm must be installed: the ``progress`` extra). A tqdm-like bar of
+///     your own (``update(n)``, ``close()``), or a callable called with the number of new
+///     pairs done. Moved on every 0.05 s, from chunk to chunk; what it is shown adds up to
+///     N when the call succeeds. The answers do not depend on it.
 ///
 /// Returns
 /// -------
@@ -118,10 +124,10 @@ const SCENE_INLINE_UP_TO: usize = 16;
 #[pyo3(
     signature = (
         pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius,
-        *, t_max=Given(None), num_threads=None, out=None
+        *, t_max=Given(None), num_threads=None, out=None, progress=None
     ),
     text_signature = "(pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, \
-                      t_max=1e999, num_threads=None, out=None)"
+                      t_max=1e999, num_threads=None, out=None, progress=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 fn collision_times<'py>(
@@ -136,6 +142,7 @@ fn collision_times<'py>(
     t_max: Given<'py>,
     num_threads: Option<&Bound<'py, PyAny>>,
     out: Option<&Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let pos_a = rows("pos_a", pos_a)?;
     let vel_a = rows("vel_a", vel_a)?;
@@ -171,7 +178,11 @@ fn collision_times<'py>(
     ];
     let expected = "a 1-D float64 array of shape (N,)";
     output::<Ix1>(py, n, out, [n], expected, &inputs, |times| {
-        timed(py, n, || batch::collision_times(&pairs, times, threads))
+        // The bar once `out` is checked: made, it is closed whatever the call's end.
+        let progress = Progress::of(py, progress, Some(n), "pair")?;
+        timed(py, n, progress, || {
+            batch::collision_times(&pairs, times, threads)
+        })
     })
 }
 
@@ -224,19 +235,20 @@ thread_local! {
     static LAST_KERNEL_SECONDS: Cell<f64> = const { Cell::new(f64::NAN) };
 }
 
-/// [`run`], timing the kernel of batches of more than [`INLINE_UP_TO`] pairs
+/// [`run_shown`], timing the kernel of batches of more than [`INLINE_UP_TO`] pairs
 /// ([`_last_kernel_seconds`]); small batches are not timed, so as not to add the clock's cost
 /// to calls that cost a microsecond.
 fn timed(
     py: Python<'_>,
     n: usize,
+    progress: Option<Progress>,
     kernel: impl Send + FnOnce() -> Result<(), crate::InputError>,
 ) -> PyResult<()> {
     let how = Kernel::for_items(n, INLINE_UP_TO);
     if how == Kernel::Inline {
-        return run(py, how, kernel);
+        return run_shown(py, how, progress, kernel);
     }
-    let seconds = run(py, how, || {
+    let seconds = run_shown(py, how, progress, || {
         let start = Instant::now();
         kernel()?;
         Ok(start.elapsed().as_secs_f64())
@@ -756,6 +768,10 @@ fn index_i64(i: usize) -> i64 {
 #[pymodule(name = "_core")]
 fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
+    // numpy's C API loaded now, at import, rather than at a call's first array (rust-numpy
+    // loads it lazily, running Python code, and panics if that raises): a Ctrl-C during a
+    // long call's checks, before its first array, came out as a PanicException from there.
+    numpy::PyArray1::<f64>::zeros(py, 0, false);
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("InputError", py.get_type::<InputError>())?;
     // An attribute, not an export: a hook for the benchmarks, out of `__all__`.

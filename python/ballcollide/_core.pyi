@@ -2,7 +2,7 @@
 # in src/python.rs and src/python/*.rs (what `help()` shows): the one place the
 # Python API is documented.
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any, Final, NamedTuple, Protocol, SupportsFloat, SupportsIndex, final
 
 import numpy as np
@@ -82,6 +82,15 @@ def collision_time(
     *,
     t_max: _Number = ...,
 ) -> float: ...
+
+# progress=: a tqdm-like bar (set_postfix is used if it has one), or a callable shown the
+# number of new items done.
+class _ProgressBar(Protocol):
+    def update(self, n: int = ..., /) -> Any: ...
+    def close(self) -> Any: ...
+
+_Progress = bool | _ProgressBar | Callable[[int], object] | None
+
 def collision_times(
     pos_a: npt.ArrayLike,
     vel_a: npt.ArrayLike,
@@ -94,6 +103,7 @@ def collision_times(
     t_max: _PerPair = ...,
     num_threads: SupportsIndex | None = None,
     out: _F64Array | None = None,
+    progress: _Progress = None,
 ) -> _F64Array: ...
 def _last_kernel_seconds() -> float: ...
 def positions_at(
@@ -119,6 +129,7 @@ def path_collision_times(
     t_max: _PerPair = ...,
     num_threads: SupportsIndex | None = None,
     out: _F64Array | None = None,
+    progress: _Progress = None,
 ) -> _F64Array: ...
 def path_collision_time(
     path_a: _Path,
@@ -152,6 +163,7 @@ def path_geometry_times(
     t_max: _PerPair = ...,
     num_threads: SupportsIndex | None = None,
     out: tuple[_F64Array, _I8Array, _I64Array] | list[Any] | None = None,
+    progress: _Progress = None,
 ) -> tuple[_F64Array, _I8Array, _I64Array]: ...
 def real_roots(coeffs: npt.ArrayLike) -> _F64Array: ...
 def simd_level() -> str: ...
@@ -186,11 +198,6 @@ def first_contacts(
 # A box of walls: (lo, hi), each D numbers.
 _Box = tuple[npt.ArrayLike, npt.ArrayLike] | list[npt.ArrayLike]
 _Indices = SupportsIndex | npt.ArrayLike
-
-class _ProgressBar(Protocol):
-    def update(self, n: int = ..., /) -> Any: ...
-    def set_postfix(self, *args: Any, **kwargs: Any) -> Any: ...
-    def close(self) -> Any: ...
 
 class Event(NamedTuple):
     time: float
@@ -283,7 +290,7 @@ def simulate(
     restitution: _Number = 1.0,
     t_end: _Number = ...,
     max_events: SupportsIndex | None = None,
-    progress: bool | _ProgressBar | None = False,
+    progress: _Progress = False,
     segments: _Objects = None,
     segment_sides: _Sides = None,
     circles: _Objects = None,

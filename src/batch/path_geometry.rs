@@ -146,7 +146,8 @@ pub fn path_geometry_times<const D: usize>(
     check_len("index", out.index.len(), n)?;
     let size = paths_a_chunk(table.len());
     let mut parts = out.parts(size);
-    run_chunks_of(1, &mut parts, threads, |part, one| {
+    let queries = |parts: &[ContactColumns<'_>]| parts.iter().map(ContactColumns::len).sum();
+    run_chunks_of(1, &mut parts, threads, queries, |part, one| {
         let mut buffers = (Vec::new(), Vec::new());
         for columns in one {
             let first = part * size;

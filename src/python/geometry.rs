@@ -13,7 +13,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 
 use super::input_error::{from_core, input_error, kind};
-use super::long_call::{INLINE_UP_TO, Kernel, run};
+use super::long_call::{INLINE_UP_TO, Kernel, Progress, run_shown};
 use super::paths::{Layout, NAMES_ONE, Side, broadcast, broadcast_len, param_len, side};
 use super::read::{self, Floats, Given, Out, param, threads};
 use super::table::table_of;
@@ -80,6 +80,8 @@ type Answers<'py> = (
 ///     dtypes float64, int8 and int64, each writeable, C-contiguous and sharing no memory
 ///     with another or with the paths, ``radius`` or ``t_max``: the answers are written into
 ///     them, and they are returned. (The objects are copied before anything is written.)
+/// progress
+///     As in :func:`collision_times`, counting paths (balls).
 ///
 /// An object argument left out (or ``None``, or ``[]``) is no object of its kind. Every array
 /// is read as in :func:`collision_times` (lists, any real dtype, any layout).
@@ -137,11 +139,12 @@ type Answers<'py> = (
 #[pyo3(
     signature = (
         start, pos, vel, acc, radius, *, segments=None, segment_sides=None, circles=None,
-        targets=None, planes=None, t_max=Given(None), num_threads=None, out=None
+        targets=None, planes=None, t_max=Given(None), num_threads=None, out=None,
+        progress=None
     ),
     text_signature = "(start, pos, vel, acc, radius, *, segments=None, segment_sides=None, \
                       circles=None, targets=None, planes=None, t_max=1e999, num_threads=None, \
-                      out=None)"
+                      out=None, progress=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub(super) fn path_geometry_times<'py>(
@@ -159,6 +162,7 @@ pub(super) fn path_geometry_times<'py>(
     t_max: Given<'py>,
     num_threads: Option<&Bound<'py, PyAny>>,
     out: Option<&Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Answers<'py>> {
     let paths = side(py, NAMES_ONE, [start, pos, vel, acc], Layout::Batch, None)?;
     let radius = param("radius", radius)?;
@@ -176,6 +180,7 @@ pub(super) fn path_geometry_times<'py>(
         threads,
         n,
         inputs: &inputs,
+        progress,
     };
     match paths.dim {
         2 => call.answers::<2>(py, objects, out),
@@ -191,6 +196,7 @@ struct Call<'a> {
     threads: Threads,
     n: usize,
     inputs: &'a [Option<&'a Floats<'a>>],
+    progress: Option<&'a Bound<'a, PyAny>>,
 }
 
 impl Call<'_> {
@@ -218,12 +224,14 @@ impl Call<'_> {
             true => Some((time.tracked()?, kind.tracked()?, index.tracked()?)),
             false => None,
         };
+        // The bar once `out` is checked: made, it is closed whatever the call's end.
+        let progress = Progress::of(py, self.progress, Some(n), "path")?;
         let columns = ContactColumns {
             time: time.values(),
             kind: kind.values(),
             index: index.values(),
         };
-        run(py, how, || {
+        run_shown(py, how, progress, || {
             batch::path_geometry_times(&rows, &table, radius, t_max, columns, threads)
         })?;
         Ok((time.into_array(), kind.into_array(), index.into_array()))

@@ -18,7 +18,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 
 use super::input_error::{from_core, input_error, located_error};
-use super::long_call::{INLINE_UP_TO, Kernel, run};
+use super::long_call::{INLINE_UP_TO, Kernel, Progress, run};
 use super::read::{self, Floats, Given, Param, param, shape_text, threads};
 use super::{output, timed};
 use crate::batch::{self, PathPairs, PathRows, PerPair, Threads};
@@ -205,8 +205,8 @@ pub(super) fn broadcast<'a>(p: PerPair<'a>, n: usize) -> PerPair<'a> {
 /// radius, t_max
 ///     Numbers or shape ``(N,)``: contact distances (``> 0``) and horizons (``≥ 0``,
 ///     ``inf`` for none; a contact at ``t ≥ t_max`` is none).
-/// num_threads, out
-///     As in :func:`collision_times`.
+/// num_threads, out, progress
+///     As in :func:`collision_times` (``progress`` counts pairs).
 ///
 /// A leading dimension of 1 broadcasts against ``N`` (on either side, and for ``radius``
 /// and ``t_max``): one path of A against N paths of B is "ball ``i`` against all others".
@@ -249,10 +249,10 @@ pub(super) fn broadcast<'a>(p: PerPair<'a>, n: usize) -> PerPair<'a> {
 #[pyo3(
     signature = (
         start_a, pos_a, vel_a, acc_a, start_b, pos_b, vel_b, acc_b, radius,
-        *, t_max=Given(None), num_threads=None, out=None
+        *, t_max=Given(None), num_threads=None, out=None, progress=None
     ),
     text_signature = "(start_a, pos_a, vel_a, acc_a, start_b, pos_b, vel_b, acc_b, radius, *, \
-                      t_max=1e999, num_threads=None, out=None)"
+                      t_max=1e999, num_threads=None, out=None, progress=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub(super) fn path_collision_times<'py>(
@@ -269,6 +269,7 @@ pub(super) fn path_collision_times<'py>(
     t_max: Given<'py>,
     num_threads: Option<&Bound<'py, PyAny>>,
     out: Option<&Bound<'py, PyAny>>,
+    progress: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let a = side(
         py,
@@ -299,24 +300,45 @@ pub(super) fn path_collision_times<'py>(
     inputs.extend(b.inputs());
     inputs.extend([radius.each(), t_max.each()]);
     let expected = "a 1-D float64 array of shape (N,)";
+    let call = BatchCall {
+        threads,
+        n,
+        out,
+        progress,
+        inputs: &inputs,
+        expected,
+    };
     match a.dim {
-        2 => batch_times::<2>(py, [&a, &b], per_pair, threads, n, out, &inputs, expected),
-        _ => batch_times::<3>(py, [&a, &b], per_pair, threads, n, out, &inputs, expected),
+        2 => batch_times::<2>(py, [&a, &b], per_pair, call),
+        _ => batch_times::<3>(py, [&a, &b], per_pair, call),
     }
 }
 
+/// What [`path_collision_times`] passes on to [`batch_times`] besides the pairs.
+struct BatchCall<'a, 'py> {
+    threads: Threads,
+    n: usize,
+    out: Option<&'a Bound<'py, PyAny>>,
+    progress: Option<&'a Bound<'py, PyAny>>,
+    inputs: &'a [Option<&'a Floats<'a>>],
+    expected: &'a str,
+}
+
 /// [`path_collision_times`] in dimension `D`.
-#[allow(clippy::too_many_arguments)]
 fn batch_times<'py, const D: usize>(
     py: Python<'py>,
     [a, b]: [&Side<'_>; 2],
     [radius, t_max]: [PerPair<'_>; 2],
-    threads: Threads,
-    n: usize,
-    out: Option<&Bound<'py, PyAny>>,
-    inputs: &[Option<&Floats<'_>>],
-    expected: &str,
+    call: BatchCall<'_, 'py>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let BatchCall {
+        threads,
+        n,
+        out,
+        progress,
+        inputs,
+        expected,
+    } = call;
     let pairs = PathPairs::<D> {
         a: a.rows(),
         b: b.rows(),
@@ -326,7 +348,9 @@ fn batch_times<'py, const D: usize>(
     // The inputs' own errors first, then `out`'s.
     batch::check_path_pairs(&pairs, n).map_err(|e| from_core(py, e))?;
     output::<Ix1>(py, n, out, [n], expected, inputs, |times| {
-        timed(py, n, || {
+        // The bar once `out` is checked: made, it is closed whatever the call's end.
+        let progress = Progress::of(py, progress, Some(n), "pair")?;
+        timed(py, n, progress, || {
             batch::path_collision_times(&pairs, times, threads)
         })
     })

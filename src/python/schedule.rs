@@ -17,7 +17,7 @@ use std::time::Instant;
 
 use super::index_i64;
 use super::input_error::{from_core, input_error};
-use super::long_call::{INLINE_UP_TO, Kernel, SIGNAL_CHECKS, run};
+use super::long_call::{INLINE_UP_TO, Kernel, Progress, SIGNAL_CHECKS, look, run};
 use super::paths::{Layout, Side, side};
 use super::read::{self, Given, param, rows};
 use super::table::table_of;
@@ -709,74 +709,6 @@ fn calendar_kernel(n: usize) -> Kernel {
     Kernel::for_items(n.saturating_mul(PAIRS_A_BALL), INLINE_UP_TO)
 }
 
-/// A progress bar for a long call: a ``tqdm`` bar (``progress=True``) or the caller's own
-/// object with tqdm's ``update(n)``, ``set_postfix(**values)`` and ``close()``.
-struct ProgressBar(Py<PyAny>);
-
-impl ProgressBar {
-    /// `events` more events, the simulation at `time`.
-    fn show(&self, py: Python<'_>, events: usize, time: f64) -> PyResult<()> {
-        let bar = self.0.bind(py);
-        let postfix = [
-            ("t", time.into_pyobject(py)?.into_any()),
-            ("refresh", false.into_pyobject(py)?.to_owned().into_any()),
-        ];
-        bar.call_method("set_postfix", (), Some(&postfix.into_py_dict(py)?))?;
-        bar.call_method1("update", (events,))?;
-        Ok(())
-    }
-
-    /// The last `events` and the end time, then closed.
-    fn close(&self, py: Python<'_>, events: usize, time: f64) -> PyResult<()> {
-        if time.is_finite() {
-            self.show(py, events, time)?;
-        }
-        self.0.bind(py).call_method0("close")?;
-        Ok(())
-    }
-}
-
-/// The progress bar `progress` asks for: none for `None`/`False`; for `True`, a `tqdm` bar
-/// of `total` events (unknown if `None`), an error naming `progress` if tqdm is not
-/// installed; else the object itself, which must have tqdm's `update`, `set_postfix` and
-/// `close`.
-fn progress_bar(
-    py: Python<'_>,
-    progress: Option<&Bound<'_, PyAny>>,
-    total: Option<usize>,
-) -> PyResult<Option<ProgressBar>> {
-    let Some(progress) = progress.filter(|p| !p.is_none()) else {
-        return Ok(None);
-    };
-    if let Ok(flag) = progress.cast::<pyo3::types::PyBool>() {
-        if !flag.is_true() {
-            return Ok(None);
-        }
-        let tqdm = py.import("tqdm").map_err(|_| {
-            pyo3::exceptions::PyImportError::new_err(
-                "progress: progress=True needs tqdm (pip install tqdm)",
-            )
-        })?;
-        let kwargs = [
-            ("total", total.into_pyobject(py)?.into_any()),
-            ("unit", "event".into_pyobject(py)?.into_any()),
-        ];
-        let bar = tqdm
-            .getattr("tqdm")?
-            .call((), Some(&kwargs.into_py_dict(py)?))?;
-        return Ok(Some(ProgressBar(bar.unbind())));
-    }
-    for method in ["update", "set_postfix", "close"] {
-        if !progress.hasattr(method)? {
-            return Err(PyTypeError::new_err(format!(
-                "progress: expected True, False, None or a tqdm-like bar (with update, \
-                 set_postfix and close), got an object without {method}"
-            )));
-        }
-    }
-    Ok(Some(ProgressBar(progress.clone().unbind())))
-}
-
 /// An event-driven simulation of smooth hard friction balls in a box, and on a table if
 /// given, run in Rust on the calendar: a :class:`Simulation` ``(times, i, j, pos, vel, kind,
 /// index, captured)``.
@@ -812,9 +744,11 @@ fn progress_bar(
 /// max_events
 ///     ``None``, or an int ``≥ 0``: the number of events after which to stop.
 /// progress
-///     ``True`` for a progress bar (``tqdm``, which must be installed: the ``progress``
-///     extra), or a tqdm-like bar of your own (``update``, ``set_postfix``, ``close``);
-///     ``False`` or ``None`` (the default) for none. Moved on every 0.05 s.
+///     ``True`` for a progress bar of events (``tqdm``, which must be installed: the
+///     ``progress`` extra), a tqdm-like bar of your own (``update``, ``close``, and
+///     ``set_postfix`` if it has one, shown the time ``t``), or a callable called with the
+///     number of new events; ``False`` or ``None`` (the default) for none. Moved on every
+///     0.05 s; the events it is shown add up to ``len(times)``.
 /// segments, segment_sides, circles, targets, planes
 ///     The table's objects, as for :func:`path_geometry_times` (2-D); :func:`pool_table`
 ///     gives a pool table's.
@@ -920,13 +854,12 @@ pub(super) fn simulate<'py>(
         table: table_of::<2>(py, segments, segment_sides, circles, targets, planes)?,
         table_restitution: table_restitution.number_or("table_restitution", 1.0)?,
     };
-    let bar = progress_bar(py, progress, options.max_events)?;
+    let mut bar = Progress::of(py, progress, options.max_events, "event")?;
     // Ctrl-C and the progress bar: the run looks for Python's signals, and moves the bar on,
     // every few hundredths of a second (with the GIL for that moment), and stops on the first
-    // signal that raises.
+    // signal (or error of the bar) that raises.
     let mut interrupted: Option<PyErr> = None;
     let mut checked = Instant::now();
-    let mut shown = 0usize;
     let run = py
         .detach(|| {
             crate::schedule::simulate_observed(&balls, &radii, walls, &options, |p| {
@@ -934,14 +867,8 @@ pub(super) fn simulate<'py>(
                     return ControlFlow::Continue(());
                 }
                 checked = Instant::now();
-                let checked = Python::attach(|py| {
-                    if let Some(bar) = &bar {
-                        bar.show(py, p.events - shown, p.time)?;
-                        shown = p.events;
-                    }
-                    py.check_signals()
-                });
-                match checked {
+                let looked = Python::attach(|py| look(py, bar.as_mut(), p.events, Some(p.time)));
+                match looked {
                     Ok(()) => ControlFlow::Continue(()),
                     Err(e) => {
                         interrupted = Some(e);
@@ -951,11 +878,14 @@ pub(super) fn simulate<'py>(
             })
         })
         .map_err(|e| from_core(py, e));
-    if let Some(bar) = &bar {
+    if let Some(bar) = bar {
         let (events, end) = run
             .as_ref()
-            .map_or((shown, f64::NAN), |r| (r.events.len(), r.end));
-        bar.close(py, events - shown, end)?;
+            .map_or((0, f64::NAN), |r| (r.events.len(), r.end));
+        let closed = bar.close(py, events, Some(end));
+        if interrupted.is_none() {
+            closed?;
+        }
     }
     let run = run?;
     if let Some(e) = interrupted {

@@ -140,9 +140,6 @@ pub struct CollisionSchedule<const D: usize> {
     transitions: Option<Queue<TransitionKey>>,
     /// Per ball, whether it is out of play ([`retire`](Self::retire)); empty until a ball is.
     retired: Vec<bool>,
-    /// Scratch: a mark per ball, to list each candidate partner once.
-    marks: Vec<u32>,
-    mark: u32,
     /// Per ball, with a grid of one cell (else empty, as re-checks search every pair): the
     /// stamps of its path's last change and of its key's last refresh (from `clock`,
     /// counting path changes), and the balls that were candidates at that refresh (bit `k`
@@ -390,12 +387,6 @@ impl<const D: usize> CollisionSchedule<D> {
             .then(|| Queue::new(vec![TransitionKey::NOTHING; n]));
         let (lo, hi) = region(&paths, options.walls.as_ref(), cell);
         let grid = Grid::new(lo, hi, cell, n);
-        // A grid of one cell lists each ball once: no marks needed.
-        let marks = if grid.is_one_cell() {
-            Vec::new()
-        } else {
-            vec![0; n]
-        };
         let mut schedule = Self {
             grid,
             cell,
@@ -409,13 +400,11 @@ impl<const D: usize> CollisionSchedule<D> {
             object_contacts: Queue::new(vec![ObjectKey::NOTHING; object_keys]),
             transitions,
             retired: Vec::new(),
-            marks,
             updated: Vec::new(),
             refreshed: Vec::new(),
             clock: 0,
             searched: Vec::new(),
             best_times: Vec::new(),
-            mark: 0,
             candidates: Vec::new(),
             want: u32::MAX,
             pair_answer: None,
@@ -976,7 +965,6 @@ impl<const D: usize> CollisionSchedule<D> {
             + self.boxes.capacity() * size_of::<Reach<D>>()
             + self.ranges.capacity() * size_of::<CellRange<D>>()
             + self.horizons.capacity() * size_of::<f64>()
-            + self.marks.capacity() * size_of::<u32>()
             + self.retired.capacity()
             + self.updated.capacity() * size_of::<u32>()
             + self.refreshed.capacity() * size_of::<u32>()
@@ -1209,14 +1197,9 @@ impl<const D: usize> CollisionSchedule<D> {
     /// `known` ([`Known`]), some pairs are not searched again; `false` (nothing changed) if
     /// what was known turned out not to settle the key.
     fn refresh(&mut self, i: usize, known: Option<Known>) -> bool {
-        self.mark = self.mark.wrapping_add(1);
-        if self.mark == 0 {
-            self.marks.fill(0);
-            self.mark = 1;
-        }
         let mut candidates = std::mem::take(&mut self.candidates);
         candidates.clear();
-        let (marks, mark, boxes) = (&mut self.marks, self.mark, &self.boxes);
+        let boxes = &self.boxes;
         let own = &boxes[i];
         if self.grid.is_one_cell() {
             // Every ball is listed once, in order: no cell lists, no marks; each written in
@@ -1229,15 +1212,13 @@ impl<const D: usize> CollisionSchedule<D> {
             }
             candidates.truncate(kept);
         } else {
-            self.grid.for_each_ball(&self.ranges[i], |k| {
-                let ku = k as usize;
-                if ku != i && marks[ku] != mark {
-                    marks[ku] = mark;
-                    if boxes[ku].overlaps(own) {
+            // Each overlapping ball once (see `Grid::for_each_overlapping`).
+            self.grid
+                .for_each_overlapping(&self.ranges[i], own, boxes, |k| {
+                    if k as usize != i {
                         candidates.push(k);
                     }
-                }
-            });
+                });
         }
         let mut best = PairKey::NOTHING;
         // Whether the re-check's partner was searched and its contact is not past.

@@ -83,15 +83,9 @@ impl<const D: usize> Grid<D> {
                 hi: [0; D],
             };
         }
-        let index = |k: usize, x: f64| -> u32 {
-            let cell = ((x - self.origin[k]) * self.inverse_size).floor();
-            // NaN (never from valid boxes) and −∞ go to cell 0; `as` saturates.
-            let last = (self.counts[k] - 1) as f64;
-            cell.clamp(0.0, last).max(0.0) as u32
-        };
         CellRange {
-            lo: std::array::from_fn(|k| index(k, reach.lo[k])),
-            hi: std::array::from_fn(|k| index(k, reach.hi[k])),
+            lo: std::array::from_fn(|k| self.cell_along(k, reach.lo[k])),
+            hi: std::array::from_fn(|k| self.cell_along(k, reach.hi[k])),
         }
     }
 
@@ -147,6 +141,56 @@ impl<const D: usize> Grid<D> {
         for &ball in &self.wide {
             visit(ball);
         }
+    }
+
+    /// Calls `visit` once with every ball whose box (`boxes[ball]`) overlaps `own`, among
+    /// those listed in the cells of `range` (`own`'s range) and the wide boxes, each listed
+    /// ball's range being that of its box. A ball listed in several of those cells is
+    /// visited only in the lowest cell both ranges share (its range's low corner, or
+    /// `range`'s, whichever is higher on each axis): no marks to read and write per ball,
+    /// only its box, which the overlap needs anyway.
+    pub(crate) fn for_each_overlapping(
+        &self,
+        range: &CellRange<D>,
+        own: &Reach<D>,
+        boxes: &[Reach<D>],
+        mut visit: impl FnMut(u32),
+    ) {
+        let mut index = range.lo;
+        loop {
+            for &ball in &self.cells[self.flat(&index)] {
+                let other = &boxes[ball as usize];
+                if other.overlaps(own) && self.first_shared(&index, range, other) {
+                    visit(ball);
+                }
+            }
+            if !next_index(&mut index, range) {
+                break;
+            }
+        }
+        for &ball in &self.wide {
+            if boxes[ball as usize].overlaps(own) {
+                visit(ball);
+            }
+        }
+    }
+
+    /// Whether the cell at `index` (in `range`, and in the range of `other`, a box listed
+    /// there) is the lowest cell the two ranges share.
+    fn first_shared(&self, index: &[u32; D], range: &CellRange<D>, other: &Reach<D>) -> bool {
+        (0..D).fold(true, |all, k| {
+            all & (index[k] == range.lo[k].max(self.cell_along(k, other.lo[k])))
+        })
+    }
+
+    /// The cell along axis `k` of coordinate `x`, clamped to the grid (as [`range`](Self::range)).
+    fn cell_along(&self, k: usize, x: f64) -> u32 {
+        // Clamped first, then truncated: the floor (no call to `floor` in a build without
+        // SSE4.1). NaN (never from valid boxes) and −∞ go to cell 0.
+        let last = (self.counts[k] - 1) as f64;
+        ((x - self.origin[k]) * self.inverse_size)
+            .clamp(0.0, last)
+            .max(0.0) as u32
     }
 
     /// The heap memory of the grid, in bytes.
@@ -281,6 +325,52 @@ mod tests {
         grid.remove(2, &two);
         assert_eq!(grid.wide, [1]);
         assert_eq!(seen(&grid, &everywhere), [1, 3]);
+    }
+
+    #[test]
+    fn every_overlapping_box_is_visited_once() {
+        let mut rng = crate::test_rng::Rng(3);
+        for round in 0..200 {
+            let n = 2 + rng.below(80) as usize;
+            let mut grid = Grid::<2>::new([0.0, 0.0], [10.0, 10.0], 0.7, n);
+            // Boxes of every size, some past the region, some unbounded, some NaN (retired).
+            let boxes: Vec<Reach<2>> = (0..n)
+                .map(|k| {
+                    let lo = [rng.uniform(-2.0, 11.0), rng.uniform(-2.0, 11.0)];
+                    let w = if k % 7 == 0 { 8.0 } else { 1.5 };
+                    let mut hi = [lo[0] + rng.uniform(0.0, w), lo[1] + rng.uniform(0.0, w)];
+                    if k % 11 == 0 {
+                        hi[round % 2] = f64::INFINITY;
+                    }
+                    let nan = k % 13 == 5;
+                    Reach {
+                        lo: if nan { [f64::NAN; 2] } else { lo },
+                        hi: if nan { [f64::NAN; 2] } else { hi },
+                    }
+                })
+                .collect();
+            // Listed where its box was before it went NaN: anywhere.
+            let ranges: Vec<CellRange<2>> = boxes
+                .iter()
+                .map(|b| match b.lo[0].is_nan() {
+                    true => grid.range(&Reach {
+                        lo: [1.0, 1.0],
+                        hi: [2.0, 2.0],
+                    }),
+                    false => grid.range(b),
+                })
+                .collect();
+            for (k, range) in ranges.iter().enumerate() {
+                grid.insert(k as u32, range);
+            }
+            for (i, own) in boxes.iter().enumerate() {
+                let mut seen = Vec::new();
+                grid.for_each_overlapping(&ranges[i], own, &boxes, |k| seen.push(k as usize));
+                seen.sort_unstable();
+                let expected: Vec<usize> = (0..n).filter(|&k| boxes[k].overlaps(own)).collect();
+                assert_eq!(seen, expected, "round {round}, box {i}");
+            }
+        }
     }
 
     #[test]

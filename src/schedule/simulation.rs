@@ -600,27 +600,7 @@ fn check_start(balls: &[Ball], radii: &[f64], walls: &Walls<2>) -> Result<(), In
             }
         }
     }
-    // Sweep along x: sorted by their lowest x, each ball meets only those that start before
-    // it ends.
-    let mut order: Vec<usize> = (0..balls.len()).collect();
-    let low = |i: usize| balls[i].position().x - radii[i];
-    order.sort_unstable_by(|&i, &j| low(i).total_cmp(&low(j)).then(i.cmp(&j)));
-    let mut worst: Option<(usize, usize, f64, f64)> = None;
-    for (m, &i) in order.iter().enumerate() {
-        let high = balls[i].position().x + radii[i];
-        for &j in order[m + 1..].iter().take_while(|&&j| low(j) < high) {
-            let contact = radii[i] + radii[j];
-            let distance = (balls[i].position() - balls[j].position()).norm();
-            if distance < contact * keep {
-                // The lowest index of an overlapping pair, then its partner's: the same
-                // report whatever the sweep's order.
-                let (a, b) = (i.min(j), i.max(j));
-                if worst.is_none_or(|w| (a, b) < (w.0, w.1)) {
-                    worst = Some((a, b, distance, contact));
-                }
-            }
-        }
-    }
+    let worst = first_overlap(balls, radii, [lo, hi], keep);
     match worst {
         Some((a, b, distance, contact)) => {
             let kind = InputErrorKind::Overlap {
@@ -632,6 +612,100 @@ fn check_start(balls: &[Ball], radii: &[f64], walls: &Walls<2>) -> Result<(), In
         }
         None => Ok(()),
     }
+}
+
+/// The overlapping pair `(a, b, distance, contact)` of balls inside the box `[lo, hi]`
+/// (centres at least `keep·r` from its walls) with the lowest `a`, then `b` (`a < b`):
+/// `distance < keep·contact`. Found through a grid of cells of about the median diameter,
+/// each listing the balls whose bounding squares meet it (two balls that overlap have
+/// bounding squares that meet, so share a cell): O(N) for balls that do not overlap, where a
+/// sweep along one axis meets a whole column of a ball grid per ball (O(N^1.5): 28 % of a
+/// 10⁶-ball `simulate` of 200,000 events).
+fn first_overlap(
+    balls: &[Ball],
+    radii: &[f64],
+    [lo, hi]: [[f64; 2]; 2],
+    keep: f64,
+) -> Option<(usize, usize, f64, f64)> {
+    let n = balls.len();
+    if n < 2 {
+        return None;
+    }
+    // Cells of the median diameter, coarser if there would be more than about 4 per ball.
+    let mut sorted = radii.to_vec();
+    let median = *sorted.select_nth_unstable_by(n / 2, f64::total_cmp).1;
+    let mut size = 2.0 * median;
+    let most = 4 * n + 16;
+    let counts = loop {
+        let along = |k: usize| -> usize {
+            let cells = ((hi[k] - lo[k]) / size).ceil();
+            // (A box under a cell, or a quotient past the range: one cell, or the most.)
+            if cells.is_finite() && cells >= 1.0 {
+                (cells as usize).min(most)
+            } else if cells >= 1.0 {
+                most
+            } else {
+                1
+            }
+        };
+        let counts = [along(0), along(1)];
+        if counts[0].saturating_mul(counts[1]) <= most {
+            break counts;
+        }
+        size *= 2.0;
+    };
+    let inverse = 1.0 / size;
+    let cell = |k: usize, x: f64| -> usize {
+        let c = ((x - lo[k]) * inverse).floor();
+        // Clamped (`as` saturates, NaN to 0): order kept, so squares that meet share a cell.
+        (c.max(0.0) as usize).min(counts[k] - 1)
+    };
+    // The cells ball `i`'s bounding square meets.
+    let cells_of = |i: usize| {
+        let (p, r) = (balls[i].position(), radii[i]);
+        let [[x0, x1], [y0, y1]] = [0, 1].map(|k| [cell(k, p[k] - r), cell(k, p[k] + r)]);
+        (y0..=y1).flat_map(move |y| (x0..=x1).map(move |x| y * counts[0] + x))
+    };
+    // The cells' lists in one array, cell `c`'s at `starts[c]..starts[c + 1]`, each in ball
+    // order: counted, then filled.
+    let mut starts = vec![0usize; counts[0] * counts[1] + 1];
+    for i in 0..n {
+        for c in cells_of(i) {
+            starts[c + 1] += 1;
+        }
+    }
+    for c in 1..starts.len() {
+        starts[c] += starts[c - 1];
+    }
+    let mut listed = vec![0u32; starts[starts.len() - 1]];
+    let mut next = starts.clone();
+    for i in 0..n {
+        for c in cells_of(i) {
+            listed[next[c]] = i as u32;
+            next[c] += 1;
+        }
+    }
+    drop(next);
+    let mut worst: Option<(usize, usize, f64, f64)> = None;
+    for cell in starts.windows(2) {
+        let balls_here = &listed[cell[0]..cell[1]];
+        for (m, &a) in balls_here.iter().enumerate() {
+            let a = a as usize;
+            for &b in &balls_here[m + 1..] {
+                // In ball order within a cell: a < b.
+                let b = b as usize;
+                if worst.is_some_and(|w| (a, b) >= (w.0, w.1)) {
+                    continue;
+                }
+                let contact = radii[a] + radii[b];
+                let distance = (balls[a].position() - balls[b].position()).norm();
+                if distance < contact * keep {
+                    worst = Some((a, b, distance, contact));
+                }
+            }
+        }
+    }
+    worst
 }
 
 /// The start of a simulation on a table: no ball overlaps a segment, a circle or a plane, or
@@ -691,6 +765,68 @@ impl PerBall<'_> {
             self.0[0]
         } else {
             self.0[i]
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_rng::Rng;
+    use nalgebra::Vector2;
+
+    /// Every pair, in order: the lowest overlapping `(a, b)`.
+    fn all_pairs(balls: &[Ball], radii: &[f64], keep: f64) -> Option<(usize, usize, f64, f64)> {
+        for a in 0..balls.len() {
+            for b in a + 1..balls.len() {
+                let contact = radii[a] + radii[b];
+                let distance = (balls[a].position() - balls[b].position()).norm();
+                if distance < contact * keep {
+                    return Some((a, b, distance, contact));
+                }
+            }
+        }
+        None
+    }
+
+    #[test]
+    fn the_grid_finds_the_pair_every_pair_finds() {
+        let mut rng = Rng(5);
+        let keep = 1.0 - START_TOLERANCE;
+        let (lo, hi) = ([0.0, 0.0], [10.0, 4.0]);
+        for round in 0..300 {
+            let n = 1 + (rng.uniform(0.0, 60.0) as usize);
+            // Some scenes on a grid (columns and rows of equal x and y), touching or not;
+            // radii equal, spread, or one huge ball among small ones.
+            let on_grid = round % 3 == 0;
+            let radii: Vec<f64> = (0..n)
+                .map(|i| match round % 4 {
+                    0 => 0.1,
+                    1 => rng.uniform(0.01, 0.5),
+                    2 if i == n / 2 => 1.5,
+                    _ => rng.uniform(0.01, 0.05),
+                })
+                .collect();
+            let balls: Vec<Ball> = (0..n)
+                .map(|i| {
+                    let r = radii[i];
+                    let p = if on_grid {
+                        let spacing = rng.uniform(0.15, 0.3);
+                        Vector2::new(
+                            (0.5 + (i % 8) as f64 * spacing).clamp(r, hi[0] - r),
+                            (0.5 + (i / 8) as f64 * spacing).clamp(r, hi[1] - r),
+                        )
+                    } else {
+                        Vector2::new(rng.uniform(r, hi[0] - r), rng.uniform(r, hi[1] - r))
+                    };
+                    Ball::at_rest(p).expect("finite")
+                })
+                .collect();
+            assert_eq!(
+                first_overlap(&balls, &radii, [lo, hi], keep),
+                all_pairs(&balls, &radii, keep),
+                "round {round}"
+            );
         }
     }
 }

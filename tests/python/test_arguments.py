@@ -43,7 +43,7 @@ ANY_NUMBER = {"float", "huge", "negative", "negative huge"}  # a time, of any si
 THREADS = {"huge", "beyond float", "None"}  # at most the cores there are
 COUNT = {"huge", "beyond float", "None"}  # max_events: beyond 64 bits is no limit
 OPTIONAL = {"None"}  # out=, box= of the calendar
-FLAG = {"bool", "None"}  # progress=: True, False or None (or a tqdm-like bar)
+FLAG = {"bool", "None"}  # progress=: True, False or None (or a tqdm-like bar or a callable)
 NOTHING: set[str] = set()  # arrays, paths, indices, restitution (in [0, 1])
 SIDES = {"negative", "None"}  # segment_sides: one int for every segment, -1 among them
 
@@ -126,12 +126,13 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
     ),
     "collision_times": (
         bc.collision_times,
-        PAIR | {"t_max": math.inf, "num_threads": None, "out": None},
+        PAIR | {"t_max": math.inf, "num_threads": None, "out": None, "progress": None},
         {
             **dict.fromkeys(["pos_a", "vel_a", "pos_b", "vel_b"], NOTHING),
             **dict.fromkeys(["friction_a", "friction_b", "radius", "t_max"], NUMBER),
             "num_threads": THREADS,
             "out": OPTIONAL,
+            "progress": FLAG,
         },
     ),
     "positions_at": (
@@ -155,13 +156,14 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
     ),
     "path_collision_times": (
         bc.path_collision_times,
-        PATHS_AB | {"t_max": math.inf, "num_threads": None, "out": None},
+        PATHS_AB | {"t_max": math.inf, "num_threads": None, "out": None, "progress": None},
         {
             **{name: NOTHING for name in PATHS_AB if name != "radius"},
             "radius": NUMBER,
             "t_max": NUMBER,
             "num_threads": THREADS,
             "out": OPTIONAL,
+            "progress": FLAG,
         },
     ),
     "path_collision_time": (
@@ -189,7 +191,7 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
         ONE_PATH
         | {"radius": 0.5}
         | OBJECTS
-        | {"t_max": math.inf, "num_threads": None, "out": None},
+        | {"t_max": math.inf, "num_threads": None, "out": None, "progress": None},
         {
             **dict.fromkeys(ONE_PATH, NOTHING),
             "radius": NUMBER,
@@ -198,6 +200,7 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
             "t_max": NUMBER,
             "num_threads": THREADS,
             "out": OPTIONAL,
+            "progress": FLAG,
         },
     ),
     "real_roots": (bc.real_roots, {"coeffs": [1.0, -3.0, 2.0]}, {"coeffs": NOTHING}),

@@ -1,5 +1,6 @@
 """Ctrl-C stops every long Rust call within a fraction of a second (``KeyboardInterrupt``):
-batches, path batches, scenes, a calendar's construction and updates, and ``simulate``.
+batches, path batches, scenes, a calendar's construction and updates, and ``simulate``, also
+with a progress bar.
 
 Each call runs in a child process that sends itself SIGINT half a second in; uninterrupted,
 each would run for seconds to minutes here (measured on this project's 2-core machine: the
@@ -76,6 +77,16 @@ CALLS = {
         "bc.simulate([[0.5, 0.5]], [[1, 0.3]], 0.0, 0.1, box=([0, 0], [1, 2]), t_end=1e12)",
     ),
 }
+
+
+# With a progress bar (a callable here), moved on from the same looks as the signals.
+CALLS.update(
+    {
+        f"{name} with progress": (data, call[:-1] + ", progress=lambda n: None)")
+        for name, (data, call) in list(CALLS.items())
+        if name in ("collision_times", "path_collision_times", "path_geometry_times", "simulate")
+    }
+)
 
 
 @pytest.mark.parametrize("name", list(CALLS))
