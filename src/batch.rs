@@ -722,7 +722,7 @@ fn run_chunks<T: Send>(
 /// threads, and returns the error of the lowest index if any chunk failed (each chunk stops at
 /// its first error). Each chunk first looks at the caller's [`Interrupt`] flag: once it is
 /// set, the chunks left fail with [`InputErrorKind::Interrupted`].
-fn run_chunks_of<T: Send>(
+pub(crate) fn run_chunks_of<T: Send>(
     size: usize,
     out: &mut [T],
     threads: Threads,
