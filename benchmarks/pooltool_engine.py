@@ -1,15 +1,37 @@
-"""The seeded shots of the native engine's tests and benchmark: 9-ball and 8-ball breaks, cut
-shots with side, top and back spin, massé shots with a raised cue, on pooltool's 9-ball
-table; cut shots and a break on its snooker table; three-cushion shots on its carom table;
-straight shots along an axis, where pooltool's rounding decides its collisions at once
-(:func:`shots`; ``tests/pooltool_integration/test_engine.py``).
+"""ballcollide's native billiards engine against stock pooltool 0.6.0, shot by shot.
+
+Plays one seeded set of shots (:func:`shots`: 9-ball and 8-ball breaks, cut shots with side,
+top and back spin, massé shots with a raised cue, on pooltool's 9-ball table; cut shots and
+a break on its snooker table; three-cushion shots on its carom table; straight shots along
+an axis, where pooltool's rounding decides its collisions at once) four ways and prints
+the median time per shot of each:
+
+- ``stock``: ``pt.simulate(system)``;
+- ``simulate``: ``ballcollide.pooltool.simulate(system)``, the same full ``System``;
+- ``many 1``, ``many 2``: ``ballcollide.pooltool.simulate_many(systems, num_threads=n)``,
+  array results, on one and on two threads.
+
+Each figure is a run's total time over its number of shots, the median over the runs; the
+four ways take turns within each run (stock in the first ``--stock-runs`` only).
+
+The same shots are the integration tests' (``tests/pooltool_integration/test_engine.py``).
+Run it in pooltool's environment (``scripts/install-pooltool``)::
+
+    .venv-pooltool/bin/python benchmarks/pooltool_engine.py            # 5 runs, stock 3
+    .venv-pooltool/bin/python benchmarks/pooltool_engine.py --runs 3 --scale 0.5
+
+On a shared machine the figures move with the load: compare medians of one run.
 """
 
 from __future__ import annotations
 
+import argparse
 import math
+import os
 import random
+import statistics
 import sys
+import time
 from pathlib import Path
 from typing import Any
 
@@ -128,3 +150,65 @@ def shots(scale: float = 1.0) -> list[tuple[str, Any]]:
         for kind, count in COUNTS.items()
         for seed in range(max(1, round(count * scale)))
     ]
+
+
+def _rounds(ways: dict[str, Any], systems: list[Any], runs: int, stock_runs: int) -> dict:
+    """Each way's median time per shot over ``runs`` rounds (stock's over the first
+    ``stock_runs``), the ways taking turns within a round so that a change of the machine's
+    load falls on all of them."""
+    times: dict[str, list[float]] = {name: [] for name in ways}
+    for r in range(runs):
+        for name, way in ways.items():
+            if name == "stock" and r >= stock_runs:
+                continue
+            start = time.perf_counter()
+            way(systems)
+            times[name].append((time.perf_counter() - start) / len(systems))
+    return {name: statistics.median(t) for name, t in times.items()}
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=5, help="runs of each way (median)")
+    parser.add_argument("--scale", type=float, default=1.0, help="times COUNTS shots")
+    parser.add_argument("--stock-runs", type=int, default=3, help="runs of stock pooltool")
+    args = parser.parse_args(argv)
+
+    import pooltool as pt
+    from machine import describe
+
+    import ballcollide.pooltool as bcp
+
+    named = shots(args.scale)
+    systems = [s for _, s in named]
+    print(describe())
+    print(
+        f"{len(systems)} shots ({', '.join(f'{k} {v}' for k, v in COUNTS.items())} x {args.scale})"
+    )
+    # Warm-ups: numba's compilation, imports, the thread pools.
+    pt.simulate(systems[0])
+    bcp.simulate(systems[0])
+    bcp.simulate_many(systems[:4], num_threads=2)
+
+    ways = {
+        "stock": lambda ss: [pt.simulate(s) for s in ss],
+        "simulate": lambda ss: [bcp.simulate(s) for s in ss],
+        "many 1": lambda ss: bcp.simulate_many(ss, num_threads=1),
+        "many 2": lambda ss: bcp.simulate_many(ss, num_threads=2),
+    }
+    median = _rounds(ways, systems, args.runs, args.stock_runs)
+    stock = median.pop("stock")
+    events = sum(len(s.events) for s in (bcp.simulate(x) for x in systems))
+    print(f"{events} events ({events / len(systems):.0f} a shot)")
+    print(f"{'way':<10} {'per shot':>12} {'vs stock':>10}")
+    print(f"{'stock':<10} {stock * 1e3:>9.3f} ms {1.0:>9.1f}x")
+    for name, t in median.items():
+        print(f"{name:<10} {t * 1e6:>9.1f} us {stock / t:>9.1f}x")
+    print(f"2 threads over 1: {median['many 1'] / median['many 2']:.2f}x")
+    # A shared machine's other work moves every figure (and takes the second core).
+    print(f"load average (1, 5, 15 min) at the end: {os.getloadavg()}, {os.cpu_count()} CPUs")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

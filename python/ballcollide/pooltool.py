@@ -814,29 +814,39 @@ def _makers() -> Any:
         set_states(o, states)
         return o
 
+    set_id, set_params, set_ballset, set_orientation = ball_slots
+    agent_id, agent_type_, agent_initial, agent_final = agent_slots
+    event_type_, event_agents, event_time = event_slots
+
     def ball_copy(ball: Any, st: Any) -> Any:
         """``ball.copy(drop_history=True)`` with state ``st``."""
         o = new(Ball)
-        set_id, set_params, set_ballset, set_orientation = ball_slots
         set_id(o, ball.id)
         set_params(o, ball.params)
         set_ballset(o, ball.ballset)
         set_orientation(o, ball.initial_orientation)
         set_state(o, st)
-        set_history(o, history([]))
-        set_cts(o, history([]))
+        h = new(BallHistory)
+        set_states(h, [])
+        set_history(o, h)
+        h = new(BallHistory)
+        set_states(h, [])
+        set_cts(o, h)
         return o
 
     def agent(id: str, agent_type: Any, initial: Any, final: Any) -> Any:
         o = new(Agent)
-        for set_value, value in zip(agent_slots, (id, agent_type, initial, final)):
-            set_value(o, value)
+        agent_id(o, id)
+        agent_type_(o, agent_type)
+        agent_initial(o, initial)
+        agent_final(o, final)
         return o
 
     def event(event_type: Any, agents: tuple[Any, ...], time: float) -> Any:
         o = new(Event)
-        for set_value, value in zip(event_slots, (event_type, agents, time)):
-            set_value(o, value)
+        event_type_(o, event_type)
+        event_agents(o, agents)
+        event_time(o, time)
         return o
 
     return state, history, ball_copy, agent, event
