@@ -626,7 +626,8 @@ def _inputs(shots: Sequence[Any]) -> dict[str, Any]:
         if c.V0 > 0 and not moving:
             ids = [b.id for b in balls]
             if c.cue_ball_id not in ids:
-                raise InputError(
+                # pooltool's own loop raises a KeyError here.
+                raise ValueError(
                     f"shots[{k}]: the cue's ball {c.cue_ball_id!r} is not among the balls"
                 )
             strike.append(ids.index(c.cue_ball_id))
@@ -708,8 +709,9 @@ def simulate_many(
     building pooltool objects; :meth:`ShotResults.to_system` builds shot ``k``'s ``System``.
     ``history=True`` also computes every ball's state at every event (so that ``to_system``
     needs no second run). Raises :class:`UnsupportedError` as :func:`simulate` does for
-    pooltool's default engine, and ``ballcollide.InputError`` naming the shot
-    (``shots[3].position``) for one the engine rejects.
+    pooltool's default engine, ``ballcollide.InputError`` naming the shot
+    (``shots[3].position``) for one the engine rejects, and ``ValueError`` for a cue whose
+    ``cue_ball_id`` is not among its shot's balls.
 
     >>> import pooltool as pt
     >>> import ballcollide.pooltool as bcp

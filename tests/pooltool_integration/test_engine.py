@@ -238,5 +238,10 @@ def test_what_is_not_supported_is_named() -> None:
     # The engine's own checks, naming the shot.
     bad = system.copy()
     bad.balls["cue"].state.rvw[0, 0] = np.nan
-    with pytest.raises(ballcollide.InputError, match=r"shots\[1\]"):
+    with pytest.raises(ballcollide.InputError, match=r"shots\[1\]") as raised:
         bcp.simulate_many([system, bad])
+    assert raised.value.kind == "not_finite"
+    lost = system.copy()
+    lost.cue.cue_ball_id = "ghost"
+    with pytest.raises(ValueError, match="ghost"):
+        bcp.simulate(lost)
