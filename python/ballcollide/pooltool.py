@@ -912,7 +912,7 @@ def _build_into(system: Any, r: dict[str, Any], k: int) -> Any:
     linear = list(table.cushion_segments.linear.values())
     circular = list(table.cushion_segments.circular.values())
     pockets = list(table.pockets.values())
-    events = [pt["null_event"](0.0)]
+    events = [pt["null_event"](0)]  # pooltool starts with null_event(time=0), an int
     for e in range(n_events):
         code = types[e]
         name = names[code]

@@ -124,6 +124,7 @@ def test_the_system_is_built_as_pooltools() -> None:
         assert not system.events and ours is not system
         assert ours.t == ours.events[-1].time and abs(ours.t - theirs.t) < TIME
         assert ours.events[0].event_type == ours.events[-1].event_type == pt.EventType.NONE
+        assert repr(ours.events[0].time) == repr(theirs.events[0].time)  # 0, an int
         for i, ball in ours.balls.items():
             history = ball.history.states
             assert len(history) == len(ours.events) == len(theirs.balls[i].history.states)
