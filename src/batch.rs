@@ -724,7 +724,7 @@ fn run_chunks<T: Send>(
 /// its first error). Each chunk first looks at the caller's [`Interrupt`] flag: once it is
 /// set, the chunks left fail with [`InputErrorKind::Interrupted`]; and once done, adds its
 /// `queries(chunk)` to the caller's counter ([`counted`](crate::interrupt::counted)).
-fn run_chunks_of<T: Send>(
+pub(crate) fn run_chunks_of<T: Send>(
     size: usize,
     out: &mut [T],
     threads: Threads,

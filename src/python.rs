@@ -22,6 +22,7 @@ mod long_call;
 mod paths;
 mod read;
 mod schedule;
+mod shots;
 mod table;
 
 use std::cell::Cell;
@@ -793,6 +794,7 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(earliest_collision, m)?,
         wrap_pyfunction!(first_contacts, m)?,
         wrap_pyfunction!(schedule::simulate, m)?,
+        wrap_pyfunction!(shots::simulate_shots, m)?,
         wrap_pyfunction!(simd_level, m)?,
     ];
     m.add_class::<schedule::CollisionSchedule>()?;

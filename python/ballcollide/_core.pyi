@@ -49,6 +49,7 @@ __all__ = [
     "real_roots",
     "simd_level",
     "simulate",
+    "simulate_shots",
 ]
 
 __version__: Final[str]
@@ -298,6 +299,21 @@ def simulate(
     planes: _Objects = None,
     table_restitution: _Number = 1.0,
 ) -> Simulation: ...
+def simulate_shots(
+    tables: Sequence[tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike]],
+    shot_table: npt.ArrayLike,
+    ball_start: npt.ArrayLike,
+    rvw: npt.ArrayLike,
+    s: npt.ArrayLike,
+    params: npt.ArrayLike,
+    strike: npt.ArrayLike,
+    cue: npt.ArrayLike,
+    *,
+    contact_rule: str | None = None,
+    max_events: SupportsIndex | None = None,
+    history: bool | None = None,
+    num_threads: SupportsIndex | None = None,
+) -> dict[str, Any]: ...
 def pool_table(
     *,
     width: _Number = 1.27,

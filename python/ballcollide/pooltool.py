@@ -15,6 +15,11 @@ its overlap would deepen past what it is, never "at once" while it separates). E
 else — transitions, cushions, pockets, collision resolution, the event loop — stays
 pooltool's own.
 
+Or the whole shot natively: :func:`simulate` is ``pt.simulate`` run by ballcollide's Rust
+engine (``ballcollide.billiards``: pooltool 0.6.0's physics, resolvers and event loop, its
+quirks included by default), returning the same ``System``; :func:`simulate_many` runs many
+shots across cores, with array results (:class:`ShotResults`).
+
 The hook is pooltool's pair loop, ``pooltool.evolution.event_based.simulate.
 get_next_ball_ball_collision``, which :func:`pooltool.simulate` looks up at each event: the
 replacement, :func:`next_ball_ball_collision`, answers every pair missing from pooltool's
@@ -41,6 +46,7 @@ True
 from __future__ import annotations
 
 import functools
+import gc
 import math
 import weakref
 from collections.abc import Sequence
@@ -52,13 +58,18 @@ import numpy.typing as npt
 from . import InputError, path_collision_times
 
 __all__ = [
+    "CONTACT_RULES",
     "SUPPORTED_VERSIONS",
     "Installation",
+    "ShotResults",
+    "UnsupportedError",
     "ball_paths",
     "collision_time",
     "install",
     "is_installed",
     "next_ball_ball_collision",
+    "simulate",
+    "simulate_many",
     "uninstall",
 ]
 
@@ -478,3 +489,458 @@ def next_ball_ball_collision(shot: Any, collision_cache: Any) -> Any:
     return ball_ball_collision(
         ball1=shot.balls[pair[0]], ball2=shot.balls[pair[1]], time=cache[pair]
     )
+
+
+# --- The native engine: whole shots in Rust (ballcollide._core.simulate_shots) -------------
+
+
+class UnsupportedError(ValueError):
+    """A pooltool setting the native engine (:func:`simulate`, :func:`simulate_many`) does
+    not reproduce: a resolver other than pooltool 0.6.0's default, ``continuous=True``,
+    ``t_final``, ``include``, ``max_events``. The message names it. Use ``pt.simulate``
+    (optionally with :func:`install`) for those."""
+
+
+#: The contact rules of :func:`simulate`: ``"pooltool"`` (pooltool 0.6.0's own, the
+#: default: overlapping balls, and balls whose accelerations are equal to the bit, collide at
+#: once when their pair is looked at, even if they part) and ``"approaching"`` (balls collide
+#: only when they come into contact, approaching).
+CONTACT_RULES: tuple[str, ...] = ("pooltool", "approaching")
+
+_PARAM_FIELDS = ("m", "R", "u_s", "u_r", "u_sp_proportionality", "u_b", "e_b", "e_c", "f_c", "g")
+
+
+@functools.lru_cache(maxsize=1)
+def _pooltool_types() -> dict[str, Any]:
+    """pooltool's classes and factories the engine's results are built from (looked up once,
+    after the version check)."""
+    simulate_module = _simulate_module()
+    from pooltool.events import Agent, AgentType, Event, EventType, null_event
+    from pooltool.evolution.event_based.config import INCLUDED_EVENTS
+    from pooltool.objects.ball.datatypes import Ball, BallHistory, BallState
+    from pooltool.physics.resolve.resolver import default_resolver
+
+    return {
+        "module": simulate_module,
+        "Agent": Agent,
+        "AgentType": AgentType,
+        "Event": Event,
+        "EventType": EventType,
+        "null_event": null_event,
+        "INCLUDED_EVENTS": frozenset(INCLUDED_EVENTS),
+        "Ball": Ball,
+        "BallHistory": BallHistory,
+        "BallState": BallState,
+        "default_resolver": default_resolver(),
+    }
+
+
+@functools.lru_cache(maxsize=4)
+def _event_types(names: tuple[str, ...]) -> tuple[Any, ...]:
+    """pooltool's ``EventType`` of each of ``_core.simulate_shots``' type codes."""
+    event_type = _pooltool_types()["EventType"]
+    return tuple(event_type(name) for name in names)
+
+
+def _check_supported(
+    engine: Any,
+    continuous: bool,
+    dt: Any,
+    t_final: Any,
+    include: Any,
+    max_events: int,
+    contact_rule: str,
+) -> None:
+    """Raises :class:`UnsupportedError` for what the engine does not reproduce."""
+    pt = _pooltool_types()
+    if contact_rule not in CONTACT_RULES:
+        raise UnsupportedError(f"contact_rule must be one of {CONTACT_RULES}, got {contact_rule!r}")
+    if continuous or dt is not None:
+        raise UnsupportedError(
+            "continuous=True (and dt) is not supported: call "
+            "pooltool.evolution.continuize(system) on the result"
+        )
+    if t_final is not None:
+        raise UnsupportedError("t_final is not supported: the shot runs until every ball rests")
+    if include is not None and frozenset(include) != pt["INCLUDED_EVENTS"]:
+        raise UnsupportedError("include other than pooltool's INCLUDED_EVENTS is not supported")
+    if max_events:
+        raise UnsupportedError(
+            "max_events is not supported (pooltool stops the balls after it; "
+            "_core.simulate_shots' max_events cuts the log instead)"
+        )
+    resolver = (engine if engine is not None else pt["module"].DEFAULT_ENGINE).resolver
+    default = pt["default_resolver"]
+    if resolver != default:
+        # The resolver's attrs fields (ball_ball, ball_linear_cushion, ...) that differ.
+        fields = [f.name for f in getattr(type(default), "__attrs_attrs__", ())]
+        differ = [f for f in fields if getattr(resolver, f, None) != getattr(default, f)]
+        raise UnsupportedError(
+            "only pooltool 0.6.0's default resolver is supported; this engine's differs in "
+            f"{', '.join(differ) or 'its type'} (see ~/.config/pooltool/physics/resolver.yaml)"
+        )
+
+
+def _table_arrays(table: Any) -> tuple[_F64, _F64, _F64]:
+    """A pooltool table as ``_core.simulate_shots``' ``(linear, circular, pockets)``."""
+    segments = table.cushion_segments
+    linear = np.array(
+        [
+            (c.p1[0], c.p1[1], c.p2[0], c.p2[1], c.height, int(c.direction))
+            for c in segments.linear.values()
+        ],
+        dtype=np.float64,
+    ).reshape(-1, 6)
+    circular = np.array(
+        [(c.center[0], c.center[1], c.radius, c.height) for c in segments.circular.values()],
+        dtype=np.float64,
+    ).reshape(-1, 4)
+    pockets = np.array(
+        [(p.center[0], p.center[1], p.radius, p.depth) for p in table.pockets.values()],
+        dtype=np.float64,
+    ).reshape(-1, 4)
+    return linear, circular, pockets
+
+
+def _inputs(shots: Sequence[Any]) -> dict[str, Any]:
+    """``_core.simulate_shots``' arguments for pooltool ``System`` s (tables shared by
+    identity)."""
+    tables: list[tuple[_F64, _F64, _F64]] = []
+    table_of: dict[int, int] = {}
+    shot_table, ball_start, rvws, ss, params, strike, cue = [], [0], [], [], [], [], []
+    for k, system in enumerate(shots):
+        key = id(system.table)
+        if key not in table_of:
+            table_of[key] = len(tables)
+            tables.append(_table_arrays(system.table))
+        shot_table.append(table_of[key])
+        balls = list(system.balls.values())
+        rvw = [b.state.rvw for b in balls]
+        rvws += rvw
+        ss += [b.state.s for b in balls]
+        params += [[getattr(b.params, f) for f in _PARAM_FIELDS] for b in balls]
+        ball_start.append(ball_start[-1] + len(balls))
+        c = system.cue
+        # pooltool's stick event: at t = 0, no ball moving or spinning, V0 > 0.
+        moving = any(np.any(r[1:] != 0.0) for r in rvw)
+        if c.V0 > 0 and not moving:
+            ids = [b.id for b in balls]
+            if c.cue_ball_id not in ids:
+                # pooltool's own loop raises a KeyError here.
+                raise ValueError(
+                    f"shots[{k}]: the cue's ball {c.cue_ball_id!r} is not among the balls"
+                )
+            strike.append(ids.index(c.cue_ball_id))
+        else:
+            strike.append(-1)
+        s = c.specs
+        cue.append([c.V0, c.phi, c.theta, c.a, c.b, s.M, s.end_mass, s.tip_radius])
+    n = ball_start[-1]
+    return {
+        "tables": tables,
+        "shot_table": np.array(shot_table, dtype=np.float64),
+        "ball_start": np.array(ball_start, dtype=np.float64),
+        "rvw": np.array(rvws, dtype=np.float64).reshape(n, 3, 3),
+        "s": np.array(ss, dtype=np.float64),
+        "params": np.array(params, dtype=np.float64).reshape(n, 10),
+        "strike": np.array(strike, dtype=np.float64),
+        "cue": np.array(cue, dtype=np.float64).reshape(len(shots), 8),
+    }
+
+
+class ShotResults:
+    """What :func:`simulate_many` returns: the shots' events and final states as arrays
+    (``_core.simulate_shots``' results, one attribute each), and :meth:`to_system`.
+
+    Shot ``k``'s events are rows ``event_start[k]:event_start[k + 1]`` of ``time``,
+    ``type`` (codes: ``type_names[code]`` is pooltool's ``EventType`` value), ``ball`` (the
+    balls, by their index in the shot's ``balls`` dict, ``-1`` for none), ``object`` (the
+    cushion's or pocket's index in its table dict, else ``-1``), ``rvw`` and ``s`` (each
+    ball's state just after the event); its balls' final states are rows
+    ``ball_start[k]:ball_start[k + 1]`` of ``final_rvw`` and ``final_s``. ``len()`` is the
+    number of shots.
+    """
+
+    event_start: npt.NDArray[np.int64]
+    time: _F64
+    type: npt.NDArray[np.int64]
+    ball: npt.NDArray[np.int64]
+    object: npt.NDArray[np.int64]
+    rvw: _F64
+    s: npt.NDArray[np.int64]
+    final_rvw: _F64
+    final_s: npt.NDArray[np.int64]
+    end: _F64
+    stopped: npt.NDArray[np.bool_]
+    type_names: tuple[str, ...]
+    ball_start: npt.NDArray[np.int64]
+
+    def __init__(self, shots: Sequence[Any], arrays: dict[str, Any], contact_rule: str) -> None:
+        self._shots = list(shots)
+        self._arrays = arrays
+        self._contact_rule = contact_rule
+        for key, value in arrays.items():
+            setattr(self, key, value)
+        self.ball_start = np.cumsum([0] + [len(s.balls) for s in self._shots], dtype=np.int64)
+
+    def __len__(self) -> int:
+        return len(self._shots)
+
+    def to_system(self, k: int) -> Any:
+        """Shot ``k`` as the pooltool ``System`` :func:`simulate` returns (a new one; the
+        shot given to :func:`simulate_many` is not changed)."""
+        if "history_rvw" in self._arrays:
+            return _build(self._shots[k].copy(), self._arrays, k)
+        return simulate(self._shots[k], contact_rule=self._contact_rule)
+
+
+def simulate_many(
+    shots: Sequence[Any],
+    num_threads: int | None = None,
+    *,
+    contact_rule: str = "pooltool",
+    history: bool = False,
+) -> ShotResults:
+    """Simulates pooltool ``System`` s natively, on up to ``num_threads`` threads (``None``:
+    all cores), with the GIL released; the shots are not changed.
+
+    Each shot is what :func:`simulate` gives it (the same events, bit for bit, whatever
+    ``num_threads``), returned as arrays (:class:`ShotResults`), which cost a small part of
+    building pooltool objects; :meth:`ShotResults.to_system` builds shot ``k``'s ``System``.
+    ``history=True`` also computes every ball's state at every event (so that ``to_system``
+    needs no second run). Raises :class:`UnsupportedError` as :func:`simulate` does for
+    pooltool's default engine, ``ballcollide.InputError`` naming the shot
+    (``shots[3].position``) for one the engine rejects, and ``ValueError`` for a cue whose
+    ``cue_ball_id`` is not among its shot's balls.
+
+    >>> import pooltool as pt
+    >>> import ballcollide.pooltool as bcp
+    >>> results = bcp.simulate_many([pt.System.example()] * 3, num_threads=2)
+    >>> len(results), results.type_names[results.type[0]]
+    (3, 'stick_ball')
+    >>> system = results.to_system(1)
+    >>> [e.event_type for e in system.events[:2]] == [pt.EventType.NONE, pt.EventType.STICK_BALL]
+    True
+    """
+    from . import _core
+
+    _check_supported(None, False, None, None, None, 0, contact_rule)
+    arrays = _core.simulate_shots(
+        **_inputs(shots),
+        contact_rule=contact_rule,
+        history=history,
+        num_threads=num_threads,
+    )
+    return ShotResults(shots, arrays, contact_rule)
+
+
+def simulate(
+    shot: Any,
+    engine: Any = None,
+    inplace: bool = False,
+    continuous: bool = False,
+    dt: float | None = None,
+    t_final: float | None = None,
+    include: Any = None,
+    max_events: int = 0,
+    *,
+    contact_rule: str = "pooltool",
+) -> Any:
+    """``pooltool.simulate`` run natively: the shot in Rust, returned as pooltool's ``System``.
+
+    The same call as ``pt.simulate(shot, ...)`` for what it supports, and the same result:
+    ``events`` (the null events at both ends, each event with its agents' ``initial`` and
+    ``final`` copies), every ball's ``history`` (its state at every event), ``state``, the
+    pockets' ``contains``, ``t``. By default (``contact_rule="pooltool"``) the events are
+    stock pooltool 0.6.0's, its quirks included (overlapping balls, and balls with equal
+    accelerations, collide at once); ``contact_rule="approaching"`` collides balls only when
+    they come into contact. Times agree with pooltool's to rounding (pooltool evolves every
+    ball to every event; here each ball follows its own path), which a long break amplifies
+    to about ``1e-6 s``.
+
+    Raises :class:`UnsupportedError` for ``engine`` (or pooltool's default engine, from
+    ``~/.config/pooltool/physics/resolver.yaml``) with a resolver other than pooltool 0.6.0's
+    default, ``continuous=True``, ``dt``, ``t_final``, ``include``, ``max_events``.
+
+    >>> import pooltool as pt
+    >>> import ballcollide.pooltool as bcp
+    >>> system = bcp.simulate(pt.System.example())
+    >>> stock = pt.simulate(pt.System.example())
+    >>> [e.event_type for e in system.events] == [e.event_type for e in stock.events]
+    True
+    >>> abs(system.t - stock.t) < 1e-9
+    True
+    """
+    from . import _core
+
+    _check_supported(engine, continuous, dt, t_final, include, max_events, contact_rule)
+    arrays = _core.simulate_shots(
+        **_inputs([shot]), contact_rule=contact_rule, history=True, num_threads=1
+    )
+    return _build(shot if inplace else shot.copy(), arrays, 0)
+
+
+@functools.lru_cache(maxsize=1)
+def _makers() -> Any:
+    """Constructors of pooltool's ``BallState``, ``BallHistory``, ``Ball`` (a history-free
+    copy), ``Agent`` and ``Event`` that set their slots directly: pooltool's attrs
+    constructors (converters, validators, factories) cost about a microsecond an object, and
+    a break's ``System`` holds thousands; these cost a third of that. The values are pooltool's
+    own types, so nothing needs converting."""
+    pt = _pooltool_types()
+    BallState, BallHistory, Ball = pt["BallState"], pt["BallHistory"], pt["Ball"]
+    Agent, Event = pt["Agent"], pt["Event"]
+    new = object.__new__
+    set_rvw, set_s, set_t = BallState.rvw.__set__, BallState.s.__set__, BallState.t.__set__
+    set_states = BallHistory.states.__set__
+    ball_slots = [
+        getattr(Ball, name).__set__ for name in ("id", "params", "ballset", "initial_orientation")
+    ]
+    set_state, set_history, set_cts = (
+        Ball.state.__set__,
+        Ball.history.__set__,
+        Ball.history_cts.__set__,
+    )
+    agent_slots = [getattr(Agent, n).__set__ for n in ("id", "agent_type", "initial", "final")]
+    event_slots = [getattr(Event, n).__set__ for n in ("event_type", "agents", "time")]
+
+    def state(rvw: Any, s: int, t: float) -> Any:
+        o = new(BallState)
+        set_rvw(o, rvw)
+        set_s(o, s)
+        set_t(o, t)
+        return o
+
+    def history(states: list[Any]) -> Any:
+        o = new(BallHistory)
+        set_states(o, states)
+        return o
+
+    set_id, set_params, set_ballset, set_orientation = ball_slots
+    agent_id, agent_type_, agent_initial, agent_final = agent_slots
+    event_type_, event_agents, event_time = event_slots
+
+    def ball_copy(ball: Any, st: Any) -> Any:
+        """``ball.copy(drop_history=True)`` with state ``st``."""
+        o = new(Ball)
+        set_id(o, ball.id)
+        set_params(o, ball.params)
+        set_ballset(o, ball.ballset)
+        set_orientation(o, ball.initial_orientation)
+        set_state(o, st)
+        h = new(BallHistory)
+        set_states(h, [])
+        set_history(o, h)
+        h = new(BallHistory)
+        set_states(h, [])
+        set_cts(o, h)
+        return o
+
+    def agent(id: str, agent_type: Any, initial: Any, final: Any) -> Any:
+        o = new(Agent)
+        agent_id(o, id)
+        agent_type_(o, agent_type)
+        agent_initial(o, initial)
+        agent_final(o, final)
+        return o
+
+    def event(event_type: Any, agents: tuple[Any, ...], time: float) -> Any:
+        o = new(Event)
+        event_type_(o, event_type)
+        event_agents(o, agents)
+        event_time(o, time)
+        return o
+
+    return state, history, ball_copy, agent, event
+
+
+def _build(system: Any, r: dict[str, Any], k: int) -> Any:
+    """Writes shot ``k`` of ``_core.simulate_shots``' results (with history) into
+    ``system``, as pooltool's ``simulate`` leaves it.
+
+    Python's cyclic garbage collector is paused meanwhile: the thousands of objects of a
+    break would otherwise set off several collections, and with pooltool and numba loaded
+    each full one walks millions of objects (measured: 10 ms of a 13 ms build). None of the
+    objects made here forms a cycle; the collector runs again as usual afterwards.
+    """
+    paused = gc.isenabled()
+    gc.disable()
+    try:
+        return _build_into(system, r, k)
+    finally:
+        if paused:
+            gc.enable()
+
+
+def _build_into(system: Any, r: dict[str, Any], k: int) -> Any:
+    """:func:`_build`'s work."""
+    pt = _pooltool_types()
+    AgentType = pt["AgentType"]
+    event_types = _event_types(tuple(r["type_names"]))
+    state, history, copy_of, agent_of, event_of = _makers()
+    ball_type = AgentType.BALL
+
+    balls = list(system.balls.values())
+    n = len(balls)
+    e0, e1 = int(r["event_start"][k]), int(r["event_start"][k + 1])
+    n_events = e1 - e0
+    times = [0.0, *r["time"][e0:e1].tolist()]
+    end = times[-1]
+    h0 = int(r["history_start"][k])
+    rows = n * (n_events + 1)
+    # Each ball's history: its state at time 0 and after each event, then the last again
+    # (pooltool adds the same state object at the closing null event).
+    h_rvw = r["history_rvw"][h0 : h0 + rows].copy().reshape(n_events + 1, n, 3, 3)
+    h_s = r["history_s"][h0 : h0 + rows].reshape(n_events + 1, n).T.tolist()
+    for b, ball in enumerate(balls):
+        own = list(map(state, h_rvw[:, b], h_s[b], times))
+        own.append(own[-1])
+        ball.history = history(own)
+        ball.history_cts = history([])
+        ball.state = own[-1]
+
+    names = r["type_names"]
+    types = r["type"][e0:e1].tolist()
+    who = r["ball"][e0:e1].tolist()
+    objects = r["object"][e0:e1].tolist()
+    # Each event's two slots, flat: slot `2 e + k` is ball `k` of event `e`.
+    after_rvw = list(r["rvw"][e0:e1].reshape(-1, 3, 3).copy())
+    after_s = r["s"][e0:e1].reshape(-1).tolist()
+    before_rvw = list(r["before_rvw"][e0:e1].reshape(-1, 3, 3).copy())
+    before_s = r["before_s"][e0:e1].reshape(-1).tolist()
+    table = system.table
+    linear = list(table.cushion_segments.linear.values())
+    circular = list(table.cushion_segments.circular.values())
+    pockets = list(table.pockets.values())
+    events = [pt["null_event"](0)]  # pooltool starts with null_event(time=0), an int
+    for e in range(n_events):
+        code = types[e]
+        name = names[code]
+        t = times[e + 1]
+        agents = []
+        for slot, b in enumerate(who[e], 2 * e):
+            if b < 0:
+                continue
+            ball = balls[b]
+            initial = copy_of(ball, state(before_rvw[slot], before_s[slot], t))
+            final = copy_of(ball, state(after_rvw[slot], after_s[slot], t))
+            agents.append(agent_of(ball.id, ball_type, initial, final))
+        if name == "stick_ball":
+            cue = system.cue
+            agents.insert(0, agent_of(cue.id, AgentType.CUE, cue.copy(), None))
+        elif name == "ball_linear_cushion":
+            c = linear[objects[e]]
+            agents.append(agent_of(c.id, AgentType.LINEAR_CUSHION_SEGMENT, c, None))
+        elif name == "ball_circular_cushion":
+            c = circular[objects[e]]
+            agents.append(agent_of(c.id, AgentType.CIRCULAR_CUSHION_SEGMENT, c, None))
+        elif name == "ball_pocket":
+            p = pockets[objects[e]]
+            initial = p.copy()
+            p.add(balls[who[e][0]].id)
+            agents.append(agent_of(p.id, AgentType.POCKET, initial, p.copy()))
+        events.append(event_of(event_types[code], tuple(agents), t))
+    events.append(pt["null_event"](end))
+    system.events = events
+    system.t = end
+    return system

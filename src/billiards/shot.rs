@@ -118,6 +118,56 @@ pub enum ShotEventKind {
 }
 
 impl ShotEventKind {
+    /// pooltool's event type names in the order of [`code`](Self::code): a kind's code is
+    /// the index of its [`name`](Self::name) here.
+    ///
+    /// ```
+    /// use ballcollide::billiards::ShotEventKind;
+    /// let kind = ShotEventKind::Pocket(2);
+    /// assert_eq!(ShotEventKind::NAMES[kind.code() as usize], kind.name());
+    /// ```
+    pub const NAMES: [&'static str; 9] = [
+        "stick_ball",
+        "sliding_rolling",
+        "rolling_spinning",
+        "rolling_stationary",
+        "spinning_stationary",
+        "ball_ball",
+        "ball_linear_cushion",
+        "ball_circular_cushion",
+        "ball_pocket",
+    ];
+
+    /// The kind's number: the index of its name in [`NAMES`](Self::NAMES) (example there).
+    pub const fn code(&self) -> i64 {
+        match self {
+            Self::Stick => 0,
+            Self::Transition(TransitionKind::SlidingRolling) => 1,
+            Self::Transition(TransitionKind::RollingSpinning) => 2,
+            Self::Transition(TransitionKind::RollingStationary) => 3,
+            Self::Transition(TransitionKind::SpinningStationary) => 4,
+            Self::BallBall => 5,
+            Self::LinearCushion(_) => 6,
+            Self::CircularCushion(_) => 7,
+            Self::Pocket(_) => 8,
+        }
+    }
+
+    /// The index of the cushion or pocket in its [`BilliardTable`] list, if the event has
+    /// one.
+    ///
+    /// ```
+    /// use ballcollide::billiards::ShotEventKind;
+    /// assert_eq!(ShotEventKind::LinearCushion(3).object(), Some(3));
+    /// assert_eq!(ShotEventKind::BallBall.object(), None);
+    /// ```
+    pub const fn object(&self) -> Option<usize> {
+        match self {
+            Self::LinearCushion(k) | Self::CircularCushion(k) | Self::Pocket(k) => Some(*k),
+            Self::Stick | Self::Transition(_) | Self::BallBall => None,
+        }
+    }
+
     /// pooltool's name of the event type (its `EventType` value).
     ///
     /// ```
@@ -237,11 +287,23 @@ pub fn simulate_shot(
     params: &[BallParams],
     options: &ShotOptions,
 ) -> Result<Shot, InputError> {
+    simulate_struck(table, balls, params, options.strike.as_ref(), options)
+}
+
+/// [`simulate_shot`] with `strike` in place of `options.strike` (which is not read): the
+/// loop that [`simulate_shots`](super::simulate_shots) shares.
+pub(crate) fn simulate_struck(
+    table: &BilliardTable,
+    balls: &[BallState],
+    params: &[BallParams],
+    strike: Option<&(usize, Cue)>,
+    options: &ShotOptions,
+) -> Result<Shot, InputError> {
     let n = balls.len();
     crate::batch::check_len("params", params.len(), n)?;
     // A ball without sliding or rolling friction that is set moving may go on for ever,
     // between the cushions.
-    let moves = options.strike.is_some() || balls.iter().any(|b| b.motion.translates());
+    let moves = strike.is_some() || balls.iter().any(|b| b.motion.translates());
     let frictionless = params.iter().any(|p| p.u_s == 0.0 || p.u_r == 0.0);
     if moves && frictionless && options.max_events.is_none() {
         return Err(InputError::new("max_events", InputErrorKind::Endless));
@@ -251,7 +313,7 @@ pub fn simulate_shot(
     let max_events = options.max_events.unwrap_or(usize::MAX);
     let mut states = balls.to_vec();
     let mut events = Vec::new();
-    if let Some((i, cue)) = &options.strike {
+    if let Some((i, cue)) = strike {
         let Some(ball) = states.get_mut(*i) else {
             let kind = InputErrorKind::IndexOutOfRange {
                 index: i64::try_from(*i).unwrap_or(i64::MAX),

@@ -311,6 +311,34 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
             "side_jaw_angle": {"float"},
         },
     ),
+    "simulate_shots": (
+        bc.simulate_shots,
+        {
+            # One ball on a table of one rail, struck at it.
+            "tables": [([[0.0, 1.0, 1.0, 1.0, 0.036576, 0.0]], [], [])],
+            "shot_table": [0],
+            "ball_start": [0, 1],
+            "rvw": [[[0.5, 0.5, 0.028575], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]]],
+            "s": [0],
+            "params": [[0.170097, 0.028575, 0.2, 0.01, 4 / 9, 0.05, 0.95, 0.85, 0.2, 9.81]],
+            "strike": [0],
+            "cue": [[1.5, 90.0, 0.0, 0.0, 0.25, 0.567, 0.0056699, 0.0106045]],
+            "contact_rule": "pooltool",
+            "max_events": None,
+            "history": False,
+            "num_threads": 1,
+        },
+        {
+            **dict.fromkeys(
+                ["tables", "shot_table", "ball_start", "rvw", "s", "params", "strike", "cue"],
+                NOTHING,
+            ),
+            "contact_rule": OPTIONAL,
+            "max_events": COUNT,
+            "history": {"bool", "numpy bool", "None"},
+            "num_threads": THREADS,
+        },
+    ),
     "CollisionSchedule.update": (
         lambda **kw: schedule().update(**kw),
         {"indices": [0]} | ONE_PATH,

@@ -1,6 +1,6 @@
 """Ctrl-C stops every long Rust call within a fraction of a second (``KeyboardInterrupt``):
-batches, path batches, scenes, a calendar's construction and updates, and ``simulate``, also
-with a progress bar.
+batches, path batches, scenes, a calendar's construction and updates, ``simulate`` (also
+with a progress bar) and ``simulate_shots`` (between shots).
 
 Each call runs in a child process that sends itself SIGINT half a second in; uninterrupted,
 each would run for seconds to minutes here (measured on this project's 2-core machine: the
@@ -71,6 +71,16 @@ CALLS = {
         "vel = rng.normal(size=(n, 1, 2))\nacc = np.zeros((n, 1, 2))\n"
         "s = bc.CollisionSchedule(start, pos, vel, acc, 1e-4)\nindices = np.arange(n)",
         "s.update(indices, start, pos, -vel, acc)",
+    ),
+    "simulate_shots": (
+        # 300,000 billiard shots, each a ball struck at a rail: about 15 µs a shot.
+        "n = 300_000\n"
+        "rail = [[0.0, 1.0, 1.0, 1.0, 0.036576, 0.0]]\n"
+        "rvw = np.zeros((n, 3, 3)); rvw[:, 0] = [0.5, 0.5, 0.028575]\n"
+        "params = [[0.170097, 0.028575, 0.2, 0.01, 4 / 9, 0.05, 0.95, 0.85, 0.2, 9.81]] * n\n"
+        "cue = [[1.5, 90.0, 0.0, 0.0, 0.25, 0.567, 0.0056699, 0.0106045]] * n",
+        "bc.simulate_shots([(rail, [], [])], np.zeros(n), np.arange(n + 1), rvw, np.zeros(n),"
+        " params, np.zeros(n), cue, num_threads=2)",
     ),
     "simulate": (
         "pass",

@@ -12,13 +12,15 @@
 use crate::support::rng;
 use crate::support::shot_cases;
 
+use ballcollide::batch::Threads;
 use ballcollide::billiards::{
-    BallParams, BallState, ContactRule, Cue, MotionState, Shot, ShotEventKind, ShotOptions, evolve,
-    simulate_shot,
+    BallParams, BallState, ContactRule, Cue, MotionState, Shot, ShotEventKind, ShotOptions,
+    ShotSetup, evolve, shot_history, simulate_shot, simulate_shots,
 };
 use nalgebra::Vector2;
 use rng::Rng;
 use shot_cases::{Case, Cases, read_cases};
+use std::num::NonZeroUsize;
 
 /// An event's agents as the data file names them (a collision's two balls in pooltool's
 /// order are compared as a set: see `same_agents`).
@@ -413,5 +415,71 @@ fn random_shots_keep_the_invariants() {
             "200 random shots ({rule:?}): {events} events, {pocketed} balls pocketed, deepest overlap {deepest:.1e} m"
         );
         assert!(events > 3000 && pocketed > 0);
+    }
+}
+
+/// Many shots at once give each shot's own result, bit for bit, on 1, 2 and all threads; a
+/// failing shot fails alone; the history's rows agree with the events.
+#[test]
+fn many_shots_are_each_shot_alone_on_any_threads() {
+    let cases = read_cases();
+    let mut rng = Rng(0x5eed_0041);
+    let inputs: Vec<(Vec<BallState>, Cue)> =
+        (0..40).map(|_| random_shot(&mut rng, &cases)).collect();
+    let params: Vec<Vec<BallParams>> = inputs
+        .iter()
+        .map(|(balls, _)| vec![cases.params; balls.len()])
+        .collect();
+    let mut setups: Vec<ShotSetup> = inputs
+        .iter()
+        .zip(&params)
+        .map(|((balls, cue), params)| ShotSetup {
+            table: &cases.table,
+            balls,
+            params,
+            strike: Some((0, *cue)),
+        })
+        .collect();
+    // Shot 5 strikes a ball it does not have.
+    setups[5].strike = Some((99, Cue::default()));
+    let options = ShotOptions::default();
+    let alone: Vec<_> = setups
+        .iter()
+        .map(|s| {
+            let one = ShotOptions {
+                strike: s.strike,
+                ..Default::default()
+            };
+            simulate_shot(s.table, s.balls, s.params, &one)
+        })
+        .collect();
+    assert!(alone[5].is_err() && alone.iter().filter(|r| r.is_ok()).count() == 39);
+    let two = NonZeroUsize::new(2).map_or(Threads::All, Threads::AtMost);
+    for threads in [Threads::AtMost(NonZeroUsize::MIN), two, Threads::All] {
+        let many = simulate_shots(&setups, &options, threads).expect("not interrupted");
+        assert_eq!(many, alone, "{threads:?}");
+    }
+    for (setup, shot) in setups.iter().zip(&alone) {
+        let Ok(shot) = shot else { continue };
+        let n = setup.balls.len();
+        let history = shot_history(setup.balls, setup.params, shot);
+        assert_eq!(history.rows.len(), (shot.events.len() + 2) * n);
+        let mut before = history.before.iter();
+        for (k, event) in shot.events.iter().enumerate() {
+            for (&b, state) in event.balls.iter().zip(&event.states) {
+                assert_eq!(history.rows[(k + 1) * n + b], *state);
+                let was = before.next().expect("a state before");
+                // Just before the event, the ball was where it is just after it, but for the
+                // kiss that places colliding balls and cushioned ones (a few µm), and a
+                // pocket's, which moves it to the pocket's centre.
+                if !matches!(event.kind, ShotEventKind::Pocket(_)) {
+                    assert!(
+                        (was.position - state.position).norm() < 2e-5,
+                        "{was:?} {state:?}"
+                    );
+                }
+            }
+        }
+        assert!(before.next().is_none());
     }
 }
