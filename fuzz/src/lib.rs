@@ -593,7 +593,7 @@ pub fn simulation_case(u: &mut Unstructured) -> Result<simulation_invariants::Si
 /// capped by circles of radius 0 at its ends; sides both, left or right), 0 to 2 circles
 /// (radius 0 now and then), 0 to 2 targets and 0 or 1 plane, anywhere in the box, and a
 /// table restitution of 0, 1 or between. Balls that would start on an object or in a target
-/// are left out (their refusal is `tests/simulation_table.rs`' subject), so that most cases
+/// are left out (their refusal is `tests/integration/simulation_table.rs`' subject), so that most cases
 /// run.
 pub fn simulation_table_case(u: &mut Unstructured) -> Result<simulation_invariants::TableCase> {
     use ballcollide::geometry::{Circle, LineSegment, Plane, SegmentSide, Table, Target};

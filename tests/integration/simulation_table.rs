@@ -14,9 +14,8 @@ use ballcollide::schedule::{Simulation, SimulationOptions, Walls, simulate};
 use nalgebra::Vector2;
 
 use crate::support::rng;
+use crate::support::simulation_invariants;
 use rng::Rng;
-#[path = "support/simulation_invariants.rs"]
-mod simulation_invariants;
 use simulation_invariants::{SimulationCase, TableCase, table_simulation};
 
 /// A pool ball's radius (2¼ in).

@@ -32,7 +32,7 @@ POSITION = 1e-6  # m: a ball's final position against stock pooltool's
 #: velocity components across it of 1e-17 to 1e-14 m/s that are rounding; pooltool collides
 #: two balls at once when their accelerations are the same to the bit, so those bits decide,
 #: and pooltool's ball–ball resolution (rotations and BLAS) rounds them otherwise than the
-#: engine (``tests/billiards_shots.rs``, ``ACROSS_THE_AXIS``).
+#: engine (``tests/reference/shots.rs``, ``ACROSS_THE_AXIS``).
 AT_ONCE = "a collision at once in one and not the other (the rounding across the axis)"
 #: Shots known to differ from stock pooltool, with why (checked: a shot that comes to agree,
 #: or another that differs, fails the test).
