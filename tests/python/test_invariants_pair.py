@@ -1,7 +1,7 @@
 """collision_time over the whole float range (hypothesis): valid input never raises, no NaN or
 negative time, a horizon only cuts, and A/B swap, ±0 flips and power-of-two scalings of lengths
-and of time change no bit. The Rust fuzz target ``pair`` and tests/integration/invariants_pair.rs check the
-same."""
+and of time change no bit. The Rust fuzz target ``pair`` and
+tests/integration/invariants_pair.rs check the same."""
 
 from __future__ import annotations
 

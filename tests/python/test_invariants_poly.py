@@ -1,7 +1,8 @@
 """real_roots over the whole float range (hypothesis): roots sorted and never NaN, each a root
 within a backward-error bound by exact rational evaluation (or within an ulp of one), none
 lost (exact signs between them), and the same bits under ±0 flips and power-of-two scalings of
-the coefficients. The Rust fuzz target ``poly`` and tests/integration/invariants_poly.rs check the same."""
+the coefficients. The Rust fuzz target ``poly`` and tests/integration/invariants_poly.rs check
+the same."""
 
 from __future__ import annotations
 
