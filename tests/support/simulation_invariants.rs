@@ -160,19 +160,22 @@ pub fn within_promise(case: &SimulationCase) -> bool {
         .all(|ratio| ratio <= range && ratio >= 1.0 / range)
 }
 
-/// Checks every invariant of the module documentation on `case`; `Ok` also when the case is
-/// not a valid input at all (a bad number, a bad box).
-pub fn simulation(case: &SimulationCase) -> Result<(), String> {
-    let strict = within_promise(case);
-    let Ok(balls) = case
+/// The case's balls and box, or `None` when either is not a valid input.
+fn balls_and_walls(case: &SimulationCase) -> Option<(Vec<Ball>, Walls<2>)> {
+    let balls = case
         .balls
         .iter()
         .map(|b| Ball::new(Vector2::new(b[0], b[1]), Vector2::new(b[2], b[3]), b[4]))
         .collect::<Result<Vec<_>, _>>()
-    else {
-        return Ok(());
-    };
-    let Ok(walls) = Walls::new(case.lo, case.hi) else {
+        .ok()?;
+    Some((balls, Walls::new(case.lo, case.hi).ok()?))
+}
+
+/// Checks every invariant of the module documentation on `case`; `Ok` also when the case is
+/// not a valid input at all (a bad number, a bad box).
+pub fn simulation(case: &SimulationCase) -> Result<(), String> {
+    let strict = within_promise(case);
+    let Some((balls, walls)) = balls_and_walls(case) else {
         return Ok(());
     };
     let options = SimulationOptions {
@@ -407,15 +410,7 @@ fn table_events(case: &SimulationCase) -> usize {
 pub fn table_simulation(tc: &TableCase) -> Result<(), String> {
     let case = &tc.case;
     let strict = within_promise(case);
-    let Ok(balls) = case
-        .balls
-        .iter()
-        .map(|b| Ball::new(Vector2::new(b[0], b[1]), Vector2::new(b[2], b[3]), b[4]))
-        .collect::<Result<Vec<_>, _>>()
-    else {
-        return Ok(());
-    };
-    let Ok(walls) = Walls::new(case.lo, case.hi) else {
+    let Some((balls, walls)) = balls_and_walls(case) else {
         return Ok(());
     };
     let full = match table_run(tc, &balls, walls, case.t_end) {
