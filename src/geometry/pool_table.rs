@@ -133,11 +133,17 @@ impl PoolTable {
                 let (tip, on_rail, on_jaw) = tangent_circle(&nose, self.jaw_radius);
                 table.circles.push(Circle::new(tip, self.jaw_radius)?);
                 let far = on_jaw + nose.jaw * self.jaw_length;
+                if far == on_jaw {
+                    let rule = "is too short for a jaw's two ends to differ in float64";
+                    return Err(dimension("jaw_length", self.jaw_length, rule));
+                }
                 jaws.push(LineSegment::new(on_jaw, far, SegmentSide::Both)?);
                 ends[m] = on_rail;
             }
             rail_ends.push(ends);
-            let middle = (first + second) / 2.0;
+            // Halved first: the same bits as `(first + second) / 2` (halving is exact), but
+            // no overflow on a table wider than half the float range.
+            let middle = first / 2.0 + second / 2.0;
             let centre = middle + axis * self.jaw_length;
             table.targets.push(Target::new(centre, self.pocket_radius)?);
         }
@@ -161,11 +167,8 @@ impl PoolTable {
                 } else {
                     ("corner_mouth", self.corner_mouth)
                 };
-                let kind = InputErrorKind::TableDimension {
-                    value,
-                    rule: "leaves no rail between the pockets (with the jaw tips)",
-                };
-                return Err(InputError::new(argument, kind));
+                let rule = "leaves no rail between the pockets (with the jaw tips)";
+                return Err(dimension(argument, value, rule));
             }
             table
                 .segments
@@ -178,12 +181,7 @@ impl PoolTable {
     /// Every dimension finite; the lengths `> 0` (the jaw tips' radius `≥ 0` and below half the
     /// narrower mouth), the jaw angles in `[0°, 45°)`, the mouths apart in float64.
     fn check(&self) -> Result<(), InputError> {
-        let bad = |argument: &'static str, value: f64, rule: &'static str| {
-            Err(InputError::new(
-                argument,
-                InputErrorKind::TableDimension { value, rule },
-            ))
-        };
+        let bad = |argument, value, rule| Err(dimension(argument, value, rule));
         for (argument, value) in [
             ("width", self.width),
             ("length", self.length),
@@ -241,8 +239,9 @@ impl PoolTable {
         let inside = Vector2::new(self.width / 2.0, self.length / 2.0);
         let towards_other = other - at;
         let along = if side_pocket {
-            // Both noses on one rail line.
-            towards_other.normalize()
+            // Both noses on one rail line, along y (exact, where normalising a mouth beyond
+            // 1e154 would overflow).
+            Vector2::new(0.0, towards_other.y.signum())
         } else {
             // A corner pocket: the rail through `at` is the axis-parallel line through it
             // that stays on the border (x or y fixed at 0 or the full size).
@@ -275,6 +274,11 @@ impl PoolTable {
             jaw_normal,
         }
     }
+}
+
+/// The error of a dimension, `argument` = `value`, against `rule`.
+fn dimension(argument: &'static str, value: f64, rule: &'static str) -> InputError {
+    InputError::new(argument, InputErrorKind::TableDimension { value, rule })
 }
 
 /// The circle of radius `rho` behind both faces of a nose and tangent to both: its centre,
@@ -328,6 +332,47 @@ mod tests {
         for k in 0..6 {
             let (a, b) = (table.segments[6 + 2 * k], table.segments[7 + 2 * k]);
             assert!((a.q() - b.q()).norm() > 2.0 * 0.028575, "pocket {k}");
+        }
+    }
+
+    /// A dimension: the default, or any float of either sign and any exponent (the table's
+    /// checks, and the geometry built from what passes them, meet the whole float range).
+    fn dimension(default: f64) -> impl proptest::strategy::Strategy<Value = f64> {
+        use proptest::prelude::*;
+        prop_oneof![
+            Just(default),
+            (1.0f64..2.0, -1074i32..1024, any::<bool>()).prop_map(|(m, e, negative)| {
+                let x =
+                    m * 2f64.powi(e.max(-1022)) * if e < -1022 { 2f64.powi(e + 1022) } else { 1.0 };
+                if negative { -x } else { x }
+            }),
+            Just(0.0),
+            Just(f64::INFINITY),
+        ]
+    }
+
+    proptest::proptest! {
+        /// Any dimensions give a table or an error naming one of them, never an error about
+        /// a piece derived from them (a tip's `centre` beyond the float range).
+        #[test]
+        fn any_dimensions_give_a_table_or_name_one(
+            width in dimension(1.27), length in dimension(2.54),
+            corner_mouth in dimension(0.1168), side_mouth in dimension(0.1295),
+            jaw_length in dimension(0.04), jaw_radius in dimension(0.005),
+            corner_jaw_angle in dimension(7.0), side_jaw_angle in dimension(14.0),
+            pocket_radius in dimension(0.045),
+        ) {
+            let spec = PoolTable {
+                width, length, corner_mouth, side_mouth, jaw_length, jaw_radius,
+                corner_jaw_angle, side_jaw_angle, pocket_radius,
+            };
+            if let Err(error) = spec.table() {
+                let named = [
+                    "width", "length", "corner_mouth", "side_mouth", "jaw_length", "jaw_radius",
+                    "corner_jaw_angle", "side_jaw_angle", "pocket_radius",
+                ];
+                proptest::prop_assert!(named.contains(&error.argument()), "{spec:?}: {error}");
+            }
         }
     }
 }

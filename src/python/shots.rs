@@ -119,6 +119,11 @@ pub(super) fn simulate_shots<'py>(
     let tables = read_tables(py, tables)?;
     let shot_table = ints(py, "shot_table", shot_table, None)?;
     let n_shots = shot_table.len();
+    if tables.is_empty() && n_shots > 0 {
+        // Every shot names a table, so an empty `tables` is the argument at fault.
+        let reason = format!("holds no table, but there are {n_shots} shots to play on one");
+        return Err(input_error(py, "tables", None, kind::SHAPE, &reason));
+    }
     let ball_start = ints(py, "ball_start", ball_start, Some(n_shots + 1))?;
     if ball_start.first().is_some_and(|&f| f != 0) {
         let reason = format!("offsets must start at 0, got {}", ball_start[0]);
