@@ -508,7 +508,8 @@ fn collide(
     };
     // The frictions that press them together are those of their velocities after the
     // collision: from the restitution's first, then the least parting speed of those.
-    let rounding = ROUNDING * (a.1.norm() + b.1.norm());
+    let speeds = a.1.norm() + b.1.norm();
+    let rounding = ROUNDING * speeds;
     // Balls that already part faster keep their velocities, unless friction presses them
     // together and they part slower than its least speed. Within `SLACK` of the target is
     // enough, as for `least` below: a pair parted at `rounding` by an earlier event of the
@@ -523,10 +524,14 @@ fn collide(
     } else {
         part_at(target)
     };
+    // `w` no faster than the pair's own speeds: a friction far beyond the motion's scale
+    // would make it any multiple of them (1e10 with a friction of 121 beside a box 5e-32 wide
+    // and speeds of 1e-29), and the balls would outrun time's resolution. Balls that slow
+    // stop within `|v|/μ` anyway, which ends the pressing too.
     // Within `SLACK` of it is enough: rounding puts the parting speed formed from the new
     // velocities up to `2⁻¹²` below `least` where `least` is just above `rounding`, and a
     // pair followed up again for that would never be done.
-    let least = parting_speed(va, vb, n, frictions, contact);
+    let least = parting_speed(va, vb, n, frictions, contact).min(speeds);
     if least * (1.0 - SLACK) > target.max(parting) {
         part_at(least)
     } else {
@@ -548,7 +553,7 @@ fn collide(
 ///
 /// When they approached slower than `w_min`, parting at `w_min` gives their normal motion a
 /// little energy, at most `½·m·2⁻²⁰·R·a` for the reduced mass `m`: the work of the push over
-/// `2⁻²¹·R`.
+/// `2⁻²¹·R`. [`collide`] caps it at the sum of the two balls' speeds before the collision.
 fn parting_speed(
     va: Vector2<f64>,
     vb: Vector2<f64>,

@@ -411,6 +411,54 @@ fn a_ball_faster_than_float_time_resolves_is_stopped_inside_its_box() {
     );
 }
 
+#[test]
+fn friction_far_beyond_the_motion_scale_parts_a_pressed_pair_no_faster_than_it_came() {
+    // Found by the fuzz target `simulate_table`: a friction of 121 beside a box 5e-32 wide
+    // and speeds of 1e-29. A pair pressed together at restitution 0 parted at the resting
+    // contacts' least speed `√(2⁻²⁰·R·a)`, 1e10 times the balls' speeds: they outran time's
+    // resolution and overlapped. The least parting speed is now capped at the pair's speeds.
+    let side = 5e-32;
+    let r = side / 16.0;
+    let case = SimulationCase::in_square(
+        side,
+        &[
+            ([0.5, 0.5], r, [1e-29, 3e-30], 121.0),
+            (
+                [0.5 + 2.0 * r / (side - 2.0 * r), 0.5],
+                r,
+                [0.0, 0.0],
+                121.0,
+            ),
+            ([0.2, 0.2], r, [-4e-30, 1e-29], 121.0),
+        ],
+        vec![1.0],
+        0.0,
+        1e-30,
+    );
+    assert!(simulation_invariants::within_promise(&case));
+    if let Err(e) = simulation(&case) {
+        panic!("{e}");
+    }
+    let (balls, walls) = simulation_invariants::balls_and_walls(&case).expect("a valid case");
+    let options = SimulationOptions {
+        mass: case.mass.clone(),
+        restitution: case.restitution,
+        t_end: case.t_end,
+        max_events: Some(1000),
+        ..Default::default()
+    };
+    let run = simulate(&balls, &case.radii, walls, &options).expect("a run");
+    assert!(!run.events.is_empty());
+    let energy = |balls: &[Ball]| {
+        balls
+            .iter()
+            .map(|b| b.velocity().norm_squared())
+            .sum::<f64>()
+    };
+    let (before, after) = (energy(&balls), energy(&run.balls));
+    assert!(after <= 4.0 * before, "energy {before:e} → {after:e}");
+}
+
 /// The fuzzed cases below: `ball` `(x, y, vx, vy, friction)` and a ball at rest in the
 /// corner of a box 2 wide, both of radius 1/64 and mass 5e-324, restitution 0, to 1/256.
 fn against_a_ball_in_a_corner(ball: [f64; 5]) -> SimulationCase {
