@@ -7,6 +7,10 @@ and returns a lazy Dask array of times. Each chunk of pairs is computed by one c
 an in-memory call gives — on one thread per chunk by default, so that a Dask worker with
 ``k`` threads keeps ``k`` cores busy and no more.
 
+:func:`simulate_many` plays pooltool shots as :func:`ballcollide.pooltool.simulate_many`
+does, in chunks of shots spread over Dask's workers, and gathers them into one
+:class:`~ballcollide.pooltool.ShotResults` (the workers need pooltool too).
+
 This module needs Dask's arrays: ``pip install 'ballcollide[dask]'``. Importing
 ``ballcollide`` alone never imports Dask.
 
@@ -26,6 +30,7 @@ array([0.5 ,  inf, 0.25])
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Sequence
 from typing import Any, Union
 
@@ -44,7 +49,7 @@ from . import InputError
 from . import collision_times as _check_now  # the eager checks, on an empty batch
 from . import collision_times as _collision_times  # one call for each chunk
 
-__all__ = ["collision_times"]
+__all__ = ["collision_times", "simulate_many"]
 
 #: A Dask array, a numpy array or anything ``numpy.asarray`` reads.
 ArrayInput = Union["da.Array", npt.ArrayLike]
@@ -287,3 +292,95 @@ def _rechunked(a: da.Array | np.ndarray, chunks: tuple[tuple[int, ...], ...]) ->
         return rechunked
     whole: da.Array = da.from_array(a, chunks=chunks)  # type: ignore[no-untyped-call]
     return whole
+
+
+#: The results of ``_core.simulate_shots`` that are offsets into the others (one per shot, and
+#: one past the end): shifted when chunks are joined; every other array is concatenated.
+_OFFSETS = ("event_start", "history_start")
+
+
+def simulate_many(
+    shots: Sequence[Any],
+    *,
+    chunk_size: int = 16,
+    contact_rule: str = "pooltool",
+    history: bool = False,
+    num_threads: int | None = 1,
+) -> Any:
+    """pooltool shots played as :func:`ballcollide.pooltool.simulate_many` plays them, in
+    chunks of ``chunk_size`` shots spread over Dask's workers (the active scheduler: a
+    ``distributed.Client``'s cluster if one is set up), gathered into one
+    :class:`~ballcollide.pooltool.ShotResults`.
+
+    Each chunk is one ``simulate_many`` call on ``num_threads`` threads (default 1: a worker
+    with ``k`` threads keeps ``k`` cores busy), so every shot's events are bit for bit those of
+    an in-memory call, on any cluster and chunking. The shots are pickled to the workers, which
+    need pooltool 0.6.0. Errors are ``simulate_many``'s, naming the shot by its index in
+    ``shots`` (``shots[37].position``).
+
+    >>> import pooltool as pt
+    >>> import ballcollide.dask as bcd
+    >>> results = bcd.simulate_many([pt.System.example()] * 5, chunk_size=2)
+    >>> len(results), results.type_names[results.type[0]]
+    (5, 'stick_ball')
+    """
+    import dask
+
+    from . import pooltool as bcp
+
+    if isinstance(chunk_size, bool) or not isinstance(chunk_size, int) or chunk_size < 1:
+        reason = f"must be an int ≥ 1, got {chunk_size!r}"
+        raise _input_error("chunk_size", None, reason, "out_of_range")
+    shots = list(shots)
+    # What is not supported fails now, not on a worker.
+    bcp._check_supported(None, False, None, None, None, 0, contact_rule)
+    parts = [
+        dask.delayed(_shot_block, pure=False)(  # type: ignore[attr-defined]
+            shots[start : start + chunk_size], start, contact_rule, history, num_threads
+        )
+        for start in range(0, len(shots), chunk_size)
+    ]
+    if not parts:
+        return bcp.simulate_many(shots, num_threads, contact_rule=contact_rule, history=history)
+    blocks = dask.compute(*parts)  # type: ignore[attr-defined,no-untyped-call]
+    return bcp.ShotResults(shots, _joined(blocks), contact_rule)
+
+
+def _shot_block(
+    shots: list[Any], start: int, contact_rule: str, history: bool, num_threads: int | None
+) -> dict[str, Any]:
+    """One chunk of shots, from ``shots[start]`` on: ``_core.simulate_shots``' arrays; errors
+    name the shot's index in the whole sequence."""
+    from . import _core
+    from . import pooltool as bcp
+
+    try:
+        return _core.simulate_shots(
+            **bcp._inputs(shots),
+            contact_rule=contact_rule,
+            history=history,
+            num_threads=num_threads,
+        )
+    except InputError as e:
+        local = re.match(r"shots\[(\d+)\]", e.argument or "")
+        if local is None:
+            raise
+        argument = f"shots[{start + int(local.group(1))}]{e.argument[local.end() :]}"
+        raise _input_error(argument, e.index, e.reason, e.kind, e.value) from None
+
+
+def _joined(blocks: Sequence[dict[str, Any]]) -> dict[str, Any]:
+    """Chunks' results as one call's: arrays concatenated, offsets shifted."""
+    joined: dict[str, Any] = {}
+    for key, first in blocks[0].items():
+        if key in _OFFSETS:
+            parts, end = [first[:1]], 0
+            for block in blocks:
+                parts.append(block[key][1:] + end)
+                end += int(block[key][-1])
+            joined[key] = np.concatenate(parts)
+        elif isinstance(first, np.ndarray):
+            joined[key] = np.concatenate([block[key] for block in blocks])
+        else:  # type_names: the same in every chunk
+            joined[key] = first
+    return joined
