@@ -9,7 +9,9 @@ the median time per shot of each:
 - ``stock``: ``pt.simulate(system)``;
 - ``simulate``: ``ballcollide.pooltool.simulate(system)``, the same full ``System``;
 - ``many 1``, ``many 2``: ``ballcollide.pooltool.simulate_many(systems, num_threads=n)``,
-  array results, on one and on two threads.
+  array results, on one and on two threads;
+- its parts: ``reading`` the pooltool objects into arrays (Python, on one thread) and
+  ``engine 1``, ``engine 2``: the engine on those arrays (``_core.simulate_shots``).
 
 Each figure is a run's total time over its number of shots, the median over the runs; the
 four ways take turns within each run (stock in the first ``--stock-runs`` only).
@@ -190,11 +192,19 @@ def main(argv: list[str] | None = None) -> int:
     bcp.simulate(systems[0])
     bcp.simulate_many(systems[:4], num_threads=2)
 
+    # simulate_many's two parts: reading the pooltool objects into arrays (Python, serial)
+    # and the engine on them (Rust, on the threads).
+    from ballcollide import _core
+
+    inputs = bcp._inputs(systems)
     ways = {
         "stock": lambda ss: [pt.simulate(s) for s in ss],
         "simulate": lambda ss: [bcp.simulate(s) for s in ss],
         "many 1": lambda ss: bcp.simulate_many(ss, num_threads=1),
         "many 2": lambda ss: bcp.simulate_many(ss, num_threads=2),
+        "reading": lambda ss: bcp._inputs(ss),
+        "engine 1": lambda ss: _core.simulate_shots(**inputs, num_threads=1),
+        "engine 2": lambda ss: _core.simulate_shots(**inputs, num_threads=2),
     }
     median = _rounds(ways, systems, args.runs, args.stock_runs)
     stock = median.pop("stock")
@@ -204,7 +214,8 @@ def main(argv: list[str] | None = None) -> int:
     print(f"{'stock':<10} {stock * 1e3:>9.3f} ms {1.0:>9.1f}x")
     for name, t in median.items():
         print(f"{name:<10} {t * 1e6:>9.1f} us {stock / t:>9.1f}x")
-    print(f"2 threads over 1: {median['many 1'] / median['many 2']:.2f}x")
+    print(f"2 threads over 1: {median['many 1'] / median['many 2']:.2f}x (simulate_many), ", end="")
+    print(f"{median['engine 1'] / median['engine 2']:.2f}x (the engine alone)")
     # A shared machine's other work moves every figure (and takes the second core).
     print(f"load average (1, 5, 15 min) at the end: {os.getloadavg()}, {os.cpu_count()} CPUs")
     return 0

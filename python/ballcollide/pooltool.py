@@ -584,21 +584,36 @@ def _check_supported(
 def _table_arrays(table: Any) -> tuple[_F64, _F64, _F64]:
     """A pooltool table as ``_core.simulate_shots``' ``(linear, circular, pockets)``."""
     segments = table.cushion_segments
-    linear = np.array(
-        [
-            (c.p1[0], c.p1[1], c.p2[0], c.p2[1], c.height, int(c.direction))
-            for c in segments.linear.values()
-        ],
-        dtype=np.float64,
-    ).reshape(-1, 6)
-    circular = np.array(
-        [(c.center[0], c.center[1], c.radius, c.height) for c in segments.circular.values()],
-        dtype=np.float64,
-    ).reshape(-1, 4)
-    pockets = np.array(
-        [(p.center[0], p.center[1], p.radius, p.depth) for p in table.pockets.values()],
-        dtype=np.float64,
-    ).reshape(-1, 4)
+
+    def rows(points: list[Any], *columns: list[float], width: int) -> _F64:
+        # Whole point arrays, then their x and y columns: indexing each point's coordinates
+        # one by one makes a numpy scalar each (this runs once a shot, serially).
+        if not points[0]:
+            return np.empty((0, width))
+        xy = [np.asarray(p, dtype=np.float64)[:, :2] for p in points]
+        return np.column_stack([*xy, *columns]).astype(np.float64, copy=False)
+
+    linear_ = list(segments.linear.values())
+    linear = rows(
+        [[c.p1 for c in linear_], [c.p2 for c in linear_]],
+        [c.height for c in linear_],
+        [int(c.direction) for c in linear_],
+        width=6,
+    )
+    circular_ = list(segments.circular.values())
+    circular = rows(
+        [[c.center for c in circular_]],
+        [c.radius for c in circular_],
+        [c.height for c in circular_],
+        width=4,
+    )
+    pockets_ = list(table.pockets.values())
+    pockets = rows(
+        [[p.center for p in pockets_]],
+        [p.radius for p in pockets_],
+        [p.depth for p in pockets_],
+        width=4,
+    )
     return linear, circular, pockets
 
 
@@ -608,6 +623,8 @@ def _inputs(shots: Sequence[Any]) -> dict[str, Any]:
     tables: list[tuple[_F64, _F64, _F64]] = []
     table_of: dict[int, int] = {}
     shot_table, ball_start, rvws, ss, params, strike, cue = [], [0], [], [], [], [], []
+    # Each parameter set's row, read once (balls often share one: a rack's, a game's).
+    rows: dict[int, list[float]] = {}
     for k, system in enumerate(shots):
         key = id(system.table)
         if key not in table_of:
@@ -615,14 +632,20 @@ def _inputs(shots: Sequence[Any]) -> dict[str, Any]:
             tables.append(_table_arrays(system.table))
         shot_table.append(table_of[key])
         balls = list(system.balls.values())
-        rvw = [b.state.rvw for b in balls]
-        rvws += rvw
-        ss += [b.state.s for b in balls]
-        params += [[getattr(b.params, f) for f in _PARAM_FIELDS] for b in balls]
+        states = [b.state for b in balls]
+        # One array a shot: this loop is the serial part of simulate_many.
+        rvw = np.array([state.rvw for state in states], dtype=np.float64).reshape(-1, 3, 3)
+        rvws.append(rvw)
+        ss += [state.s for state in states]
+        for b in balls:
+            row = rows.get(id(b.params))
+            if row is None:
+                row = rows[id(b.params)] = [getattr(b.params, f) for f in _PARAM_FIELDS]
+            params.append(row)
         ball_start.append(ball_start[-1] + len(balls))
         c = system.cue
         # pooltool's stick event: at t = 0, no ball moving or spinning, V0 > 0.
-        moving = any(np.any(r[1:] != 0.0) for r in rvw)
+        moving = bool(rvw[:, 1:].any())
         if c.V0 > 0 and not moving:
             ids = [b.id for b in balls]
             if c.cue_ball_id not in ids:
@@ -640,7 +663,7 @@ def _inputs(shots: Sequence[Any]) -> dict[str, Any]:
         "tables": tables,
         "shot_table": np.array(shot_table, dtype=np.float64),
         "ball_start": np.array(ball_start, dtype=np.float64),
-        "rvw": np.array(rvws, dtype=np.float64).reshape(n, 3, 3),
+        "rvw": np.concatenate(rvws) if rvws else np.empty((0, 3, 3)),
         "s": np.array(ss, dtype=np.float64),
         "params": np.array(params, dtype=np.float64).reshape(n, 10),
         "strike": np.array(strike, dtype=np.float64),
