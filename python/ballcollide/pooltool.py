@@ -600,20 +600,14 @@ def _table_arrays(table: Any) -> tuple[_F64, _F64, _F64]:
         [int(c.direction) for c in linear_],
         width=6,
     )
-    circular_ = list(segments.circular.values())
-    circular = rows(
-        [[c.center for c in circular_]],
-        [c.radius for c in circular_],
-        [c.height for c in circular_],
-        width=4,
-    )
-    pockets_ = list(table.pockets.values())
-    pockets = rows(
-        [[p.center for p in pockets_]],
-        [p.radius for p in pockets_],
-        [p.depth for p in pockets_],
-        width=4,
-    )
+
+    def discs(items: list[Any], last: str) -> _F64:
+        # Rows (cx, cy, radius, last): a circular cushion's height, a pocket's depth.
+        centres, radii = [c.center for c in items], [c.radius for c in items]
+        return rows([centres], radii, [getattr(c, last) for c in items], width=4)
+
+    circular = discs(list(segments.circular.values()), "height")
+    pockets = discs(list(table.pockets.values()), "depth")
     return linear, circular, pockets
 
 
