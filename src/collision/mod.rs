@@ -401,27 +401,28 @@ fn search_window<const D: usize>(
     previous_positive: bool,
 ) -> WindowSearch {
     // The level of the batch (or the process): `simd`'s one dispatch point.
-    #[cfg(target_arch = "x86_64")]
-    if crate::simd::current() != crate::simd::Level::Portable {
-        // SAFETY: every x86-64 level above the portable one has FMA, and `simd` hands out
-        // only levels this CPU supports.
-        return unsafe { search_window_fma(gap, length, previous_positive) };
-    }
-    search_window_in(gap, length, previous_positive)
+    let search = SearchWindow {
+        gap,
+        length,
+        previous_positive,
+    };
+    crate::simd::dispatch_scalar(crate::simd::current(), search)
 }
 
-/// [`search_window`] compiled with FMA enabled (its hot stages are inlined into it).
-///
-/// # Safety
-/// The CPU must support FMA.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn search_window_fma<const D: usize>(
-    gap: &Gap<D>,
+/// [`search_window`]'s arguments, run by [`crate::simd::dispatch_scalar`].
+struct SearchWindow<'a, const D: usize> {
+    gap: &'a Gap<D>,
     length: f64,
     previous_positive: bool,
-) -> WindowSearch {
-    search_window_in(gap, length, previous_positive)
+}
+
+impl<const D: usize> crate::simd::Kernel for SearchWindow<'_, D> {
+    type Output = WindowSearch;
+
+    #[inline(always)]
+    fn run<S: crate::simd::Simd>(self, _: S) -> WindowSearch {
+        search_window_in(self.gap, self.length, self.previous_positive)
+    }
 }
 
 /// The body of [`search_window`].

@@ -50,23 +50,19 @@ pub(crate) fn while_moving(pair: &PairInput) -> WhileMoving {
 /// in hardware where the CPU has them.
 pub(crate) fn while_moving_one(pair: &PairInput) -> WhileMoving {
     // The level of the batch (or the process): `simd`'s one dispatch point.
-    #[cfg(target_arch = "x86_64")]
-    if crate::simd::current() != crate::simd::Level::Portable {
-        // SAFETY: every x86-64 level above the portable one has FMA, and `simd` hands out
-        // only levels this CPU supports.
-        return unsafe { while_moving_one_fma(pair) };
-    }
-    while_moving_one_portable(pair)
+    crate::simd::dispatch_scalar(crate::simd::current(), WhileMovingOne(pair))
 }
 
-/// [`while_moving_one_portable`] compiled with FMA enabled.
-///
-/// # Safety
-/// The CPU must support FMA.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn while_moving_one_fma(pair: &PairInput) -> WhileMoving {
-    while_moving_one_portable(pair)
+/// [`while_moving_one`]'s argument, run by [`crate::simd::dispatch_scalar`].
+struct WhileMovingOne<'a>(&'a PairInput);
+
+impl crate::simd::Kernel for WhileMovingOne<'_> {
+    type Output = WhileMoving;
+
+    #[inline(always)]
+    fn run<S: crate::simd::Simd>(self, _: S) -> WhileMoving {
+        while_moving_one_portable(self.0)
+    }
 }
 
 #[inline(always)]

@@ -113,28 +113,25 @@ pub(crate) fn first_bounded_contact_one<const D: usize, const S: usize>(
     t_max: f64,
 ) -> Option<f64> {
     // The level of the batch (or the process): `simd`'s one dispatch point.
-    #[cfg(target_arch = "x86_64")]
-    if crate::simd::current() != crate::simd::Level::Portable {
-        // SAFETY: every x86-64 level above the portable one has FMA, and `simd` hands out
-        // only levels this CPU supports.
-        return unsafe { first_bounded_contact_fma(a, b, radii, t_max) };
-    }
-    first_bounded_contact(a, b, radii, t_max, Prior::Nothing)
+    let contact = BoundedContact { a, b, radii, t_max };
+    crate::simd::dispatch_scalar(crate::simd::current(), contact)
 }
 
-/// [`first_bounded_contact`] compiled with FMA enabled.
-///
-/// # Safety
-/// The CPU must support FMA.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "fma")]
-unsafe fn first_bounded_contact_fma<const D: usize, const S: usize>(
-    a: (&[Segment<D>], &PathBounds<D, S>),
-    b: (&[Segment<D>], &PathBounds<D, S>),
+/// [`first_bounded_contact_one`]'s arguments, run by [`crate::simd::dispatch_scalar`].
+struct BoundedContact<'a, const D: usize, const S: usize> {
+    a: (&'a [Segment<D>], &'a PathBounds<D, S>),
+    b: (&'a [Segment<D>], &'a PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
-) -> Option<f64> {
-    first_bounded_contact(a, b, radii, t_max, Prior::Nothing)
+}
+
+impl<const D: usize, const S: usize> crate::simd::Kernel for BoundedContact<'_, D, S> {
+    type Output = Option<f64>;
+
+    #[inline(always)]
+    fn run<L: crate::simd::Simd>(self, _: L) -> Option<f64> {
+        first_bounded_contact(self.a, self.b, self.radii, self.t_max, Prior::Nothing)
+    }
 }
 
 /// [`path_collision_time`] without the stages that only prove balls apart (the path bounds

@@ -48,6 +48,29 @@ pub(crate) fn dispatch<K: Kernel>(level: Level, kernel: K) -> K::Output {
     kernel.run(Portable)
 }
 
+/// Runs scalar `kernel` (its `run` given the portable operations) compiled with FMA at every
+/// x86-64 level above the portable one: scalar stages whose `mul_add` would otherwise be a
+/// library call each (the same exact result, so the same bits, at several times the cost).
+/// The one place the scalar stages choose their copy, as [`dispatch`] is for the lanes.
+#[inline]
+pub(crate) fn dispatch_scalar<K: Kernel>(level: Level, kernel: K) -> K::Output {
+    #[cfg(target_arch = "x86_64")]
+    if level != Level::Portable {
+        // SAFETY: every x86-64 level above the portable one has FMA, and `simd` hands out
+        // only levels this CPU supports.
+        return unsafe { on_fma(kernel) };
+    }
+    let _ = level;
+    kernel.run(Portable)
+}
+
+/// `kernel` compiled with FMA, on the portable operations.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn on_fma<K: Kernel>(kernel: K) -> K::Output {
+    kernel.run(Portable)
+}
+
 /// `kernel` compiled with AVX-512 (F, VL, DQ), AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma,avx512f,avx512vl,avx512dq")]

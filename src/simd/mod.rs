@@ -60,7 +60,7 @@ mod portable;
 pub(crate) use avx2::Avx2;
 #[cfg(target_arch = "x86_64")]
 pub(crate) use avx512::Avx512;
-pub(crate) use dispatch::{Kernel, dispatch};
+pub(crate) use dispatch::{Kernel, dispatch, dispatch_scalar};
 pub(crate) use lanes::{LANES, MOST, Mask, Simd};
 pub use level::{Level, current, test_levels, with_level};
 #[cfg(target_arch = "aarch64")]
