@@ -362,11 +362,28 @@ def _shot_block(
             num_threads=num_threads,
         )
     except InputError as e:
-        local = re.match(r"shots\[(\d+)\]", e.argument or "")
+        local = _SHOT.match(e.argument or "")
         if local is None:
             raise
-        argument = f"shots[{start + int(local.group(1))}]{e.argument[local.end() :]}"
-        raise _input_error(argument, e.index, e.reason, e.kind, e.value) from None
+        argument = _renumbered(local, start) + e.argument[local.end() :]
+        error = InputError(argument + str(e)[len(e.argument) :])
+        error.argument, error.index, error.segment = argument, e.index, e.segment
+        error.reason, error.kind, error.value = e.reason, e.kind, e.value
+        raise error from None
+    except ValueError as e:  # a cue whose ball is not among its shot's: "shots[k]: ..."
+        local = _SHOT.match(str(e))
+        if local is None:
+            raise
+        raise ValueError(_renumbered(local, start) + str(e)[local.end() :]) from None
+
+
+#: A shot named by its index in a chunk: ``shots[3]``.
+_SHOT = re.compile(r"shots\[(\d+)\]")
+
+
+def _renumbered(local: re.Match[str], start: int) -> str:
+    """``shots[k]`` of a chunk starting at ``start`` as ``shots[start + k]``."""
+    return f"shots[{start + int(local.group(1))}]"
 
 
 def _joined(blocks: Sequence[dict[str, Any]]) -> dict[str, Any]:

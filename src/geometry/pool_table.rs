@@ -137,6 +137,9 @@ impl PoolTable {
                     let rule = "is too short for a jaw's two ends to differ in float64";
                     return Err(dimension("jaw_length", self.jaw_length, rule));
                 }
+                if !(far.x.is_finite() && far.y.is_finite()) {
+                    return Err(dimension("jaw_length", self.jaw_length, BEYOND));
+                }
                 jaws.push(LineSegment::new(on_jaw, far, SegmentSide::Both)?);
                 ends[m] = on_rail;
             }
@@ -145,6 +148,9 @@ impl PoolTable {
             // no overflow on a table wider than half the float range.
             let middle = first / 2.0 + second / 2.0;
             let centre = middle + axis * self.jaw_length;
+            if !(centre.x.is_finite() && centre.y.is_finite()) {
+                return Err(dimension("jaw_length", self.jaw_length, BEYOND));
+            }
             table.targets.push(Target::new(centre, self.pocket_radius)?);
         }
         // Rail k runs from pocket k's second nose to pocket k + 1's first (anticlockwise:
@@ -276,6 +282,9 @@ impl PoolTable {
     }
 }
 
+/// The rule a jaw length breaks that reaches past the float range from the table's edge.
+const BEYOND: &str = "puts a jaw's end or a pocket's centre beyond the float range";
+
 /// The error of a dimension, `argument` = `value`, against `rule`.
 fn dimension(argument: &'static str, value: f64, rule: &'static str) -> InputError {
     InputError::new(argument, InputErrorKind::TableDimension { value, rule })
@@ -348,6 +357,10 @@ mod tests {
             }),
             Just(0.0),
             Just(f64::INFINITY),
+            // The ends of the range, where sums of two dimensions overflow.
+            Just(f64::MAX),
+            Just(f64::MAX / 2.0),
+            Just(f64::MIN_POSITIVE),
         ]
     }
 

@@ -121,7 +121,11 @@ pub(super) fn simulate_shots<'py>(
     let n_shots = shot_table.len();
     if tables.is_empty() && n_shots > 0 {
         // Every shot names a table, so an empty `tables` is the argument at fault.
-        let reason = format!("holds no table, but there are {n_shots} shots to play on one");
+        let reason = if n_shots == 1 {
+            "holds no table, but 1 shot needs one".to_string()
+        } else {
+            format!("holds no table, but {n_shots} shots need one")
+        };
         return Err(input_error(py, "tables", None, kind::SHAPE, &reason));
     }
     let ball_start = ints(py, "ball_start", ball_start, Some(n_shots + 1))?;

@@ -449,6 +449,10 @@ fn friction_far_beyond_the_motion_scale_parts_a_pressed_pair_no_faster_than_it_c
     };
     let run = simulate(&balls, &case.radii, walls, &options).expect("a run");
     assert!(!run.events.is_empty());
+    assert_eq!(
+        run.end, case.t_end,
+        "the run must end at t_end, not at max_events"
+    );
     let energy = |balls: &[Ball]| {
         balls
             .iter()

@@ -59,7 +59,13 @@ def test_shots_over_a_local_cluster_are_the_in_memory_call() -> None:
         with pytest.raises(ballcollide.InputError) as error:
             bcd.simulate_many([*shots, bad], chunk_size=8)
         assert error.value.argument == f"shots[{len(shots)}].position"
+        assert error.value.index == 0 and error.value.kind == "not_finite"
         assert str(error.value).startswith(f"shots[{len(shots)}].position[0]: must be finite")
+        # As is a cue whose ball is not among its shot's (a ValueError, as in memory).
+        stray = pt.System.example()
+        stray.cue.cue_ball_id = "nope"
+        with pytest.raises(ValueError, match=rf"^shots\[{len(shots)}\]: the cue's ball 'nope'"):
+            bcd.simulate_many([*shots, stray], chunk_size=8)
     # to_system builds a shot's System from the gathered arrays.
     built = got.to_system(3)
     assert [e.time for e in built.events] == [e.time for e in bcp.simulate(shots[3]).events]

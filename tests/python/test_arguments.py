@@ -479,23 +479,29 @@ def overflow(error: BaseException) -> bool:
     return isinstance(error, bc.InputError) and error.argument in {"acceleration", "position"}
 
 
-# Rules that relate two arguments: a value of one can break the rule, and the error names the
-# argument that the rule is stated on (a mouth too wide for the table names the mouth).
-RELATIONS = (
-    "leaves no rail between the pockets",
-    "must be below half the narrower mouth",
-    "is too large for the pockets' mouths",
-    "the ball overlaps ball",
-    "expected shape (N,)",
-)
+# Rules that relate arguments: a value of one can break the rule, and the error names the
+# argument that the rule is stated on (a mouth too wide for the table names the mouth). Each
+# rule with the arguments it links: the argument varied and the one named must both be among
+# them.
+RELATIONS: dict[str, set[str]] = {
+    "leaves no rail between the pockets": {
+        "width", "length", "corner_mouth", "side_mouth", "jaw_radius",
+    },
+    "must be below half the narrower mouth": {"jaw_radius", "corner_mouth", "side_mouth"},
+    "is too large for the pockets' mouths": {"width", "length", "corner_mouth", "side_mouth"},
+    "the ball overlaps ball": {"pos", "radius"},
+    "overlaps a wall of the box": {"pos", "radius", "box"},
+    "expected shape (N,)": {"shot_table", "ball_start", "strike", "cue"},
+}  # fmt: skip
 
 
-def relates(error: BaseException, call: str) -> bool:
-    """Whether `error` names another argument of `call` under one of the RELATIONS."""
-    return (
-        isinstance(error, bc.InputError)
-        and error.argument.split("[")[0] in CALLS[call][1]
-        and any(rule in error.reason for rule in RELATIONS)
+def relates(error: BaseException, argument: str) -> bool:
+    """Whether `error` names an argument that one of the RELATIONS links to `argument`."""
+    if not isinstance(error, bc.InputError):
+        return False
+    named = error.argument.split("[")[0]
+    return any(
+        rule in error.reason and {named, argument} <= linked for rule, linked in RELATIONS.items()
     )
 
 
@@ -514,7 +520,7 @@ def test_any_value_of_any_argument_answers_or_is_named(
         mismatch = isinstance(error, bc.InputError) and re.fullmatch(
             r"has \d+ rows, expected \d+", error.reason
         )
-        named = names_argument(error, argument) or relates(error, call)
+        named = names_argument(error, argument) or relates(error, argument)
         assert mismatch or overflow(error) or named, repr(error)
 
 

@@ -137,9 +137,12 @@ pub fn within_promise(case: &SimulationCase) -> bool {
     if crossing < case.t_end * 2f64.powi(-40) {
         return false;
     }
-    // Friction acts over times that time resolves. Else a ball stops within one ulp of time, and a pair that
-    // friction presses together meets again at the same instant for ever (found by the fuzz
-    // target `simulate_table`: a friction of 82 on speeds of 1e-23 in a box 2.6e-23 wide).
+    // Friction acts over times that time resolves: the roughest friction stops a ball as fast
+    // as the fastest (whose speed a collision may hand to it) in at least `2⁻³⁹·t_end`. Else
+    // a ball stops within one ulp of time, and a pair that friction presses together meets
+    // again at the same instant for ever (found by the fuzz target `simulate_table`: a
+    // friction of 82 on speeds of 1e-23 in a box 2.6e-23 wide). A slower ball handed less
+    // speed stops sooner still: this bound is the scale of the case, not a proof.
     let roughest = case.balls.iter().map(|b| b[4]).fold(0.0, f64::max);
     if fastest > 0.0 && fastest < 2.0 * roughest * case.t_end * 2f64.powi(-40) {
         return false;
