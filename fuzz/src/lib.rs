@@ -626,7 +626,7 @@ pub fn simulation_table_case(u: &mut Unstructured) -> Result<simulation_invarian
         1 => 1.0,
         _ => f64::from(u.arbitrary::<u8>()?) / 255.0,
     };
-    let mut case = simulation_case(u)?;
+    let case = simulation_case(u)?;
     let side = case.hi[0];
     let points: Vec<Vector2<f64>> = fractions
         .iter()
@@ -672,34 +672,7 @@ pub fn simulation_table_case(u: &mut Unstructured) -> Result<simulation_invarian
         table.planes.push(plane);
     }
     // Leave out the balls on an object (or touching one) or in a target.
-    let keep: Vec<bool> = case
-        .balls
-        .iter()
-        .zip(&case.radii)
-        .map(|(b, &r)| {
-            let (depth, _, inside) =
-                simulation_invariants::object_overlap(&table, Vector2::new(b[0], b[1]), r, true);
-            inside.is_none() && depth < -1e-6
-        })
-        .collect();
-    let kept = |v: &[f64]| -> Vec<f64> {
-        v.iter()
-            .zip(&keep)
-            .filter(|(_, k)| **k)
-            .map(|(x, _)| *x)
-            .collect()
-    };
-    case.radii = kept(&case.radii);
-    if case.mass.len() > 1 {
-        case.mass = kept(&case.mass);
-    }
-    case.balls = case
-        .balls
-        .iter()
-        .zip(&keep)
-        .filter(|(_, k)| **k)
-        .map(|(b, _)| *b)
-        .collect();
+    let case = case.clear_of(&table);
     Ok(simulation_invariants::TableCase {
         case,
         table,

@@ -353,31 +353,7 @@ fn random_table_case(rng: &mut Rng) -> TableCase {
         })
         .collect();
     let restitution = [0.0, 0.5, 1.0][rng.below(3) as usize];
-    let mut case = SimulationCase::in_square(2.0, &balls, vec![1.0], restitution, 4.0);
-    let keep: Vec<bool> = case
-        .balls
-        .iter()
-        .zip(&case.radii)
-        .map(|(b, &r)| {
-            let (depth, _, inside) =
-                simulation_invariants::object_overlap(&table, Vector2::new(b[0], b[1]), r, true);
-            inside.is_none() && depth < -1e-6
-        })
-        .collect();
-    case.radii = case
-        .radii
-        .iter()
-        .zip(&keep)
-        .filter(|k| *k.1)
-        .map(|k| *k.0)
-        .collect();
-    case.balls = case
-        .balls
-        .iter()
-        .zip(&keep)
-        .filter(|k| *k.1)
-        .map(|k| *k.0)
-        .collect();
+    let case = SimulationCase::in_square(2.0, &balls, vec![1.0], restitution, 4.0).clear_of(&table);
     let table_restitution = [0.0, 0.7, 1.0][rng.below(3) as usize];
     TableCase {
         case,

@@ -25,7 +25,7 @@
 
 use ballcollide::geometry::{ObjectKind, SegmentSide, Table};
 use ballcollide::schedule::{Simulation, SimulationOptions, Walls, simulate};
-use ballcollide::{Ball, InputErrorKind};
+use ballcollide::{Ball, InputError, InputErrorKind};
 use nalgebra::Vector2;
 
 /// A simulation's input: balls `(x, y, vx, vy, friction)`, radii, the box, masses (one, or
@@ -68,6 +68,35 @@ impl SimulationCase {
     }
 }
 
+impl SimulationCase {
+    /// The case without the balls on an object of `table` (or touching one, within `1e-6` of
+    /// the radius) or with their centre in a target: the starts `simulate` refuses.
+    pub fn clear_of(mut self, table: &Table<2>) -> Self {
+        let keep: Vec<bool> = self
+            .balls
+            .iter()
+            .zip(&self.radii)
+            .map(|(b, &r)| {
+                let (depth, _, inside) = object_overlap(table, Vector2::new(b[0], b[1]), r, true);
+                inside.is_none() && depth < -1e-6
+            })
+            .collect();
+        fn kept<T: Copy>(v: &[T], keep: &[bool]) -> Vec<T> {
+            v.iter()
+                .zip(keep)
+                .filter(|(_, k)| **k)
+                .map(|(x, _)| *x)
+                .collect()
+        }
+        self.radii = kept(&self.radii, &keep);
+        if self.mass.len() > 1 {
+            self.mass = kept(&self.mass, &keep);
+        }
+        self.balls = kept(&self.balls, &keep);
+        self
+    }
+}
+
 /// The most events a checked run may take: each case runs four times, and a pair query may
 /// take 250 µs where a window is 2²³⁴ times the motion's time scale (a ball at 5e118 with
 /// friction 1409 in a box 2 wide, within the pair search's range), and 1.2 ms beyond that
@@ -77,6 +106,45 @@ pub const MAX_EVENTS: usize = 1_000;
 
 /// How deep an overlap may be at any state, relative to the contact distance.
 pub const OVERLAP: f64 = 1e-9;
+
+/// Whether `simulate`'s refusal `e` of `case`'s start stands (`shown`: the case, in the
+/// message): a ball it names as overlapping another must be so (loosely: beyond half the
+/// tolerance the start check uses); the refusals of a bad box or bad numbers (the decoder
+/// may make a radius ≤ 0, a mass ≤ 0, restitution outside [0, 1], no end) stand; any other
+/// refusal of a case within the promise (`strict`) is a failure.
+fn refused_start(
+    e: &InputError,
+    case: &SimulationCase,
+    balls: &[Ball],
+    strict: bool,
+    shown: &dyn std::fmt::Debug,
+) -> Result<(), String> {
+    match e.kind() {
+        InputErrorKind::Overlap { other, .. } => {
+            let i = e.index().ok_or("an overlap without an index")?;
+            let contact = case.radii[i] + case.radii[other];
+            let d = (balls[i].position() - balls[other].position()).norm();
+            if d < contact {
+                Ok(())
+            } else {
+                Err(format!(
+                    "{e}, but they are {d:e} apart ({contact:e}): {shown:?}"
+                ))
+            }
+        }
+        InputErrorKind::OutsideBox { .. }
+        | InputErrorKind::WiderThanBox { .. }
+        | InputErrorKind::NotFinite(_)
+        | InputErrorKind::NonPositiveRadius(_)
+        | InputErrorKind::NonPositiveMass(_)
+        | InputErrorKind::NotInUnitInterval(_)
+        | InputErrorKind::InvalidHorizon(_)
+        | InputErrorKind::LengthMismatch { .. }
+        | InputErrorKind::Endless => Ok(()),
+        _ if !strict => Ok(()),
+        _ => Err(format!("a valid start failed: {e}: {shown:?}")),
+    }
+}
 
 fn run(
     case: &SimulationCase,
@@ -186,36 +254,7 @@ pub fn simulation(case: &SimulationCase) -> Result<(), String> {
     };
     let full = match simulate(&balls, &case.radii, walls, &options) {
         Ok(run) => run,
-        Err(e) => {
-            return match e.kind() {
-                // Refused starts: the named ball must be so (loosely: beyond half the
-                // tolerance the start check uses).
-                InputErrorKind::Overlap { other, .. } => {
-                    let i = e.index().ok_or("an overlap without an index")?;
-                    let contact = case.radii[i] + case.radii[other];
-                    let d = (balls[i].position() - balls[other].position()).norm();
-                    if d < contact {
-                        Ok(())
-                    } else {
-                        Err(format!(
-                            "{e}, but they are {d:e} apart ({contact:e}): {case:?}"
-                        ))
-                    }
-                }
-                InputErrorKind::OutsideBox { .. } | InputErrorKind::WiderThanBox { .. } => Ok(()),
-                // Bad numbers the decoder may make (a radius ≤ 0, a mass ≤ 0, restitution
-                // outside [0, 1], no end).
-                InputErrorKind::NotFinite(_)
-                | InputErrorKind::NonPositiveRadius(_)
-                | InputErrorKind::NonPositiveMass(_)
-                | InputErrorKind::NotInUnitInterval(_)
-                | InputErrorKind::InvalidHorizon(_)
-                | InputErrorKind::LengthMismatch { .. }
-                | InputErrorKind::Endless => Ok(()),
-                _ if !strict => Ok(()),
-                _ => Err(format!("a valid start failed: {e}: {case:?}")),
-            };
-        }
+        Err(e) => return refused_start(&e, case, &balls, strict, case),
     };
     if full.events.len() > MAX_EVENTS {
         return Err(format!("{} events: {case:?}", full.events.len()));
@@ -441,29 +480,7 @@ pub fn table_simulation(tc: &TableCase) -> Result<(), String> {
                         ))
                     }
                 }
-                InputErrorKind::Overlap { other, .. } => {
-                    let i = e.index().ok_or("an overlap without an index")?;
-                    let contact = case.radii[i] + case.radii[other];
-                    let d = (balls[i].position() - balls[other].position()).norm();
-                    if d < contact {
-                        Ok(())
-                    } else {
-                        Err(format!(
-                            "{e}, but they are {d:e} apart ({contact:e}): {tc:?}"
-                        ))
-                    }
-                }
-                InputErrorKind::OutsideBox { .. }
-                | InputErrorKind::WiderThanBox { .. }
-                | InputErrorKind::NotFinite(_)
-                | InputErrorKind::NonPositiveRadius(_)
-                | InputErrorKind::NonPositiveMass(_)
-                | InputErrorKind::NotInUnitInterval(_)
-                | InputErrorKind::InvalidHorizon(_)
-                | InputErrorKind::LengthMismatch { .. }
-                | InputErrorKind::Endless => Ok(()),
-                _ if !strict => Ok(()),
-                _ => Err(format!("a valid start failed: {e}: {tc:?}")),
+                _ => refused_start(&e, case, &balls, strict, tc),
             };
         }
     };
