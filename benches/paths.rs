@@ -71,7 +71,7 @@ impl PathSet {
         PathPairs {
             a: self.a.side(),
             b: self.b.side(),
-            radius: PerPair::All(CONTACT),
+            contact_distance: PerPair::All(CONTACT),
             t_max: PerPair::All(f64::INFINITY),
         }
     }
@@ -317,7 +317,7 @@ impl Queries {
             let p = PathPairs {
                 a: a.side(),
                 b: b.side(),
-                radius: PerPair::All(CONTACT),
+                contact_distance: PerPair::All(CONTACT),
                 t_max: PerPair::All(f64::INFINITY),
             };
             let out = &mut out[..b.len()];

@@ -112,7 +112,7 @@ def call(inputs: Inputs, radius: float) -> Callable[[], float]:
     """The call; returns its kernel's seconds."""
 
     def run() -> float:
-        bc.collision_times(**inputs, radius=radius, num_threads=1)
+        bc.collision_times(**inputs, contact_distance=radius, num_threads=1)
         return float(_core._last_kernel_seconds())
 
     return run
@@ -123,7 +123,7 @@ def workaround(inputs: Inputs, radius: float) -> Callable[[], float]:
 
     def run() -> float:
         given = {k: np.ascontiguousarray(v, dtype=np.float64) for k, v in inputs.items()}
-        bc.collision_times(**given, radius=radius, num_threads=1)
+        bc.collision_times(**given, contact_distance=radius, num_threads=1)
         return float(_core._last_kernel_seconds())
 
     return run

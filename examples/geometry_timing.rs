@@ -206,7 +206,7 @@ fn main() {
     let pairs = PathPairs {
         a: rows_a.side(),
         b: rows_b.side(),
-        radius: PerPair::All(2.0 * r),
+        contact_distance: PerPair::All(2.0 * r),
         t_max: PerPair::All(f64::INFINITY),
     };
     let mut times = vec![0.0; n];

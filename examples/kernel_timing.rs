@@ -70,7 +70,7 @@ fn run() -> Result<String, String> {
         pos_b: &d.pos_b,
         vel_b: &d.vel_b,
         friction_b: PerPair::Each(&d.friction_b),
-        radius: PerPair::All(d.radius),
+        contact_distance: PerPair::All(d.radius),
         t_max: PerPair::All(f64::INFINITY),
     };
     let (_, line) = time_calls(d.pos_a.len(), args.repeats, fresh, |out| {

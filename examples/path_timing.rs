@@ -91,7 +91,7 @@ fn run() -> Result<String, String> {
     let pairs = PathPairs {
         a: d.a.rows(),
         b: d.b.rows(),
-        radius: PerPair::All(d.radius),
+        contact_distance: PerPair::All(d.radius),
         t_max: PerPair::All(f64::INFINITY),
     };
     let (out, line) = time_calls(d.n, args.repeats, false, |out| {

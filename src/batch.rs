@@ -40,7 +40,7 @@ use crate::collision::moving_entry::{WhileMoving, while_moving};
 use crate::collision::prefilter::{PairInput, screen_pair, valid};
 use crate::collision::straight;
 use crate::error::{
-    InputError, InputErrorKind, check_friction, check_horizon, check_radius, finite,
+    InputError, InputErrorKind, check_contact_distance, check_friction, check_horizon, finite,
 };
 use crate::interrupt::Interrupt;
 use crate::motion::Ball;
@@ -93,7 +93,7 @@ impl PerPair<'_> {
 }
 
 /// The inputs of a batch of collision queries: pair `i` is ball A
-/// (`pos_a[i]`, `vel_a[i]`, `friction_a`) against ball B, at contact distance `radius`,
+/// (`pos_a[i]`, `vel_a[i]`, `friction_a`) against ball B, at contact distance `contact_distance`,
 /// with horizon `t_max` (`∞` for none).
 #[derive(Clone, Copy, Debug)]
 pub struct Pairs<'a> {
@@ -110,7 +110,7 @@ pub struct Pairs<'a> {
     /// Friction decelerations (≥ 0) of the B balls.
     pub friction_b: PerPair<'a>,
     /// Contact distance (sum of the two radii, > 0).
-    pub radius: PerPair<'a>,
+    pub contact_distance: PerPair<'a>,
     /// Horizon: a collision at `t ≥ t_max` is reported as none.
     pub t_max: PerPair<'a>,
 }
@@ -133,7 +133,7 @@ const CHUNK: usize = 1024;
 ///
 /// # Errors
 /// The first invalid pair's error (lowest index), naming the argument: non-finite numbers,
-/// negative friction, a non-positive radius, a negative horizon, or an array whose length
+/// negative friction, a non-positive contact distance, a negative horizon, or an array whose length
 /// differs from `out`'s. On error, `out` holds unspecified values.
 ///
 /// ```
@@ -146,15 +146,16 @@ const CHUNK: usize = 1024;
 /// let pairs = Pairs {
 ///     pos_a: &pos_a, vel_a: &vel_a, friction_a: PerPair::All(0.0),
 ///     pos_b: &pos_b, vel_b: &vel_b, friction_b: PerPair::All(0.0),
-///     radius: PerPair::All(0.5), t_max: PerPair::All(f64::INFINITY),
+///     contact_distance: PerPair::All(0.5), t_max: PerPair::All(f64::INFINITY),
 /// };
 /// let mut out = [0.0; 2];
 /// collision_times(&pairs, &mut out, Threads::All)?;
 /// assert_eq!(out, [0.5, f64::INFINITY]);
 ///
-/// let bad = Pairs { radius: PerPair::Each(&[0.5, -1.0]), ..pairs };
+/// let bad = Pairs { contact_distance: PerPair::Each(&[0.5, -1.0]), ..pairs };
 /// let err = collision_times(&bad, &mut out, Threads::All).unwrap_err();
-/// assert_eq!(err.to_string(), "radius[1]: radius (sum of the two radii) must be > 0, got -1");
+/// let reason = "the contact distance (sum of the two radii) must be > 0, got -1";
+/// assert_eq!(err.to_string(), format!("contact_distance[1]: {reason}"));
 /// # Ok::<(), ballcollide::InputError>(())
 /// ```
 pub fn collision_times(
@@ -268,7 +269,7 @@ fn lanes(pairs: &Pairs<'_>, index: &[usize; LANES], len: usize) -> [PairInput; L
         lane.pos_b = pairs.pos_b[i];
         lane.vel_b = pairs.vel_b[i];
         lane.friction_b = pairs.friction_b.get(i);
-        lane.radius = pairs.radius.get(i);
+        lane.radius = pairs.contact_distance.get(i);
         lane.t_max = pairs.t_max.get(i);
     }
     for lane in &mut lanes {
@@ -444,7 +445,7 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> Screened {
         scalars(pairs.friction_b, start, len),
     );
     let (mut radius, t_max) = (
-        scalars(pairs.radius, start, len),
+        scalars(pairs.contact_distance, start, len),
         scalars(pairs.t_max, start, len),
     );
     // Each pair in its own unit of length, as the scalar search takes it.
@@ -635,7 +636,7 @@ fn pair_time(
         pairs.friction_b.get(i),
         ["pos_b", "vel_b", "friction_b"],
     )?;
-    let radius = check_radius("radius", pairs.radius.get(i))?;
+    let radius = check_contact_distance("contact_distance", pairs.contact_distance.get(i))?;
     let t_max = check_horizon("t_max", pairs.t_max.get(i))?;
     Ok(first_contact_given(&a, &b, radius, t_max, moving))
 }
@@ -667,7 +668,7 @@ pub(crate) fn check_lengths(pairs: &Pairs<'_>, n: usize) -> Result<(), InputErro
     check_len("pos_b", pairs.pos_b.len(), n)?;
     check_len("vel_b", pairs.vel_b.len(), n)?;
     pairs.friction_b.check_len("friction_b", n)?;
-    pairs.radius.check_len("radius", n)?;
+    pairs.contact_distance.check_len("contact_distance", n)?;
     pairs.t_max.check_len("t_max", n)?;
     pairs
         .friction_a
@@ -675,7 +676,9 @@ pub(crate) fn check_lengths(pairs: &Pairs<'_>, n: usize) -> Result<(), InputErro
     pairs
         .friction_b
         .check_shared("friction_b", check_friction)?;
-    pairs.radius.check_shared("radius", check_radius)?;
+    pairs
+        .contact_distance
+        .check_shared("contact_distance", check_contact_distance)?;
     pairs.t_max.check_shared("t_max", check_horizon)
 }
 
@@ -816,13 +819,13 @@ mod tests {
             pos_b: &empty,
             vel_b: &empty,
             friction_b: PerPair::All(0.0),
-            radius: PerPair::All(radius),
+            contact_distance: PerPair::All(radius),
             t_max: PerPair::All(t_max),
         };
         let run = |p: Pairs<'_>| collision_times(&p, &mut [], Threads::All);
         assert_eq!(run(pairs(1.0, f64::INFINITY, 0.0)), Ok(()));
         let err = run(pairs(0.0, f64::INFINITY, 0.0)).unwrap_err();
-        assert_eq!((err.argument(), err.index()), ("radius", None));
+        assert_eq!((err.argument(), err.index()), ("contact_distance", None));
         let err = run(pairs(1.0, -1.0, 0.0)).unwrap_err();
         assert_eq!((err.argument(), err.index()), ("t_max", None));
         let err = run(pairs(1.0, 1.0, f64::NAN)).unwrap_err();
@@ -914,7 +917,7 @@ mod tests {
             pos_b: &r.pos_b,
             vel_b: &r.vel_b,
             friction_b: PerPair::Each(&r.mu_b),
-            radius: PerPair::All(0.05715),
+            contact_distance: PerPair::All(0.05715),
             t_max: PerPair::Each(&r.t_max),
         }
     }
@@ -1036,7 +1039,7 @@ mod tests {
             pos_b: &pos_b,
             vel_b: &vel_b,
             friction_b: PerPair::All(0.5),
-            radius: PerPair::All(0.05715),
+            contact_distance: PerPair::All(0.05715),
             t_max: PerPair::All(f64::INFINITY),
         };
         let scalar: Vec<u64> = (0..n)

@@ -10,7 +10,7 @@ pub enum InputErrorKind {
     NotFinite(f64),
     /// A friction deceleration below zero.
     NegativeFriction(f64),
-    /// A collision radius (sum of the balls' radii) that is zero or negative.
+    /// A contact distance (the sum of the two balls' radii) that is zero or negative.
     NonPositiveRadius(f64),
     /// One ball's radius (in a scene or a calendar) that is zero or negative.
     NonPositiveBallRadius(f64),
@@ -258,9 +258,10 @@ impl InputError {
     ///
     /// ```
     /// use ballcollide::{InputError, InputErrorKind};
-    /// let err = InputError::new("radius", InputErrorKind::NonPositiveRadius(0.0));
+    /// let err = InputError::new("contact_distance", InputErrorKind::NonPositiveRadius(0.0));
     /// assert_eq!(err.index(), None);
-    /// assert_eq!(err.to_string(), "radius: radius (sum of the two radii) must be > 0, got 0");
+    /// let reason = "the contact distance (sum of the two radii) must be > 0, got 0";
+    /// assert_eq!(err.to_string(), format!("contact_distance: {reason}"));
     /// ```
     pub const fn new(argument: &'static str, kind: InputErrorKind) -> Self {
         Self {
@@ -373,7 +374,7 @@ impl fmt::Display for InputErrorKind {
             Self::NonPositiveRadius(x) => {
                 write!(
                     f,
-                    "radius (sum of the two radii) must be > 0, got {}",
+                    "the contact distance (sum of the two radii) must be > 0, got {}",
                     Brief(x)
                 )
             }
@@ -543,9 +544,12 @@ pub(crate) fn check_friction(argument: &'static str, friction: f64) -> Result<f6
     }
 }
 
-/// Checks a collision radius: finite and > 0.
-pub(crate) fn check_radius(argument: &'static str, radius: f64) -> Result<f64, InputError> {
-    positive(argument, radius, InputErrorKind::NonPositiveRadius)
+/// Checks a contact distance (the sum of two radii): finite and > 0.
+pub(crate) fn check_contact_distance(
+    argument: &'static str,
+    distance: f64,
+) -> Result<f64, InputError> {
+    positive(argument, distance, InputErrorKind::NonPositiveRadius)
 }
 
 /// Checks one ball's radius (a scene's, a calendar's): finite and > 0.

@@ -28,7 +28,7 @@
 //! let pairs = Pairs {
 //!     pos_a: &pos_a, vel_a: &vel_a, friction_a: PerPair::All(0.0),
 //!     pos_b: &pos_b, vel_b: &vel_b, friction_b: PerPair::All(0.0),
-//!     radius: PerPair::All(1.0), t_max: PerPair::All(f64::INFINITY),
+//!     contact_distance: PerPair::All(1.0), t_max: PerPair::All(f64::INFINITY),
 //! };
 //! let mut out = vec![0.0; n];
 //! // A flag set before the call stops it at its first look.
@@ -88,7 +88,7 @@ pub fn interruptible<T>(stop: Arc<AtomicBool>, call: impl FnOnce() -> T) -> T {
 /// let pairs = Pairs {
 ///     pos_a: &pos_a, vel_a: &vel_a, friction_a: PerPair::All(0.0),
 ///     pos_b: &pos_b, vel_b: &vel_b, friction_b: PerPair::All(0.0),
-///     radius: PerPair::All(1.0), t_max: PerPair::All(f64::INFINITY),
+///     contact_distance: PerPair::All(1.0), t_max: PerPair::All(f64::INFINITY),
 /// };
 /// let mut out = vec![0.0; n];
 /// let done = Arc::new(AtomicUsize::new(0));

@@ -53,8 +53,8 @@ const SCENE_INLINE_UP_TO: usize = 16;
 /// The collision time of each of N pairs of balls (``inf`` where they never touch).
 ///
 /// Pair ``i`` is ball A (``pos_a[i]``, ``vel_a[i]``, ``friction_a``) against ball B
-/// (``pos_b[i]``, ``vel_b[i]``, ``friction_b``) at contact distance ``radius``; each answer
-/// is exactly what :func:`collision_time` gives for that pair.
+/// (``pos_b[i]``, ``vel_b[i]``, ``friction_b``) at contact distance ``contact_distance``;
+/// each answer is exactly what :func:`collision_time` gives for that pair.
 ///
 /// Parameters
 /// ----------
@@ -62,10 +62,12 @@ const SCENE_INLINE_UP_TO: usize = 16;
 ///     Shape ``(N, 2)``: centres and velocities at time 0. Any real dtype, C or Fortran
 ///     order, strided views and nested lists are accepted (converted once to C-ordered
 ///     float64; arrays that already are so are read in place).
-/// friction_a, friction_b, radius, t_max
+/// friction_a, friction_b, contact_distance, t_max
 ///     Numbers (the same for every pair) or shape ``(N,)``: friction decelerations
 ///     (``≥ 0``), contact distances (sums of the radii, ``> 0``), horizons (``≥ 0``,
 ///     ``inf`` for none). A number is anything ``float()`` accepts but a bool.
+///     ``radius=`` is ``contact_distance``'s former name, deprecated (a
+///     ``DeprecationWarning``): in the scene and calendar calls ``radius`` is one ball's.
 /// num_threads
 ///     ``None`` (default): all cores. An int ``n ≥ 1``: at most ``n`` threads. The result
 ///     does not depend on it, bit for bit. Batches of up to 1024 pairs run on the calling
@@ -91,12 +93,12 @@ const SCENE_INLINE_UP_TO: usize = 16;
 /// Raises
 /// ------
 /// InputError
-///     A ``ValueError``: a NaN or infinite number, a negative friction, ``radius ≤ 0``, a
-///     negative ``t_max``, a wrong shape or a length that differs from ``pos_a``'s; the
-///     message names the argument and the first offending index, e.g. ``friction_b[7]:
-///     friction must be ≥ 0, got -0.1`` (``.argument``, ``.index``, ``.reason``). An
-///     ``out`` of the wrong shape, not C-contiguous, read-only or sharing memory with an
-///     input; a ``num_threads`` below 1.
+///     A ``ValueError``: a NaN or infinite number, a negative friction, a
+///     ``contact_distance ≤ 0``, a negative ``t_max``, a wrong shape or a length that
+///     differs from ``pos_a``'s; the message names the argument and the first offending
+///     index, e.g. ``friction_b[7]: friction must be ≥ 0, got -0.1`` (``.argument``,
+///     ``.index``, ``.reason``). An ``out`` of the wrong shape, not C-contiguous, read-only
+///     or sharing memory with an input; a ``num_threads`` below 1.
 /// TypeError
 ///     An argument that is not made of real numbers, a non-integer ``num_threads``, or an
 ///     ``out`` that is not a float64 array of one dimension.
@@ -124,11 +126,11 @@ const SCENE_INLINE_UP_TO: usize = 16;
 #[pyfunction]
 #[pyo3(
     signature = (
-        pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius,
-        *, t_max=Given(None), num_threads=None, out=None, progress=None
+        pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, contact_distance=Given(None),
+        *, t_max=Given(None), num_threads=None, out=None, progress=None, radius=Given(None)
     ),
-    text_signature = "(pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, \
-                      t_max=1e999, num_threads=None, out=None, progress=None)"
+    text_signature = "(pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, contact_distance, \
+                      *, t_max=1e999, num_threads=None, out=None, progress=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 fn collision_times<'py>(
@@ -139,19 +141,21 @@ fn collision_times<'py>(
     pos_b: &Bound<'py, PyAny>,
     vel_b: &Bound<'py, PyAny>,
     friction_b: &Bound<'py, PyAny>,
-    radius: &Bound<'py, PyAny>,
+    contact_distance: Given<'py>,
     t_max: Given<'py>,
     num_threads: Option<&Bound<'py, PyAny>>,
     out: Option<&Bound<'py, PyAny>>,
     progress: Option<&Bound<'py, PyAny>>,
+    radius: Given<'py>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let contact_distance = read::contact_distance(py, contact_distance, radius)?;
     let pos_a = rows("pos_a", pos_a)?;
     let vel_a = rows("vel_a", vel_a)?;
     let friction_a = param("friction_a", friction_a)?;
     let pos_b = rows("pos_b", pos_b)?;
     let vel_b = rows("vel_b", vel_b)?;
     let friction_b = param("friction_b", friction_b)?;
-    let radius = param("radius", radius)?;
+    let contact_distance = param("contact_distance", &contact_distance)?;
     let t_max = t_max.param_or("t_max", f64::INFINITY)?;
     let threads = threads(num_threads)?;
     let pairs = Pairs {
@@ -161,7 +165,7 @@ fn collision_times<'py>(
         pos_b: pos_b.rows(),
         vel_b: vel_b.rows(),
         friction_b: friction_b.per_pair(),
-        radius: radius.per_pair(),
+        contact_distance: contact_distance.per_pair(),
         t_max: t_max.per_pair(),
     };
     let n = pairs.pos_a.len();
@@ -174,7 +178,7 @@ fn collision_times<'py>(
         Some(&vel_b),
         friction_a.each(),
         friction_b.each(),
-        radius.each(),
+        contact_distance.each(),
         t_max.each(),
     ];
     let expected = "a 1-D float64 array of shape (N,)";
@@ -303,8 +307,9 @@ fn simd_level() -> &'static str {
 ///     tuple, an array).
 /// friction_a, friction_b
 ///     Each ball's friction deceleration ``μ ≥ 0`` (length / time²); ``0`` for none.
-/// radius
-///     The contact distance: the sum of the two balls' radii (``> 0``).
+/// contact_distance
+///     The sum of the two balls' radii (``> 0``). ``radius=`` is its former name,
+///     deprecated (a ``DeprecationWarning``).
 /// t_max
 ///     Horizon: a collision at ``t ≥ t_max`` is reported as ``inf``.
 ///
@@ -314,16 +319,17 @@ fn simd_level() -> &'static str {
 /// Returns
 /// -------
 /// float
-///     The first time ``t ≥ 0`` at which the centres are ``radius`` apart and closing in
-///     (``0.0`` if they already touch or overlap and approach each other), else ``inf``.
+///     The first time ``t ≥ 0`` at which the centres are ``contact_distance`` apart and
+///     closing in (``0.0`` if they already touch or overlap and approach each other), else
+///     ``inf``.
 ///     It is exactly the value :func:`collision_times` gives for the same pair.
 ///
 /// Raises
 /// ------
 /// InputError
-///     A ``ValueError``: a NaN or infinite number, a negative friction, ``radius ≤ 0``, a
-///     negative or NaN ``t_max``, or a vector that is not two numbers; the message names
-///     the argument (``.index`` is ``None``).
+///     A ``ValueError``: a NaN or infinite number, a negative friction, a
+///     ``contact_distance ≤ 0``, a negative or NaN ``t_max``, or a vector that is not two
+///     numbers; the message names the argument (``.index`` is ``None``).
 /// TypeError
 ///     An argument that is not made of real numbers.
 ///
@@ -339,10 +345,11 @@ fn simd_level() -> &'static str {
 #[pyfunction]
 #[pyo3(
     signature = (
-        pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, t_max=Given(None)
+        pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, contact_distance=Given(None),
+        *, t_max=Given(None), radius=Given(None)
     ),
-    text_signature = "(pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, *, \
-                      t_max=1e999)"
+    text_signature = "(pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, contact_distance, \
+                      *, t_max=1e999)"
 )]
 #[allow(clippy::too_many_arguments)]
 fn collision_time(
@@ -353,9 +360,11 @@ fn collision_time(
     pos_b: &Bound<'_, PyAny>,
     vel_b: &Bound<'_, PyAny>,
     friction_b: &Bound<'_, PyAny>,
-    radius: &Bound<'_, PyAny>,
+    contact_distance: Given<'_>,
     t_max: Given<'_>,
+    radius: Given<'_>,
 ) -> PyResult<f64> {
+    let contact_distance = read::contact_distance(py, contact_distance, radius)?;
     let pairs = Pairs {
         pos_a: &[point("pos_a", pos_a)?],
         vel_a: &[point("vel_a", vel_a)?],
@@ -363,7 +372,7 @@ fn collision_time(
         pos_b: &[point("pos_b", pos_b)?],
         vel_b: &[point("vel_b", vel_b)?],
         friction_b: PerPair::All(number("friction_b", friction_b)?),
-        radius: PerPair::All(number("radius", radius)?),
+        contact_distance: PerPair::All(number("contact_distance", &contact_distance)?),
         t_max: PerPair::All(t_max.number_or("t_max", f64::INFINITY)?),
     };
     let mut out = [0.0];

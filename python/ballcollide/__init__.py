@@ -2,11 +2,11 @@
 
 Each ball moves on a straight line from its position ``p`` with velocity ``v``, slowed by a
 constant friction deceleration ``μ ≥ 0`` (length / time²) until it stops at ``τ = |v|/μ``, and
-stays there. Two balls collide when their centres come within ``radius`` (the sum of their
-radii): the collision time is the first ``t ≥ 0`` at which they start to interpenetrate
-(``0`` if they already touch and are approaching), ``inf`` if they never do (or not before
-``t_max``). The times are as accurate as float64 inputs allow. The contract is
-``docs/contract.md`` in the repository.
+stays there. Two balls collide when their centres come within ``contact_distance`` (the sum
+of their radii; ``radius`` always means one ball's own): the collision time is the first
+``t ≥ 0`` at which they start to interpenetrate (``0`` if they already touch and are
+approaching), ``inf`` if they never do (or not before ``t_max``). The times are as accurate
+as float64 inputs allow. The contract is ``docs/contract.md`` in the repository.
 
 Functions (all take array-likes: lists, any real dtype, C or Fortran order, strided views;
 and any real number ``float()`` accepts, but not a bool, where a number goes):
@@ -26,16 +26,23 @@ and any real number ``float()`` accepts, but not a bool, where a number goes):
   the pairs that cannot meet;
 - :class:`CollisionSchedule`: an event calendar, the next collision (and wall contact) among N
   balls on paths, kept up to date as an event-driven simulation changes a few paths at a time;
-- :func:`simulate`: an event-driven simulation of friction balls in a box, run natively on it.
+- :func:`simulate`: an event-driven simulation of friction balls in a box, run natively on it;
+- :func:`pool_table`: a pool table's cushions, jaws and pockets as the objects above;
+- :func:`simulate_shots`: billiard shots with pooltool's physics, many at once (see
+  :mod:`ballcollide.pooltool` for pooltool's own objects);
+- :func:`simd_level`: the SIMD level the batches run at.
 
-Bad input (NaN or infinity, negative friction, ``radius ≤ 0``, wrong shapes or lengths)
-raises :class:`InputError`, a ``ValueError`` naming the argument and, for batches, the first
-bad index (``.argument``, ``.index``, ``.reason``, and ``.segment`` for a path's segment); an
-argument that is not made of real
-numbers raises ``TypeError``.
+The exported names are ``ballcollide.__all__``.
+
+Bad input (NaN or infinity, negative friction, ``contact_distance ≤ 0``, wrong shapes or
+lengths) raises :class:`InputError`, a ``ValueError`` naming the argument and, for batches,
+the first bad index (``.argument``, ``.index``, ``.reason``, ``.segment`` for a path's
+segment, ``.kind``, a stable code to branch on, and ``.value``, the offending number); an
+argument that is not made of real numbers raises ``TypeError``.
 
 The functions are those of the compiled ``_core`` module, re-exported: it reads and checks
-every argument itself. Their docstrings are the Rust doc comments of ``src/python.rs``.
+every argument itself. Their docstrings are the Rust doc comments of the bindings
+(``src/python``).
 
 >>> import ballcollide as bc
 >>> # A ball shot at 1 m/s (no friction) at a resting ball 1 m away; contact at 0.5 m.

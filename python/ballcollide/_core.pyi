@@ -79,7 +79,7 @@ def collision_time(
     pos_b: npt.ArrayLike,
     vel_b: npt.ArrayLike,
     friction_b: _Number,
-    radius: _Number,
+    contact_distance: _Number,
     *,
     t_max: _Number = ...,
 ) -> float: ...
@@ -99,7 +99,7 @@ def collision_times(
     pos_b: npt.ArrayLike,
     vel_b: npt.ArrayLike,
     friction_b: _PerPair,
-    radius: _PerPair,
+    contact_distance: _PerPair,
     *,
     t_max: _PerPair = ...,
     num_threads: SupportsIndex | None = None,
@@ -125,7 +125,7 @@ def path_collision_times(
     pos_b: npt.ArrayLike,
     vel_b: npt.ArrayLike,
     acc_b: npt.ArrayLike,
-    radius: _PerPair,
+    contact_distance: _PerPair,
     *,
     t_max: _PerPair = ...,
     num_threads: SupportsIndex | None = None,
@@ -135,7 +135,7 @@ def path_collision_times(
 def path_collision_time(
     path_a: _Path,
     path_b: _Path,
-    radius: _Number,
+    contact_distance: _Number,
     *,
     t_max: _Number = ...,
 ) -> float: ...

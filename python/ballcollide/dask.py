@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import math
 import re
+import warnings
 from collections.abc import Sequence
 from typing import Any, Union
 
@@ -57,7 +58,16 @@ ArrayInput = Union["da.Array", npt.ArrayLike]
 PerPairInput = Union[float, "da.Array", npt.ArrayLike]
 
 _ROWS = ("pos_a", "vel_a", "pos_b", "vel_b")
-_NAMES = ("pos_a", "vel_a", "friction_a", "pos_b", "vel_b", "friction_b", "radius", "t_max")
+_NAMES = (
+    "pos_a",
+    "vel_a",
+    "friction_a",
+    "pos_b",
+    "vel_b",
+    "friction_b",
+    "contact_distance",
+    "t_max",
+)
 
 
 def _input_error(
@@ -136,7 +146,7 @@ def _block(
     pos_b: np.ndarray,
     vel_b: np.ndarray,
     friction_b: Any,
-    radius: Any,
+    contact_distance: Any,
     t_max: Any,
     *,
     num_threads: int | None,
@@ -145,7 +155,7 @@ def _block(
     """One chunk of pairs: one call of the kernel; errors name the global index."""
     # Per-pair arrays arrive as (n, 1) blocks (see collision_times), scalars as they were
     # given or as 0-d arrays.
-    fa, fb, r, tm = (_flat(x) for x in (friction_a, friction_b, radius, t_max))
+    fa, fb, r, tm = (_flat(x) for x in (friction_a, friction_b, contact_distance, t_max))
     try:
         return _collision_times(
             pos_a, vel_a, fa, pos_b, vel_b, fb, r, t_max=tm, num_threads=num_threads
@@ -169,17 +179,18 @@ def collision_times(
     pos_b: ArrayInput,
     vel_b: ArrayInput,
     friction_b: PerPairInput,
-    radius: PerPairInput,
+    contact_distance: PerPairInput | None = None,
     *,
     t_max: PerPairInput = np.inf,
     num_threads: int | None = 1,
+    radius: PerPairInput | None = None,
 ) -> da.Array:
     """The collision times of N pairs held in Dask arrays, as a lazy Dask array.
 
     The arguments and the result are those of :func:`ballcollide.collision_times`, with
     Dask arrays allowed wherever arrays are: pair ``i`` is ball A (``pos_a[i]``,
     ``vel_a[i]``, ``friction_a``) against ball B (``pos_b[i]``, ``vel_b[i]``,
-    ``friction_b``) at contact distance ``radius``, and its time is ``inf`` if they never
+    ``friction_b``) at contact distance ``contact_distance``, and its time is ``inf`` if they never
     touch (or not before ``t_max``). Nothing is computed until the result is (``.compute()``,
     ``.sum()``, ``.to_zarr()`` …); each chunk of pairs is then one call of
     :func:`ballcollide.collision_times`, so the times are bit for bit those of one in-memory
@@ -189,8 +200,10 @@ def collision_times(
     ----------
     pos_a, vel_a, pos_b, vel_b
         Shape ``(N, 2)``: Dask arrays, numpy arrays or array-likes of real numbers.
-    friction_a, friction_b, radius, t_max
+    friction_a, friction_b, contact_distance, t_max
         Scalars (one value for all pairs; a 0-d Dask array too) or shape ``(N,)``.
+        ``radius=`` is ``contact_distance``'s former name, deprecated (as in
+        :func:`ballcollide.collision_times`).
     num_threads
         Threads of the kernel for each chunk: ``1`` (default) — Dask already runs one chunk
         per worker thread, so more would oversubscribe the cores; ``None`` for all cores
@@ -207,8 +220,9 @@ def collision_times(
     ballcollide.InputError, TypeError
         At once, for what can be seen without computing: a wrong shape, a length that
         differs from ``pos_a``'s, a non-real dtype (``TypeError``), unknown chunk sizes, a
-        bad scalar (``radius ≤ 0`` …) or ``num_threads``. Bad values inside arrays (NaN or
-        infinite numbers, a negative friction, ``radius ≤ 0``, a negative ``t_max``) raise
+        bad scalar (``contact_distance ≤ 0`` …) or ``num_threads``. Bad values inside arrays (NaN or
+        infinite numbers, a negative friction, ``contact_distance ≤ 0``, a negative ``t_max``)
+        raise
         :class:`ballcollide.InputError` (a ``ValueError``) when the result is computed,
         naming the argument and, as ``.index``, the index of the bad pair in the whole array
         (the first one of its chunk; if several chunks have bad pairs, whichever fails first
@@ -247,7 +261,8 @@ def collision_times(
     ...
     ballcollide.InputError: friction_a[6]: friction must be ≥ 0, got -1
     """
-    given = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, radius, t_max)
+    contact_distance = _contact_distance(contact_distance, radius)
+    given = (pos_a, vel_a, friction_a, pos_b, vel_b, friction_b, contact_distance, t_max)
     args = [_shaped(name, x) for name, x in zip(_NAMES, given)]
     n = np.shape(args[0])[0]
     for name, a in zip(_NAMES, args):
@@ -282,6 +297,26 @@ def collision_times(
         token="collision_times",
     )
     return out
+
+
+def _contact_distance(contact_distance: Any, radius: Any) -> Any:
+    """``contact_distance``, or the same value under its deprecated name ``radius=``, read as
+    :func:`ballcollide.collision_times` reads them (with its warning and its errors)."""
+    if radius is None:
+        if contact_distance is None:
+            raise TypeError(
+                "contact_distance: missing (the distance between the centres at contact)"
+            )
+        return contact_distance
+    if contact_distance is not None:
+        raise TypeError("contact_distance: given twice (radius= is its deprecated name)")
+    warnings.warn(
+        "radius= is deprecated in the pair calls, where it is the contact distance "
+        "(the sum of the two radii): pass contact_distance= instead",
+        DeprecationWarning,
+        stacklevel=3,
+    )
+    return radius
 
 
 def _rechunked(a: da.Array | np.ndarray, chunks: tuple[tuple[int, ...], ...]) -> da.Array:

@@ -93,7 +93,7 @@ def make_batch(n: int, seed: int) -> Batch:
         "pos_b": pos_b,
         "vel_b": vel_b,
         "friction_b": friction_b,
-        "radius": CONTACT,
+        "contact_distance": CONTACT,
         "t_max": t_max,
     }
 

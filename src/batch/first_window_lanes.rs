@@ -73,7 +73,7 @@ fn first_window<const D: usize, const K: usize>(
         start,
         end: end_a.min(end_b),
         largest: most,
-        radius: pairs.radius.get(i),
+        radius: pairs.contact_distance.get(i),
         t_max: pairs.t_max.get(i),
     }
 }
@@ -167,7 +167,7 @@ mod tests {
         let pairs = PathPairs {
             a: side(&start_a, &pos_a, &vel_a, &acc_a),
             b: side(&start_b, &pos_b, &vel_b, &acc_b),
-            radius: PerPair::Each(&radius),
+            contact_distance: PerPair::Each(&radius),
             t_max: PerPair::Each(&t_max),
         };
         let path = |side: &PathRows<'_, 2>, i: usize| {

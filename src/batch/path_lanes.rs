@@ -100,7 +100,7 @@ pub(crate) fn settled<S: Simd, const D: usize, const K: usize>(
         lane_rows::<S, D, K>(s, &pairs.b, first),
     );
     let (a, b) = (lane_bounds(s, &rows_a), lane_bounds(s, &rows_b));
-    let radius = lanes_of(s, pairs.radius, first);
+    let radius = lanes_of(s, pairs.contact_distance, first);
     let t_max = lanes_of(s, pairs.t_max, first);
     let zero = s.zero();
     // `radius + MARGIN·(size_a + size_b + radius)`, as `PathBounds::reach` forms it.
@@ -634,7 +634,7 @@ mod tests {
             PathPairs {
                 a: self.side(0),
                 b: self.side(1),
-                radius: PerPair::Each(&self.radius),
+                contact_distance: PerPair::Each(&self.radius),
                 t_max: PerPair::Each(&self.t_max),
             }
         }

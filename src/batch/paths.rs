@@ -25,7 +25,7 @@ use super::{PerPair, Threads, check_len, run_chunks};
 use crate::collision::path_bounds::PathBounds;
 use crate::collision::path_contact::{Prior, first_bounded_contact};
 use crate::collision::stage_counts::{Stage, count};
-use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
+use crate::error::{InputError, InputErrorKind, check_contact_distance, check_horizon, finite};
 use crate::path::{Names, Segment, locate, segments_from_rows};
 use crate::simd::{Kernel, LANES, Simd, dispatch};
 
@@ -82,8 +82,8 @@ impl<const D: usize> PathRows<'_, D> {
 }
 
 /// The inputs of a batch of collision queries on paths: pair `i` is path `i` of `a` (or its
-/// only path) against path `i` of `b` (or its only path), at contact distance `radius`, with
-/// horizon `t_max` (`∞` for none).
+/// only path) against path `i` of `b` (or its only path), at contact distance `contact_distance`,
+/// with horizon `t_max` (`∞` for none).
 #[derive(Clone, Copy, Debug)]
 pub struct PathPairs<'a, const D: usize> {
     /// The A paths (1 or `N`).
@@ -91,7 +91,7 @@ pub struct PathPairs<'a, const D: usize> {
     /// The B paths (1 or `N`).
     pub b: PathRows<'a, D>,
     /// Contact distance (sum of the two radii, > 0).
-    pub radius: PerPair<'a>,
+    pub contact_distance: PerPair<'a>,
     /// Horizon: a collision at `t ≥ t_max` is reported as none.
     pub t_max: PerPair<'a>,
 }
@@ -121,7 +121,7 @@ const NAMES: [Names; 2] = [
 /// The first invalid pair's error (lowest index), naming the argument and, for a path's
 /// values, the pair and the segment (``start_b[7, 2]: starts must not decrease, got 1 after
 /// 2``); a side's paths must number 1 or `out.len()`, and its rows `N·K` in every slice.
-/// Shapes and shared values come first: a radius or horizon shared by all pairs, and a
+/// Shapes and shared values come first: a contact distance or horizon shared by all pairs, and a
 /// broadcast path (reported at pair 0, even in an empty batch). On error, `out` holds
 /// unspecified values.
 ///
@@ -132,7 +132,8 @@ const NAMES: [Names; 2] = [
 /// let a = PathRows { start: &[0.0], pos: &[[0.0, 0.0]], vel: &[[1.0, 0.0]], acc: &[[0.0, 0.0]], segments: 1 };
 /// let rest = [[0.0, 0.0]; 2];
 /// let b = PathRows { start: &[0.0, 0.0], pos: &[[2.0, 0.0], [2.0, 5.0]], vel: &rest, acc: &rest, segments: 1 };
-/// let pairs = PathPairs { a, b, radius: PerPair::All(1.0), t_max: PerPair::All(f64::INFINITY) };
+/// let (contact_distance, t_max) = (PerPair::All(1.0), PerPair::All(f64::INFINITY));
+/// let pairs = PathPairs { a, b, contact_distance, t_max };
 /// let mut out = [0.0; 2];
 /// path_collision_times(&pairs, &mut out, Threads::All)?;
 /// assert_eq!(out, [1.0, f64::INFINITY]);
@@ -315,7 +316,7 @@ fn count_settled(bounds: u8, chords: u8, windows: u8) {
 pub(crate) type SharedPaths<const D: usize> = [Option<(Vec<Segment<D>>, PathBounds<D>)>; 2];
 
 /// The checks of [`path_collision_times`] that need no pair: each side's rows, its number of
-/// paths 1 or `n`, `radius` and `t_max` of length `n` if per pair, shared values valid (a
+/// paths 1 or `n`, `contact_distance` and `t_max` of length `n` if per pair, shared values valid (a
 /// broadcast path among them). The
 /// Python binding runs them before it looks at a caller's `out` array.
 pub(crate) fn check_path_pairs<const D: usize>(
@@ -324,9 +325,11 @@ pub(crate) fn check_path_pairs<const D: usize>(
 ) -> Result<SharedPaths<D>, InputError> {
     check_side(&pairs.a, &NAMES[0], n)?;
     check_side(&pairs.b, &NAMES[1], n)?;
-    pairs.radius.check_len("radius", n)?;
+    pairs.contact_distance.check_len("contact_distance", n)?;
     pairs.t_max.check_len("t_max", n)?;
-    pairs.radius.check_shared("radius", check_radius)?;
+    pairs
+        .contact_distance
+        .check_shared("contact_distance", check_contact_distance)?;
     pairs.t_max.check_shared("t_max", check_horizon)?;
     // A broadcast path is a shared value: checked here, even in an empty batch.
     let bounded = |path: Option<Vec<Segment<D>>>| {
@@ -479,7 +482,8 @@ fn pair_time<const D: usize, const K: usize>(
         Some((path, bounds)) => (path.as_slice(), bounds),
         None => buffer_b.read::<K>(&pairs.b, i, &NAMES[1])?,
     };
-    let radius = check_radius("radius", pairs.radius.get(i)).map_err(|e| e.at(i))?;
+    let radius = check_contact_distance("contact_distance", pairs.contact_distance.get(i))
+        .map_err(|e| e.at(i))?;
     let t_max = check_horizon("t_max", pairs.t_max.get(i)).map_err(|e| e.at(i))?;
     let contact = first_bounded_contact(a, b, [radius, 0.0], t_max, prior);
     Ok(contact.unwrap_or(f64::INFINITY))
@@ -585,7 +589,7 @@ mod tests {
                 acc: &acc_b,
                 segments: K,
             },
-            radius: PerPair::All(0.3),
+            contact_distance: PerPair::All(0.3),
             t_max: PerPair::All(f64::INFINITY),
         };
         let shared = check_path_pairs(&pairs, n).expect("valid");
@@ -681,7 +685,7 @@ mod tests {
             let pairs = |a, b| PathPairs {
                 a,
                 b,
-                radius: PerPair::All(0.3),
+                contact_distance: PerPair::All(0.3),
                 t_max: PerPair::All(f64::INFINITY),
             };
             let run = |pairs: &PathPairs<'_, 2>| {

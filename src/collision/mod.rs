@@ -106,7 +106,7 @@ pub(crate) mod window_box;
 pub(crate) mod window_chord;
 
 use crate::coefficients::{Gap, gap_value_of};
-use crate::error::{InputError, check_horizon, check_radius};
+use crate::error::{InputError, check_contact_distance, check_horizon};
 use crate::motion::Ball;
 use crate::poly::scaling::{exponent, pow2};
 use after_stop::after_first_stop;
@@ -144,11 +144,11 @@ impl Default for CollisionOptions {
     }
 }
 
-/// The time at which `a` and `b` first touch (their centres `radius` apart, `radius` being
-/// the sum of their radii), or `None` if they never do.
+/// The time at which `a` and `b` first touch (their centres `contact_distance` apart, the sum
+/// of their radii), or `None` if they never do.
 ///
 /// # Errors
-/// `radius` must be finite and positive.
+/// `contact_distance` must be finite and positive.
 ///
 /// ```
 /// use ballcollide::{Ball, collision_time};
@@ -166,8 +166,12 @@ impl Default for CollisionOptions {
 /// assert_eq!(collision_time(&cue, &aside, 0.05715)?, None);
 /// # Ok::<(), ballcollide::InputError>(())
 /// ```
-pub fn collision_time(a: &Ball, b: &Ball, radius: f64) -> Result<Option<f64>, InputError> {
-    collision_time_with(a, b, radius, &CollisionOptions::default())
+pub fn collision_time(
+    a: &Ball,
+    b: &Ball,
+    contact_distance: f64,
+) -> Result<Option<f64>, InputError> {
+    collision_time_with(a, b, contact_distance, &CollisionOptions::default())
 }
 
 /// [`collision_time`] with options, such as a horizon `t_max`.
@@ -190,10 +194,10 @@ pub fn collision_time(a: &Ball, b: &Ball, radius: f64) -> Result<Option<f64>, In
 pub fn collision_time_with(
     a: &Ball,
     b: &Ball,
-    radius: f64,
+    contact_distance: f64,
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
-    let radius = check_radius("radius", radius)?;
+    let radius = check_contact_distance("contact_distance", contact_distance)?;
     let t_max = check_horizon("t_max", options.t_max)?;
     Ok(first_contact_screened(a, b, [radius, 0.0], t_max))
 }

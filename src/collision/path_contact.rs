@@ -23,12 +23,12 @@ use super::{
     bounded_length, search_window,
 };
 use crate::coefficients::Gap;
-use crate::error::{InputError, check_horizon, check_radius};
+use crate::error::{InputError, check_contact_distance, check_horizon};
 use crate::path::{Path, Segment};
 use nalgebra::SVector;
 
 /// The first time (absolute, as the paths' starts are) at which balls on paths `a` and `b`
-/// are `radius` apart and starting to interpenetrate, searched from the later of the two
+/// are `contact_distance` apart and starting to interpenetrate, searched from the later of the two
 /// first starts; `None` if they never are before `options.t_max`.
 ///
 /// Touching or overlapping at that first time is a contact only if the balls approach (the
@@ -36,7 +36,7 @@ use nalgebra::SVector;
 /// later segment start collides at that start; exact tangency is no contact.
 ///
 /// # Errors
-/// `radius` must be finite and positive, `t_max ≥ 0` (`∞` allowed).
+/// `contact_distance` must be finite and positive, `t_max ≥ 0` (`∞` allowed).
 ///
 /// ```
 /// use ballcollide::path::{Path2, Segment2};
@@ -58,10 +58,10 @@ use nalgebra::SVector;
 pub fn path_collision_time<const D: usize>(
     a: &Path<D>,
     b: &Path<D>,
-    radius: f64,
+    contact_distance: f64,
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
-    single_query::<D, true>(a, b, radius, options)
+    single_query::<D, true>(a, b, contact_distance, options)
 }
 
 /// A single query: its radius and horizon checked, then the search, with the screens that
@@ -72,7 +72,7 @@ fn single_query<const D: usize, const SCREENS: bool>(
     radius: f64,
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
-    let radius = check_radius("radius", radius)?;
+    let radius = check_contact_distance("contact_distance", radius)?;
     let t_max = check_horizon("t_max", options.t_max)?;
     let (a, b) = (a.segments(), b.segments());
     let bounds = (PathBounds::of(a), PathBounds::of(b));
@@ -142,10 +142,10 @@ impl<const D: usize, const S: usize> crate::simd::Kernel for BoundedContact<'_, 
 pub fn path_collision_time_unscreened<const D: usize>(
     a: &Path<D>,
     b: &Path<D>,
-    radius: f64,
+    contact_distance: f64,
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
-    single_query::<D, false>(a, b, radius, options)
+    single_query::<D, false>(a, b, contact_distance, options)
 }
 
 /// [`first_path_contact`] with each path's bounds given (a batch computes a broadcast path's

@@ -185,7 +185,8 @@ pub(super) fn broadcast<'a>(p: PerPair<'a>, n: usize) -> PerPair<'a> {
 
 /// The first contact time of each of N pairs of paths (absolute; ``inf`` where none).
 ///
-/// Pair ``i`` is path ``i`` of A against path ``i`` of B at contact distance ``radius``.
+/// Pair ``i`` is path ``i`` of A against path ``i`` of B at contact distance
+/// ``contact_distance``.
 /// A path is a list of segments ``(s_k, p_k, v_k, a_k)`` with non-decreasing absolute
 /// starts; on ``[s_k, s_{k+1})`` the centre is ``p_k + v_k·(t − s_k) + ½·a_k·(t − s_k)²``,
 /// and the last segment lasts for ever. The search starts at the later of the two first
@@ -202,14 +203,16 @@ pub(super) fn broadcast<'a>(p: PerPair<'a>, n: usize) -> PerPair<'a> {
 /// pos_a, vel_a, acc_a, pos_b, vel_b, acc_b
 ///     Shape ``(N, K, D)``, ``D`` = 2 or 3 (the same for both sides): each segment's
 ///     centre and velocity at its start, and its constant acceleration.
-/// radius, t_max
-///     Numbers or shape ``(N,)``: contact distances (``> 0``) and horizons (``≥ 0``,
-///     ``inf`` for none; a contact at ``t ≥ t_max`` is none).
+/// contact_distance, t_max
+///     Numbers or shape ``(N,)``: contact distances (sums of the radii, ``> 0``) and
+///     horizons (``≥ 0``, ``inf`` for none; a contact at ``t ≥ t_max`` is none).
+///     ``radius=`` is ``contact_distance``'s former name, deprecated.
 /// num_threads, out, progress
 ///     As in :func:`collision_times` (``progress`` counts pairs).
 ///
-/// A leading dimension of 1 broadcasts against ``N`` (on either side, and for ``radius``
-/// and ``t_max``): one path of A against N paths of B is "ball ``i`` against all others".
+/// A leading dimension of 1 broadcasts against ``N`` (on either side, and for
+/// ``contact_distance`` and ``t_max``): one path of A against N paths of B is "ball ``i``
+/// against all others".
 /// Inputs are read as in :func:`collision_times` (lists, any real dtype, any layout).
 ///
 /// Returns
@@ -221,8 +224,8 @@ pub(super) fn broadcast<'a>(p: PerPair<'a>, n: usize) -> PerPair<'a> {
 /// ------
 /// InputError
 ///     A ``ValueError``: a NaN or infinite value in a used segment, starts that decrease, a
-///     first start of ``+inf``, ``K = 0``, ``radius ≤ 0``, a negative ``t_max``, a wrong
-///     shape or dimension, ``N`` other than 1 or the batch's; the message names the
+///     first start of ``+inf``, ``K = 0``, ``contact_distance ≤ 0``, a negative ``t_max``,
+///     a wrong shape or dimension, ``N`` other than 1 or the batch's; the message names the
 ///     argument, the pair and the segment, e.g. ``start_b[7, 2]: starts must not decrease,
 ///     got 1 after 2`` (``.argument``, ``.index`` (the pair), ``.segment``, ``.reason``).
 ///     ``out`` as in :func:`collision_times`.
@@ -248,11 +251,13 @@ pub(super) fn broadcast<'a>(p: PerPair<'a>, n: usize) -> PerPair<'a> {
 #[pyfunction]
 #[pyo3(
     signature = (
-        start_a, pos_a, vel_a, acc_a, start_b, pos_b, vel_b, acc_b, radius,
-        *, t_max=Given(None), num_threads=None, out=None, progress=None
+        start_a, pos_a, vel_a, acc_a, start_b, pos_b, vel_b, acc_b,
+        contact_distance=Given(None), *, t_max=Given(None), num_threads=None, out=None,
+        progress=None, radius=Given(None)
     ),
-    text_signature = "(start_a, pos_a, vel_a, acc_a, start_b, pos_b, vel_b, acc_b, radius, *, \
-                      t_max=1e999, num_threads=None, out=None, progress=None)"
+    text_signature = "(start_a, pos_a, vel_a, acc_a, start_b, pos_b, vel_b, acc_b, \
+                      contact_distance, *, t_max=1e999, num_threads=None, out=None, \
+                      progress=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub(super) fn path_collision_times<'py>(
@@ -265,12 +270,14 @@ pub(super) fn path_collision_times<'py>(
     pos_b: &Bound<'py, PyAny>,
     vel_b: &Bound<'py, PyAny>,
     acc_b: &Bound<'py, PyAny>,
-    radius: &Bound<'py, PyAny>,
+    contact_distance: Given<'py>,
     t_max: Given<'py>,
     num_threads: Option<&Bound<'py, PyAny>>,
     out: Option<&Bound<'py, PyAny>>,
     progress: Option<&Bound<'py, PyAny>>,
+    radius: Given<'py>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let contact_distance = read::contact_distance(py, contact_distance, radius)?;
     let a = side(
         py,
         NAMES_A,
@@ -285,20 +292,20 @@ pub(super) fn path_collision_times<'py>(
         Layout::Batch,
         Some(a.dim),
     )?;
-    let radius = param("radius", radius)?;
+    let contact_distance = param("contact_distance", &contact_distance)?;
     let t_max = t_max.param_or("t_max", f64::INFINITY)?;
     let threads = threads(num_threads)?;
     let lengths = [
         Some(a.paths),
         Some(b.paths),
-        param_len(&radius),
+        param_len(&contact_distance),
         param_len(&t_max),
     ];
     let n = broadcast_len(lengths.into_iter().flatten());
-    let per_pair = [radius.per_pair(), t_max.per_pair()].map(|p| broadcast(p, n));
+    let per_pair = [contact_distance.per_pair(), t_max.per_pair()].map(|p| broadcast(p, n));
     let mut inputs = Vec::from(a.inputs());
     inputs.extend(b.inputs());
-    inputs.extend([radius.each(), t_max.each()]);
+    inputs.extend([contact_distance.each(), t_max.each()]);
     let expected = "a 1-D float64 array of shape (N,)";
     let call = BatchCall {
         threads,
@@ -328,7 +335,7 @@ struct BatchCall<'a, 'py> {
 fn batch_times<'py, const D: usize>(
     py: Python<'py>,
     [a, b]: [&Side<'_>; 2],
-    [radius, t_max]: [PerPair<'_>; 2],
+    [contact_distance, t_max]: [PerPair<'_>; 2],
     call: BatchCall<'_, 'py>,
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let BatchCall {
@@ -342,7 +349,7 @@ fn batch_times<'py, const D: usize>(
     let pairs = PathPairs::<D> {
         a: a.rows(),
         b: b.rows(),
-        radius,
+        contact_distance,
         t_max,
     };
     // The inputs' own errors first, then `out`'s.
@@ -391,8 +398,9 @@ fn path_tuple<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<[Bound<'py, 
 ///     non-decreasing, padding with ``+inf`` allowed at the end), ``pos``, ``vel``, ``acc``
 ///     of shape ``(K, D)``, ``D`` = 2 or 3 (the same for both); the model and the padding
 ///     are those of :func:`path_collision_times`. A and B may have different ``K``.
-/// radius
-///     The contact distance (``> 0``).
+/// contact_distance
+///     The sum of the two balls' radii (``> 0``). ``radius=`` is its former name,
+///     deprecated.
 /// t_max
 ///     Horizon: a collision at ``t ≥ t_max`` is reported as ``inf``.
 ///
@@ -421,16 +429,20 @@ fn path_tuple<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<[Bound<'py, 
 /// 0.319275
 #[pyfunction]
 #[pyo3(
-    signature = (path_a, path_b, radius, *, t_max=Given(None)),
-    text_signature = "(path_a, path_b, radius, *, t_max=1e999)"
+    signature = (
+        path_a, path_b, contact_distance=Given(None), *, t_max=Given(None), radius=Given(None)
+    ),
+    text_signature = "(path_a, path_b, contact_distance, *, t_max=1e999)"
 )]
 pub(super) fn path_collision_time(
     py: Python<'_>,
     path_a: &Bound<'_, PyAny>,
     path_b: &Bound<'_, PyAny>,
-    radius: &Bound<'_, PyAny>,
+    contact_distance: Given<'_>,
     t_max: Given<'_>,
+    radius: Given<'_>,
 ) -> PyResult<f64> {
+    let contact_distance = read::contact_distance(py, contact_distance, radius)?;
     let [sa, pa, va, aa] = path_tuple("path_a", path_a)?;
     let [sb, pb, vb, ab] = path_tuple("path_b", path_b)?;
     let a = side(py, NAMES_A, [&sa, &pa, &va, &aa], Layout::Single, None)?;
@@ -441,13 +453,13 @@ pub(super) fn path_collision_time(
         Layout::Single,
         Some(a.dim),
     )?;
-    let radius = PerPair::All(read::number("radius", radius)?);
+    let contact_distance = PerPair::All(read::number("contact_distance", &contact_distance)?);
     let t_max = PerPair::All(t_max.number_or("t_max", f64::INFINITY)?);
     let mut out = [0.0];
     let one = Threads::AtMost(NonZeroUsize::MIN);
     let result = match a.dim {
-        2 => single_time::<2>([&a, &b], [radius, t_max], &mut out, one),
-        _ => single_time::<3>([&a, &b], [radius, t_max], &mut out, one),
+        2 => single_time::<2>([&a, &b], [contact_distance, t_max], &mut out, one),
+        _ => single_time::<3>([&a, &b], [contact_distance, t_max], &mut out, one),
     };
     // A single query: the message names the argument and the segment, not a pair.
     result.map_err(|e| {
@@ -461,14 +473,14 @@ pub(super) fn path_collision_time(
 /// [`path_collision_time`] in dimension `D`: the batch of one pair.
 fn single_time<const D: usize>(
     [a, b]: [&Side<'_>; 2],
-    [radius, t_max]: [PerPair<'_>; 2],
+    [contact_distance, t_max]: [PerPair<'_>; 2],
     out: &mut [f64; 1],
     threads: Threads,
 ) -> Result<(), crate::InputError> {
     let pairs = PathPairs::<D> {
         a: a.rows(),
         b: b.rows(),
-        radius,
+        contact_distance,
         t_max,
     };
     batch::path_collision_times(&pairs, out, threads)

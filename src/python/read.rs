@@ -22,7 +22,7 @@ use numpy::npyffi::{self, NPY_TYPES, NpyTypes, PY_ARRAY_API};
 use numpy::{PyArray, PyArrayMethods};
 use numpy::{PyArrayDescr, PyArrayDescrMethods};
 use numpy::{PyReadonlyArray, PyReadwriteArray, PyUntypedArray, PyUntypedArrayMethods};
-use pyo3::exceptions::{PyOverflowError, PyTypeError};
+use pyo3::exceptions::{PyDeprecationWarning, PyOverflowError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyInt, PyList, PyTuple};
 
@@ -645,6 +645,35 @@ pub(super) fn param<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Param<
             let reason = format!("expected a scalar or shape (N,), got shape {shape}");
             Err(input_error(obj.py(), name, None, kind::SHAPE, &reason))
         }
+    }
+}
+
+/// The pair calls' contact distance (the sum of the two radii): `contact_distance`, or the
+/// same value under its former name `radius=`, with a `DeprecationWarning` (in the scene and
+/// calendar calls `radius` is one ball's own radius: one name, one meaning).
+pub(super) fn contact_distance<'py>(
+    py: Python<'py>,
+    contact_distance: Given<'py>,
+    radius: Given<'py>,
+) -> PyResult<Bound<'py, PyAny>> {
+    match (contact_distance.0, radius.0) {
+        (Some(given), None) => Ok(given),
+        (None, Some(given)) => {
+            PyErr::warn(
+                py,
+                &py.get_type::<PyDeprecationWarning>(),
+                c"radius= is deprecated in the pair calls, where it is the contact distance \
+                  (the sum of the two radii): pass contact_distance= instead",
+                1,
+            )?;
+            Ok(given)
+        }
+        (Some(_), Some(_)) => Err(PyTypeError::new_err(
+            "contact_distance: given twice (radius= is its deprecated name)",
+        )),
+        (None, None) => Err(PyTypeError::new_err(
+            "contact_distance: missing (the distance between the centres at contact)",
+        )),
     }
 }
 

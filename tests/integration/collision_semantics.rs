@@ -185,7 +185,7 @@ fn invalid_input_is_an_error_naming_the_argument() {
     let a = ball([0.0, 0.0], [1.0, 0.0], 0.0);
     for radius in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         let err = collision_time(&a, &a, radius).unwrap_err();
-        assert_eq!(err.argument(), "radius");
+        assert_eq!(err.argument(), "contact_distance");
     }
     let err = collision_time_with(&a, &a, 1.0, &CollisionOptions { t_max: -1.0 }).unwrap_err();
     assert_eq!(err.kind(), InputErrorKind::InvalidHorizon(-1.0));

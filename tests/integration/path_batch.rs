@@ -110,7 +110,7 @@ fn check_batch<const D: usize>(seed: u64) {
     let pairs = PathPairs {
         a: a.side(),
         b: b.side(),
-        radius: PerPair::Each(&radii),
+        contact_distance: PerPair::Each(&radii),
         t_max: PerPair::All(f64::INFINITY),
     };
     let mut one = vec![0.0; n];
@@ -183,7 +183,7 @@ fn check_lane_shaped<const D: usize>(seed: u64, k: usize) {
     let pairs = PathPairs {
         a: a.side(),
         b: b.side(),
-        radius: PerPair::Each(&radii),
+        contact_distance: PerPair::Each(&radii),
         t_max: PerPair::All(f64::INFINITY),
     };
     let mut out = vec![0.0; n];
@@ -229,7 +229,7 @@ fn errors_name_the_argument_the_pair_and_the_segment() {
         let pairs = PathPairs {
             a: a.side(),
             b: b.side(),
-            radius: PerPair::All(0.1),
+            contact_distance: PerPair::All(0.1),
             t_max: PerPair::All(f64::INFINITY),
         };
         path_collision_times(&pairs, out, Threads::All)
@@ -257,7 +257,7 @@ fn errors_name_the_argument_the_pair_and_the_segment() {
             start: &b.start[..27],
             ..b.side()
         },
-        radius: PerPair::All(0.1),
+        contact_distance: PerPair::All(0.1),
         t_max: PerPair::All(f64::INFINITY),
     };
     let err = path_collision_times(&short, &mut out, Threads::All).unwrap_err();

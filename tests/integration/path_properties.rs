@@ -637,7 +637,7 @@ fn batch_times<const D: usize>(
     let pairs = PathPairs {
         a: ra.side(),
         b: rb.side(),
-        radius: per_pair(radius),
+        contact_distance: per_pair(radius),
         t_max: per_pair(t_max),
     };
     let mut out = vec![f64::NAN; n];
@@ -1287,7 +1287,7 @@ proptest! {
         radius in prop_oneof![Just(0.0), Just(-0.0), -1e300..0.0f64, non_finite()],
     ) {
         let err = radius_error(radius);
-        prop_assert_eq!((err.argument(), err.index()), ("radius", None));
+        prop_assert_eq!((err.argument(), err.index()), ("contact_distance", None));
         prop_assert!(matches!(
             err.kind(),
             InputErrorKind::NonPositiveRadius(_) | InputErrorKind::NotFinite(_)
@@ -1313,15 +1313,15 @@ proptest! {
 fn bad_radii_and_horizons_are_named_in_the_message() {
     assert_eq!(
         radius_error(0.0).to_string(),
-        "radius: radius (sum of the two radii) must be > 0, got 0"
+        "contact_distance: the contact distance (sum of the two radii) must be > 0, got 0"
     );
     assert_eq!(
         radius_error(f64::NAN).to_string(),
-        "radius: must be finite, got NaN"
+        "contact_distance: must be finite, got NaN"
     );
     assert_eq!(
         radius_error(INF).to_string(),
-        "radius: must be finite, got inf"
+        "contact_distance: must be finite, got inf"
     );
     assert_eq!(
         horizon_error(f64::NAN).to_string(),
@@ -1416,7 +1416,7 @@ impl Batch {
         let pairs = PathPairs {
             a,
             b,
-            radius: PerPair::Each(&self.radius),
+            contact_distance: PerPair::Each(&self.radius),
             t_max: PerPair::Each(&self.t_max),
         };
         let mut out = vec![0.0; n];
@@ -1513,7 +1513,7 @@ proptest! {
         let mut batch = Batch::new(n);
         batch.b.vel[3 * i][0] = f64::NAN;
         batch.radius[j] = -1.0;
-        let radius = format!("radius[{j}]: radius (sum of the two radii) must be > 0, got -1");
+        let radius = format!("contact_distance[{j}]: the contact distance (sum of the two radii) must be > 0, got -1");
         let vel = format!("vel_b[{i}, 0]: must be finite, got NaN");
         let err = batch_error(&batch);
         // Within one pair, either of its errors may be reported.
@@ -1534,9 +1534,9 @@ proptest! {
         let i = i % n;
         let mut batch = Batch::new(n);
         let (bad, expected) = [
-            (0.0, "radius: radius (sum of the two radii) must be > 0, got 0"),
-            (-0.0, "radius: radius (sum of the two radii) must be > 0, got -0"),
-            (f64::NAN, "radius: must be finite, got NaN"),
+            (0.0, "contact_distance: the contact distance (sum of the two radii) must be > 0, got 0"),
+            (-0.0, "contact_distance: the contact distance (sum of the two radii) must be > 0, got -0"),
+            (f64::NAN, "contact_distance: must be finite, got NaN"),
             (f64::NAN, "t_max: must be ≥ 0 (∞ for none), got NaN"),
             (-2.0, "t_max: must be ≥ 0 (∞ for none), got -2"),
         ][which];
@@ -1655,14 +1655,14 @@ fn shape_mismatches_name_the_argument() {
     let pairs = PathPairs {
         a,
         b,
-        radius: PerPair::Each(&batch.radius[..5]),
+        contact_distance: PerPair::Each(&batch.radius[..5]),
         t_max: PerPair::All(INF),
     };
     let mut out = [0.0; 6];
     let err = path_collision_times(&pairs, &mut out, Threads::All).expect_err("5 radii");
-    assert_eq!(err.to_string(), "radius: has 5 rows, expected 6");
+    assert_eq!(err.to_string(), "contact_distance: has 5 rows, expected 6");
     let pairs = PathPairs {
-        radius: PerPair::All(0.1),
+        contact_distance: PerPair::All(0.1),
         t_max: PerPair::Each(&batch.t_max[..2]),
         ..pairs
     };
@@ -1670,17 +1670,17 @@ fn shape_mismatches_name_the_argument() {
     assert_eq!(err.to_string(), "t_max: has 2 rows, expected 6");
     // A shared radius or horizon that is bad has no index.
     let pairs = PathPairs {
-        radius: PerPair::All(-0.5),
+        contact_distance: PerPair::All(-0.5),
         t_max: PerPair::All(INF),
         ..pairs
     };
     let err = path_collision_times(&pairs, &mut out, Threads::All).expect_err("a bad radius");
     assert_eq!(
         err.to_string(),
-        "radius: radius (sum of the two radii) must be > 0, got -0.5"
+        "contact_distance: the contact distance (sum of the two radii) must be > 0, got -0.5"
     );
     let pairs = PathPairs {
-        radius: PerPair::All(0.5),
+        contact_distance: PerPair::All(0.5),
         t_max: PerPair::All(f64::NAN),
         ..pairs
     };
@@ -1751,7 +1751,7 @@ proptest! {
         let pairs = PathPairs {
             a: a.side(),
             b: b.side(),
-            radius: PerPair::All(radius),
+            contact_distance: PerPair::All(radius),
             t_max: PerPair::All(t_max),
         };
         let mut out = vec![f64::NAN; n];

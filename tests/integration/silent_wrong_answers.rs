@@ -31,7 +31,7 @@ fn a_friction_of_minus_zero_is_no_friction() {
         pos_b: &[[3.0, 0.0], [3.0, 0.0]],
         vel_b: &[[-1.0, 0.0], [-1.0, 0.0]],
         friction_b: PerPair::Each(&[0.0, -0.0]),
-        radius: PerPair::All(1.0),
+        contact_distance: PerPair::All(1.0),
         t_max: PerPair::All(f64::INFINITY),
     };
     collision_times(&pairs, &mut out, Threads::All).unwrap();

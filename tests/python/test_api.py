@@ -15,7 +15,7 @@ import ballcollide as bc
 from ballcollide import _core
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "collision_cases.txt"
-ARGS = ("pos_a", "vel_a", "friction_a", "pos_b", "vel_b", "friction_b", "radius")
+ARGS = ("pos_a", "vel_a", "friction_a", "pos_b", "vel_b", "friction_b", "contact_distance")
 
 
 def random_batch(n: int, seed: int = 0) -> dict:
@@ -36,7 +36,7 @@ def random_batch(n: int, seed: int = 0) -> dict:
         "pos_b": pos_b,
         "vel_b": vel_b,
         "friction_b": friction_b,
-        "radius": 0.05715,
+        "contact_distance": 0.05715,
     }
 
 
@@ -181,7 +181,7 @@ def test_broadcasting_scalars_and_per_pair_values() -> None:
         {"friction_b": np.float64(0.2)},
         {"friction_b": np.array(0.2)},  # 0-d
         {"friction_b": [0.2] * n},
-        {"radius": np.full(n, 0.05715)},
+        {"contact_distance": np.full(n, 0.05715)},
         {"t_max": np.full(n, 1.5)},
     ]
     for change in variants:
@@ -189,8 +189,10 @@ def test_broadcasting_scalars_and_per_pair_values() -> None:
         np.testing.assert_array_equal(bits(bc.collision_times(**kwargs)), bits(ref))
     # Per-pair values are used per pair.
     radius = np.where(np.arange(n) % 2 == 0, 0.05715, 0.2)
-    mixed = bc.collision_times(**{**batch, "friction_b": 0.2, "radius": radius}, t_max=1.5)
-    wide = bc.collision_times(**{**batch, "friction_b": 0.2, "radius": 0.2}, t_max=1.5)
+    mixed = bc.collision_times(
+        **{**batch, "friction_b": 0.2, "contact_distance": radius}, t_max=1.5
+    )
+    wide = bc.collision_times(**{**batch, "friction_b": 0.2, "contact_distance": 0.2}, t_max=1.5)
     np.testing.assert_array_equal(mixed[0::2], ref[0::2])
     np.testing.assert_array_equal(mixed[1::2], wide[1::2])
 
@@ -198,7 +200,11 @@ def test_broadcasting_scalars_and_per_pair_values() -> None:
 def test_layouts_and_dtypes_give_the_same_answers() -> None:
     # Values exactly representable in float32, so that every dtype holds the same numbers.
     batch = {
-        k: (np.asarray(v, dtype=np.float32).astype(np.float64) if k != "radius" else 0.0625)
+        k: (
+            np.asarray(v, dtype=np.float32).astype(np.float64)
+            if k != "contact_distance"
+            else 0.0625
+        )
         for k, v in random_batch(4000, seed=7).items()
     }
     ref = bc.collision_times(**batch)
@@ -247,7 +253,7 @@ def test_scalar_call_matches_batch_on_random_pairs() -> None:
     batch = random_batch(500, seed=11)
     t = bc.collision_times(**batch)
     for i in range(len(t)):
-        one = bc.collision_time(*(batch[k][i] for k in ARGS[:-1]), batch["radius"])
+        one = bc.collision_time(*(batch[k][i] for k in ARGS[:-1]), batch["contact_distance"])
         assert bits(np.array([one]))[0] == bits(t)[i]
 
 
@@ -261,7 +267,7 @@ def test_contact_distance_at_collision_time() -> None:
     distance = np.hypot(*(a - b).T)
     # The answer is the exact contact time to the floor of its conditioning: the distance
     # then equals the radius closely for all but near-grazing contacts.
-    close = np.abs(distance - batch["radius"]) <= 1e-9 * batch["radius"]
+    close = np.abs(distance - batch["contact_distance"]) <= 1e-9 * batch["contact_distance"]
     assert close.mean() > 0.99
 
 
@@ -348,7 +354,7 @@ def valid(n: int = 4) -> dict:
         "pos_b": np.full((n, 2), 3.0),
         "vel_b": np.zeros((n, 2)),
         "friction_b": np.full(n, 0.1),
-        "radius": np.full(n, 0.5),
+        "contact_distance": np.full(n, 0.5),
         "t_max": np.full(n, np.inf),
     }
 
@@ -366,7 +372,7 @@ def test_non_finite_rows(name: str, bad: float) -> None:
     raises(ValueError, f"{name}[2]: must be finite", **kwargs)
 
 
-@pytest.mark.parametrize("name", ["friction_a", "friction_b", "radius"])
+@pytest.mark.parametrize("name", ["friction_a", "friction_b", "contact_distance"])
 @pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
 def test_non_finite_values(name: str, bad: float) -> None:
     kwargs = valid()
@@ -381,10 +387,18 @@ def test_bad_values_name_argument_and_index() -> None:
     kwargs["friction_b"][3] = -0.5
     raises(ValueError, "friction_b[3]: friction must be ≥ 0, got -0.5", **kwargs)
     kwargs = valid()
-    kwargs["radius"][2] = 0.0
-    raises(ValueError, "radius[2]: radius (sum of the two radii) must be > 0, got 0", **kwargs)
-    kwargs["radius"] = -1.0
-    raises(ValueError, "radius: radius (sum of the two radii) must be > 0, got -1", **kwargs)
+    kwargs["contact_distance"][2] = 0.0
+    raises(
+        ValueError,
+        "contact_distance[2]: the contact distance (sum of the two radii) must be > 0, got 0",
+        **kwargs,
+    )
+    kwargs["contact_distance"] = -1.0
+    raises(
+        ValueError,
+        "contact_distance: the contact distance (sum of the two radii) must be > 0, got -1",
+        **kwargs,
+    )
     for t_max in (-1.0, np.nan):
         kwargs = valid()
         kwargs["t_max"][1] = t_max
@@ -396,7 +410,7 @@ def test_first_bad_index_wins_across_arguments_and_threads() -> None:
     kwargs = valid(n)
     kwargs["pos_a"][7000] = np.nan
     kwargs["friction_b"][5003] = -1.0
-    kwargs["radius"][9000] = 0.0
+    kwargs["contact_distance"][9000] = 0.0
     for threads in (1, 2, None):
         raises(ValueError, "friction_b[5003]:", **kwargs, num_threads=threads)
 
@@ -411,7 +425,7 @@ def test_first_bad_index_wins_across_arguments_and_threads() -> None:
         ("pos_b", np.zeros((3, 2)), "pos_b: has 3 rows, expected 4"),
         ("vel_b", np.zeros((5, 2)), "vel_b: has 5 rows, expected 4"),
         ("friction_a", np.zeros(3), "friction_a: has 3 rows, expected 4"),
-        ("radius", np.ones(5), "radius: has 5 rows, expected 4"),
+        ("contact_distance", np.ones(5), "contact_distance: has 5 rows, expected 4"),
         ("t_max", np.ones(1), "t_max: has 1 rows, expected 4"),
         ("friction_b", np.zeros((4, 1)), "friction_b: expected a scalar or shape (N,)"),
         ("pos_a", [[0, 0], [1]], "pos_a: cannot be read as an array of numbers"),
@@ -461,7 +475,12 @@ def test_scalar_call_errors_name_the_argument_without_index() -> None:
         (0, [np.nan, 0], ValueError, "pos_a: must be finite, got NaN"),
         (4, [0, np.inf], ValueError, "vel_b: must be finite, got inf"),
         (2, -0.5, ValueError, "friction_a: friction must be ≥ 0, got -0.5"),
-        (6, 0.0, ValueError, "radius: radius (sum of the two radii) must be > 0, got 0"),
+        (
+            6,
+            0.0,
+            ValueError,
+            "contact_distance: the contact distance (sum of the two radii) must be > 0, got 0",
+        ),
         (3, [1, 2, 3], ValueError, "pos_b: expected a 2-vector (x, y), got shape (3,)"),
         (5, [0.1, 0.2], ValueError, "friction_b: expected a scalar, got shape (2,)"),
         (1, ["a", "b"], TypeError, "vel_a: expected real numbers"),
@@ -580,8 +599,8 @@ def test_out_errors_name_out() -> None:
     with pytest.raises(ValueError, match=r"^out: the array shares memory with an input"):
         bc.positions_at(pos, pos, 0.1, 1.0, out=pos)
     # An input error still names its argument and index; nothing else is promised of `out`.
-    with pytest.raises(ValueError, match=r"^radius\[2\]: radius"):
-        bc.collision_times(**{**batch, "radius": [0.1, 0.1, -1.0, 0.1]}, out=np.empty(4))
+    with pytest.raises(ValueError, match=r"^contact_distance\[2\]: the contact distance"):
+        bc.collision_times(**{**batch, "contact_distance": [0.1, 0.1, -1.0, 0.1]}, out=np.empty(4))
 
 
 def test_last_kernel_seconds_is_the_kernel_inside_the_call() -> None:
@@ -678,3 +697,55 @@ def test_typed_package() -> None:
     package = Path(bc.__file__).parent
     assert (package / "py.typed").exists()
     assert (package / "_core.pyi").exists()
+
+
+# --- contact_distance and its deprecated name radius= ---------------------------------------
+
+# Each pair call from its keyword arguments but the contact distance: (name, call).
+PAIR_CALLS = {
+    "collision_time": lambda **d: bc.collision_time(
+        [0, 0], [1, 0], 0.0, [1, 0], [0, 0], 0.0, **d, t_max=5.0
+    ),
+    "collision_times": lambda **d: bc.collision_times(
+        [[0, 0]], [[1, 0]], 0.0, [[1, 0]], [[0, 0]], 0.0, **d
+    ),
+    "path_collision_time": lambda **d: bc.path_collision_time(
+        ([0.0], [[0, 0]], [[1, 0]], [[0, 0]]), ([0.0], [[1, 0]], [[0, 0]], [[0, 0]]), **d
+    ),
+    "path_collision_times": lambda **d: bc.path_collision_times(
+        [[0.0]],
+        [[[0, 0]]],
+        [[[1, 0]]],
+        [[[0, 0]]],
+        [[0.0]],
+        [[[1, 0]]],
+        [[[0, 0]]],
+        [[[0, 0]]],
+        **d,
+    ),
+}
+
+
+@pytest.mark.parametrize("name", list(PAIR_CALLS))
+def test_the_old_name_radius_still_works_with_a_deprecation_warning(name: str) -> None:
+    call = PAIR_CALLS[name]
+    now = np.asarray(call(contact_distance=0.5))
+    assert np.array_equal(now, [0.5]) or now.tolist() == 0.5
+    with pytest.warns(DeprecationWarning, match=r"^radius= is deprecated .*contact_distance=") as w:
+        old = np.asarray(call(radius=0.5))
+    assert np.array_equal(old, now)
+    # Reported at the caller's line (this file), where Python's filters show it.
+    assert [Path(r.filename).name for r in w] == [Path(__file__).name]
+    with pytest.raises(TypeError, match=r"^contact_distance: given twice"):
+        call(contact_distance=0.5, radius=0.5)
+    with pytest.raises(TypeError, match=r"^contact_distance: missing"):
+        call()
+    # A value the old name gives is read, and named, as the new one.
+    with pytest.warns(DeprecationWarning), pytest.raises(bc.InputError) as e:
+        call(radius=-1.0)
+    assert (e.value.argument, e.value.kind) == ("contact_distance", "non_positive_radius")
+
+
+def test_the_scene_calls_keep_radius_as_each_balls_own() -> None:
+    t, i, j = bc.earliest_collision([[0, 0], [2, 0]], [[1, 0], [0, 0]], 0.0, radius=0.5)
+    assert (t, i, j) == (1.0, 0, 1)  # centres 1 apart, the sum of the two radii

@@ -74,7 +74,7 @@ PAIR = {
     "pos_b": [[1.0, 0.0]] * 3,
     "vel_b": [[0.0, 0.0]] * 3,
     "friction_b": 0.0,
-    "radius": 0.5,
+    "contact_distance": 0.5,
 }
 SCENE = {
     "pos": [[0.0, 0.0], [2.0, 0.0]],
@@ -85,7 +85,7 @@ SCENE = {
 PATHS_AB = {
     **{f"{k}_a": v for k, v in ONE_PATH.items()},
     **{f"{k}_b": [[0.0]] if k == "start" else [[[2.0, 0.0]]] for k in ONE_PATH},
-    "radius": 0.5,
+    "contact_distance": 0.5,
 }
 BOX = ([-4.0, -4.0], [4.0, 4.0])
 # The objects of the calendar and simulate (2-D): as OBJECTS, clear of SCENE's balls and
@@ -121,7 +121,7 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
         | {"t_max": math.inf},
         {
             **dict.fromkeys(["pos_a", "vel_a", "pos_b", "vel_b"], NOTHING),
-            **dict.fromkeys(["friction_a", "friction_b", "radius", "t_max"], NUMBER),
+            **dict.fromkeys(["friction_a", "friction_b", "contact_distance", "t_max"], NUMBER),
         },
     ),
     "collision_times": (
@@ -129,7 +129,7 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
         PAIR | {"t_max": math.inf, "num_threads": None, "out": None, "progress": None},
         {
             **dict.fromkeys(["pos_a", "vel_a", "pos_b", "vel_b"], NOTHING),
-            **dict.fromkeys(["friction_a", "friction_b", "radius", "t_max"], NUMBER),
+            **dict.fromkeys(["friction_a", "friction_b", "contact_distance", "t_max"], NUMBER),
             "num_threads": THREADS,
             "out": OPTIONAL,
             "progress": FLAG,
@@ -158,8 +158,8 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
         bc.path_collision_times,
         PATHS_AB | {"t_max": math.inf, "num_threads": None, "out": None, "progress": None},
         {
-            **{name: NOTHING for name in PATHS_AB if name != "radius"},
-            "radius": NUMBER,
+            **{name: NOTHING for name in PATHS_AB if name != "contact_distance"},
+            "contact_distance": NUMBER,
             "t_max": NUMBER,
             "num_threads": THREADS,
             "out": OPTIONAL,
@@ -171,10 +171,10 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
         {
             "path_a": ([0.0], [[0.0, 0.0]], [[1.0, 0.0]], [[0.0, 0.0]]),
             "path_b": ([0.0], [[2.0, 0.0]], [[0.0, 0.0]], [[0.0, 0.0]]),
-            "radius": 0.5,
+            "contact_distance": 0.5,
             "t_max": math.inf,
         },
-        {"path_a": NOTHING, "path_b": NOTHING, "radius": NUMBER, "t_max": NUMBER},
+        {"path_a": NOTHING, "path_b": NOTHING, "contact_distance": NUMBER, "t_max": NUMBER},
     ),
     "path_positions_at": (
         bc.path_positions_at,
@@ -705,7 +705,8 @@ def test_a_ball_radius_is_not_a_sum_of_two() -> None:
             call()
         assert str(raised.value) == "radius[1]: a ball's radius must be > 0, got -1"
     # A contact distance still is one.
-    with pytest.raises(bc.InputError, match=r"^radius: radius \(sum of the two radii\) must be"):
+    contact = r"^contact_distance: the contact distance \(sum of the two radii\) must be"
+    with pytest.raises(bc.InputError, match=contact):
         bc.collision_time([0, 0], [1, 0], 0, [1, 0], [0, 0], 0, -1.0)
 
 

@@ -20,7 +20,7 @@ da = pytest.importorskip("dask.array", reason="dask is not installed (ballcollid
 dask = pytest.importorskip("dask")
 import ballcollide.dask as bcd  # noqa: E402  (only once dask is known to be there)
 
-NAMES = ("pos_a", "vel_a", "friction_a", "pos_b", "vel_b", "friction_b", "radius")
+NAMES = ("pos_a", "vel_a", "friction_a", "pos_b", "vel_b", "friction_b", "contact_distance")
 ROWS = ("pos_a", "vel_a", "pos_b", "vel_b")
 N = 501  # pairs; prime, so that no chunk size divides it
 
@@ -43,7 +43,7 @@ def scene(n: int = N, seed: int = 7) -> dict[str, Any]:
         "pos_b": pos_b,
         "vel_b": vel_b,
         "friction_b": 0.2,
-        "radius": rng.uniform(0.05, 0.6, n),
+        "contact_distance": rng.uniform(0.05, 0.6, n),
     }
 
 
@@ -151,7 +151,7 @@ def test_arguments_chunked_differently(pairs: dict, expected: np.ndarray) -> Non
     d = as_dask(pairs, 100)
     d["vel_a"] = da.from_array(pairs["vel_a"], chunks=(37, 1))  # columns split too
     d["friction_a"] = da.from_array(pairs["friction_a"], chunks=250)
-    d["radius"] = da.from_array(pairs["radius"], chunks=((0, 501),))
+    d["contact_distance"] = da.from_array(pairs["contact_distance"], chunks=((0, 501),))
     d["pos_b"] = da.from_array(pairs["pos_b"], chunks=(501, 1))
     t = bcd.collision_times(**d)
     assert t.chunks == ((100, 100, 100, 100, 100, 1),)  # pos_a's, the first Dask argument
@@ -190,10 +190,10 @@ def test_scalar_and_per_pair_parameters(pairs: dict) -> None:
     per_pair = {
         "friction_a": rng.uniform(0.0, 0.5, n),
         "friction_b": rng.uniform(0.0, 0.5, n),
-        "radius": rng.uniform(0.05, 0.6, n),
+        "contact_distance": rng.uniform(0.05, 0.6, n),
         "t_max": rng.choice([0.0, 0.3, 1.0, np.inf], n),
     }
-    scalar = {"friction_a": 0.3, "friction_b": 0.0, "radius": 0.25, "t_max": 0.8}
+    scalar = {"friction_a": 0.3, "friction_b": 0.0, "contact_distance": 0.25, "t_max": 0.8}
     for name in per_pair:
         for value in (scalar[name], per_pair[name]):
             args = {**pairs, name: value}
@@ -210,7 +210,7 @@ def test_scalar_and_per_pair_parameters(pairs: dict) -> None:
 
 def test_integer_inputs(pairs: dict) -> None:
     ints = {name: np.round(x * 10).astype(np.int32) for name, x in pairs.items()}
-    ints["radius"] = 3
+    ints["contact_distance"] = 3
     want = bc.collision_times(**ints)
     assert_bitwise(bcd.collision_times(**as_dask(ints, 40)).compute(), want)
 
@@ -258,7 +258,12 @@ BAD_VALUES = [
     ("friction_a", (), -0.1, r"friction must be ≥ 0, got -0.1"),
     ("pos_b", (1,), -np.inf, r"must be finite, got -inf"),
     ("vel_b", (1,), np.nan, r"must be finite, got NaN"),
-    ("radius", (), 0.0, r"radius \(sum of the two radii\) must be > 0, got 0"),
+    (
+        "contact_distance",
+        (),
+        0.0,
+        r"the contact distance \(sum of the two radii\) must be > 0, got 0",
+    ),
     ("t_max", (), -1.0, r"must be ≥ 0 \(∞ for none\)"),
 ]
 
@@ -286,8 +291,11 @@ def test_bad_value_names_its_global_index(
 
 def test_bad_scalars_fail_at_once(pairs: dict) -> None:
     d = as_dask(pairs, 100)
-    with pytest.raises(ValueError, match=r"^radius: radius \(sum of the two radii\) must be > 0"):
-        bcd.collision_times(**{**d, "radius": -1.0})
+    with pytest.raises(
+        ValueError,
+        match=r"^contact_distance: the contact distance \(sum of the two radii\) must be > 0",
+    ):
+        bcd.collision_times(**{**d, "contact_distance": -1.0})
     with pytest.raises(ValueError, match=r"^friction_b: friction must be ≥ 0, got -2"):
         bcd.collision_times(**{**d, "friction_b": np.float32(-2.0)})
     with pytest.raises(ValueError, match=r"^t_max: must be ≥ 0"):
@@ -295,8 +303,11 @@ def test_bad_scalars_fail_at_once(pairs: dict) -> None:
     with pytest.raises(ValueError, match=r"^friction_a: must be finite"):
         bcd.collision_times(**{**d, "friction_a": np.inf})
     # A 0-d Dask scalar is only known when computed: named without an index.
-    t = bcd.collision_times(**{**d, "radius": da.from_array(np.array(-1.0))})
-    with pytest.raises(ValueError, match=r"^radius: radius \(sum of the two radii\) must be > 0"):
+    t = bcd.collision_times(**{**d, "contact_distance": da.from_array(np.array(-1.0))})
+    with pytest.raises(
+        ValueError,
+        match=r"^contact_distance: the contact distance \(sum of the two radii\) must be > 0",
+    ):
         t.compute()
 
 
@@ -308,10 +319,14 @@ def test_shape_errors_are_eager(pairs: dict) -> None:
         ("pos_b", np.zeros((N, 2, 1)), r"^pos_b: expected shape \(N, 2\)"),
         ("vel_b", 1.0, r"^vel_b: expected shape \(N, 2\), got \(\)"),
         ("friction_a", da.zeros((N, 1)), r"^friction_a: expected a scalar or shape \(N,\)"),
-        ("radius", np.ones((N, 2)), r"^radius: expected a scalar or shape \(N,\)"),
+        (
+            "contact_distance",
+            np.ones((N, 2)),
+            r"^contact_distance: expected a scalar or shape \(N,\)",
+        ),
         ("vel_a", da.zeros((N - 1, 2)), r"^vel_a: has 500 rows, expected 501"),
         ("friction_b", np.zeros(N + 1), r"^friction_b: has 502 rows, expected 501"),
-        ("radius", da.ones(3), r"^radius: has 3 rows, expected 501"),
+        ("contact_distance", da.ones(3), r"^contact_distance: has 3 rows, expected 501"),
         ("pos_a", [[0.0, 0.0], [1.0]], r"^pos_a: cannot be read as an array of numbers"),
     ]
     for name, value, message in cases:
@@ -326,8 +341,10 @@ def test_shape_errors_are_eager(pairs: dict) -> None:
 
 def test_type_errors_are_eager(pairs: dict) -> None:
     d = as_dask(pairs, 100)
-    with pytest.raises(TypeError, match=r"^radius: expected real numbers, got .*complex128"):
-        bcd.collision_times(**{**d, "radius": d["radius"] + 0j})
+    with pytest.raises(
+        TypeError, match=r"^contact_distance: expected real numbers, got .*complex128"
+    ):
+        bcd.collision_times(**{**d, "contact_distance": d["contact_distance"] + 0j})
     with pytest.raises(TypeError, match=r"^pos_b: expected real numbers, got .*bool"):
         bcd.collision_times(**{**d, "pos_b": d["pos_b"] > 0})
     with pytest.raises(TypeError, match=r"^friction_a: expected real numbers"):
@@ -399,3 +416,16 @@ def test_docstring_examples() -> None:
             runner.run(test)
     result = runner.summarize(verbose=False)
     assert result.attempted > 10 and result.failed == 0
+
+
+def test_the_old_name_radius_still_works_with_a_deprecation_warning() -> None:
+    args = (da.zeros((3, 2), chunks=2), np.ones((3, 2)), 0.0, np.ones((3, 2)), np.ones((3, 2)))
+    now = bcd.collision_times(*args, 0.0, contact_distance=0.5).compute()
+    with pytest.warns(DeprecationWarning, match=r"^radius= is deprecated") as w:
+        old = bcd.collision_times(*args, 0.0, radius=0.5)
+    assert [r.filename for r in w] == [__file__]  # the caller's line
+    assert np.array_equal(old.compute(), now)
+    with pytest.raises(TypeError, match=r"^contact_distance: given twice"):
+        bcd.collision_times(*args, 0.0, 0.5, radius=0.5)
+    with pytest.raises(TypeError, match=r"^contact_distance: missing"):
+        bcd.collision_times(*args, 0.0)

@@ -46,7 +46,7 @@ def test_demo_batch_is_realistic_and_reproducible() -> None:
         assert (np.hypot(*batch[f"vel_{ball}"].T) <= demo.MAX_SPEED).all()
         assert ((batch[f"friction_{ball}"] >= 0.09) & (batch[f"friction_{ball}"] <= 0.11)).all()
     assert (np.hypot(*(batch["pos_a"] - batch["pos_b"]).T) > demo.CONTACT).all()
-    assert batch["radius"] == pytest.approx(0.05715)
+    assert batch["contact_distance"] == pytest.approx(0.05715)
     # The horizon is a cushion time: before it, both balls are on the table.
     t = collision_times(**batch)
     assert np.isfinite(t).sum() > 0 and (t[np.isfinite(t)] < batch["t_max"][np.isfinite(t)]).all()

@@ -23,7 +23,7 @@ def batch(n: int = 3) -> dict:
         "pos_b": np.tile([1.0, 0.0], (n, 1)),
         "vel_b": np.zeros((n, 2)),
         "friction_b": 0.0,
-        "radius": 0.5,
+        "contact_distance": 0.5,
     }
 
 
@@ -41,7 +41,7 @@ def test_any_real_number_where_a_number_goes(radius: object) -> None:
     args = list(PAIR)
     args[6] = radius
     assert bc.collision_time(*args) == 0.5
-    assert bc.collision_times(**{**batch(), "radius": radius}).tolist() == [0.5] * 3
+    assert bc.collision_times(**{**batch(), "contact_distance": radius}).tolist() == [0.5] * 3
     # Two balls of that radius, touching and approaching: at once.
     assert bc.earliest_collision([[0, 0], [1, 0]], [[1, 0], [0, 0]], 0, radius) == (0.0, 0, 1)
 
@@ -62,15 +62,16 @@ def test_booleans_are_not_numbers(flag: object) -> None:
     args[2] = flag
     with pytest.raises(TypeError, match=r"^friction_a: expected real numbers, got .*bool"):
         bc.collision_time(*args)
-    with pytest.raises(TypeError, match=r"^radius: expected real numbers, got .*bool"):
-        bc.collision_times(**{**batch(), "radius": flag})
+    with pytest.raises(TypeError, match=r"^contact_distance: expected real numbers, got .*bool"):
+        bc.collision_times(**{**batch(), "contact_distance": flag})
     if np.ndim(flag) == 0 and not isinstance(flag, np.ndarray):
         with pytest.raises(TypeError, match=r"^num_threads: expected None or an int, got bool"):
             bc.collision_times(**batch(), num_threads=flag)
 
 
 def test_a_number_too_large_for_a_float_names_its_argument() -> None:
-    with pytest.raises(bc.InputError, match=r"^radius: must be finite, got .*float64's range"):
+    too_large = r"^contact_distance: must be finite, got .*float64's range"
+    with pytest.raises(bc.InputError, match=too_large):
         bc.collision_time(*PAIR[:6], 10**400)
 
 
@@ -119,8 +120,8 @@ def test_input_errors_carry_their_parts() -> None:
     assert str(err) == "friction_b[12345]: friction must be ≥ 0, got -0.5"
     with pytest.raises(bc.InputError) as e:
         bc.collision_time(*PAIR[:6], -1.0)
-    assert (e.value.argument, e.value.index) == ("radius", None)
-    assert str(e.value) == f"radius: {e.value.reason}"
+    assert (e.value.argument, e.value.index) == ("contact_distance", None)
+    assert str(e.value) == f"contact_distance: {e.value.reason}"
     # Shapes, lengths and out= too.
     cases = [
         ({"pos_b": np.zeros((2, 2))}, "pos_b", "has 2 rows, expected 3"),
@@ -155,8 +156,8 @@ def test_reading_any_layout_of_any_real_dtype() -> None:
 
 @pytest.mark.parametrize("n", [3, 5000])  # on the calling thread; with the GIL released
 def test_out_sharing_memory_with_an_input_is_refused_at_any_size(n: int) -> None:
-    args = {**batch(n), "friction_a": np.zeros(n), "radius": np.full(n, 0.5)}
-    for shared in (args["friction_a"], args["radius"], args["pos_b"].reshape(-1)[:n]):
+    args = {**batch(n), "friction_a": np.zeros(n), "contact_distance": np.full(n, 0.5)}
+    for shared in (args["friction_a"], args["contact_distance"], args["pos_b"].reshape(-1)[:n]):
         with pytest.raises(bc.InputError, match=r"^out: the array shares memory with an input"):
             bc.collision_times(**args, out=shared)
     out = np.empty(n)

@@ -100,7 +100,7 @@ def pairs(n: int, rng: np.random.Generator) -> Arrays:
         "pos_b": rng.integers(0, 40, (n, 2)) / 2,
         "vel_b": rng.integers(-6, 7, (n, 2)) / 2,
         "friction_b": rng.integers(0, 3, n) / 2,
-        "radius": rng.integers(1, 5, n) / 2,
+        "contact_distance": rng.integers(1, 5, n) / 2,
         "t_max": rng.integers(1, 40, n) / 2,
     }
 
@@ -147,7 +147,7 @@ ENTRY_POINTS = {
         lambda n, rng: {
             **paths(n, rng, "_a"),
             **paths(n, rng, "_b"),
-            "radius": rng.integers(1, 5, n) / 2,
+            "contact_distance": rng.integers(1, 5, n) / 2,
             "t_max": rng.integers(1, 40, n) / 2,
         },
         bc.path_collision_times,
@@ -244,7 +244,7 @@ NAN_LAYOUTS = ["F", "column of wider", "every other row", "negative strides", "f
 
 
 @pytest.mark.parametrize("layout", NAN_LAYOUTS)
-@pytest.mark.parametrize("name", ["pos_a", "vel_a", "friction_a", "vel_b", "radius"])
+@pytest.mark.parametrize("name", ["pos_a", "vel_a", "friction_a", "vel_b", "contact_distance"])
 @pytest.mark.parametrize("row", [0, 6, 12])
 def test_a_nan_is_named_at_its_index_in_any_layout(layout: str, name: str, row: int) -> None:
     inputs = pairs(13, np.random.default_rng(2))
@@ -264,7 +264,7 @@ def test_a_nan_is_named_at_its_index_in_any_layout(layout: str, name: str, row: 
 @pytest.mark.parametrize("name", ["start_b", "vel_a", "acc_b"])
 def test_a_nan_in_a_path_is_named_at_its_path_and_segment(layout: str, name: str) -> None:
     rng = np.random.default_rng(3)
-    inputs = {**paths(9, rng, "_a"), **paths(9, rng, "_b"), "radius": np.full(9, 0.5)}
+    inputs = {**paths(9, rng, "_a"), **paths(9, rng, "_b"), "contact_distance": np.full(9, 0.5)}
     x = inputs[name].copy()
     x[5, 2, ...] = np.nan
     inputs[name] = x

@@ -312,7 +312,7 @@ def test_any_values_give_times_or_a_clear_error(
             "pos_b",
             "vel_b",
             "acc_b",
-            "radius",
+            "contact_distance",
         }, str(e)
         return
     assert t.shape == (n,) and not np.isnan(t).any() and (t >= 0).all()

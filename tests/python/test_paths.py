@@ -169,7 +169,7 @@ def rolling_pairs(n: int, seed: int = 0, dim: int = 2) -> dict:
     # B near a point of A's first segment.
     s = rng.uniform(0, 0.3, n)[:, None]
     out["pos_b"][:, 0] = out["pos_a"][:, 0] + out["vel_a"][:, 0] * s + rng.normal(0, 0.1, (n, dim))
-    out["radius"] = 0.05715
+    out["contact_distance"] = 0.05715
     return out
 
 
@@ -179,7 +179,7 @@ def side_args(batch: dict, side: str) -> list:
 
 def call(batch: dict, **kwargs) -> np.ndarray:
     return bc.path_collision_times(
-        *side_args(batch, "a"), *side_args(batch, "b"), batch["radius"], **kwargs
+        *side_args(batch, "a"), *side_args(batch, "b"), batch["contact_distance"], **kwargs
     )
 
 
@@ -384,7 +384,8 @@ def test_the_single_pair_names_the_segment_without_a_pair() -> None:
     assert str(err) == "vel_a[1]: must be finite, got NaN"
     err = error_of(bc.path_collision_time, b, ([1.0, 0.5], *a[1:]), 1.0)
     assert str(err) == "start_b[1]: starts must not decrease, got 0.5 after 1"
-    assert str(error_of(bc.path_collision_time, b, b, 0.0)).startswith("radius: radius")
+    err = error_of(bc.path_collision_time, b, b, 0.0)
+    assert str(err).startswith("contact_distance: the contact distance")
     err = error_of(bc.path_collision_time, b, b, 1.0, t_max=-1)
     assert str(err).startswith("t_max: must be ≥ 0")
     err = error_of(bc.path_collision_time, b, b[:3], 1.0)
@@ -428,11 +429,14 @@ def test_shapes_and_dimensions() -> None:
             },
             "start_a: a path needs at least one segment",
         ),
-        ({"radius": [1.0, 1.0]}, "radius: has 2 rows, expected 4"),
-        ({"radius": -1.0}, "radius: radius (sum of the two radii) must be > 0, got -1"),
+        ({"contact_distance": [1.0, 1.0]}, "contact_distance: has 2 rows, expected 4"),
         (
-            {"radius": [1.0, 1.0, 0.0, 1.0]},
-            "radius[2]: radius (sum of the two radii) must be > 0, got 0",
+            {"contact_distance": -1.0},
+            "contact_distance: the contact distance (sum of the two radii) must be > 0, got -1",
+        ),
+        (
+            {"contact_distance": [1.0, 1.0, 0.0, 1.0]},
+            "contact_distance[2]: the contact distance (sum of the two radii) must be > 0, got 0",
         ),
     ]
     for change, message in cases:

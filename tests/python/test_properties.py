@@ -200,7 +200,7 @@ def fuzz_batches(draw) -> tuple[dict, int]:
         "pos_b": rows(),
         "vel_b": rows(),
         "friction_b": per_pair(True),
-        "radius": per_pair(True),
+        "contact_distance": per_pair(True),
         "t_max": per_pair(True),
     }
     return batch, n
@@ -211,12 +211,12 @@ def _valid(batch: dict, n: int) -> bool:
         a = batch[k]
         if a.shape != (n, 2) or not np.isfinite(a).all():
             return False
-    for k in ("friction_a", "friction_b", "radius", "t_max"):
+    for k in ("friction_a", "friction_b", "contact_distance", "t_max"):
         a = np.asarray(batch[k])
         if a.shape not in ((), (n,)):
             return False
     f = np.concatenate([np.ravel(batch["friction_a"]), np.ravel(batch["friction_b"])])
-    r, t_max = np.ravel(batch["radius"]), np.ravel(batch["t_max"])
+    r, t_max = np.ravel(batch["contact_distance"]), np.ravel(batch["t_max"])
     return bool(
         np.isfinite(f).all()
         and (f >= 0).all()
@@ -278,7 +278,7 @@ def valid_extreme_batches(draw) -> dict:
         "pos_b": rows(),
         "vel_b": rows(),
         "friction_b": per_pair(nonnegative),
-        "radius": per_pair(positive),
+        "contact_distance": per_pair(positive),
         "t_max": per_pair(st.one_of(nonnegative, st.just(math.inf))),
     }
 

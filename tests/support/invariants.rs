@@ -275,7 +275,7 @@ pub fn batch(cases: &[PairCase], shared: Shared) -> Check {
         pos_b: &pos_b,
         vel_b: &vel_b,
         friction_b: param(shared[1], &fb),
-        radius: param(shared[2], &radius),
+        contact_distance: param(shared[2], &radius),
         t_max: param(shared[3], &t_max),
     };
     let mut runs = Vec::new();

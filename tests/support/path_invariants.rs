@@ -147,7 +147,7 @@ fn path_in<const D: usize>(case: &PathCase, k: i32) -> Check {
     let pairs = PathPairs {
         a: rows_a.side(),
         b: rows_b.side(),
-        radius: PerPair::All(radius),
+        contact_distance: PerPair::All(radius),
         t_max: PerPair::All(t_max),
     };
     let mut out = [f64::NAN];
@@ -161,7 +161,7 @@ fn path_in<const D: usize>(case: &PathCase, k: i32) -> Check {
         let pairs = PathPairs {
             a: nine_a.side(),
             b: nine_b.side(),
-            radius: PerPair::All(radius),
+            contact_distance: PerPair::All(radius),
             t_max: PerPair::All(t_max),
         };
         if path_collision_times(&pairs, &mut [f64::NAN; 9], Threads::All).is_ok() {
@@ -274,7 +274,7 @@ fn path_in<const D: usize>(case: &PathCase, k: i32) -> Check {
         let pairs = PathPairs {
             a: side_a,
             b: side_b,
-            radius: PerPair::Each(&radii[..n]),
+            contact_distance: PerPair::Each(&radii[..n]),
             t_max: PerPair::All(t_max),
         };
         for threads in [1, 2] {

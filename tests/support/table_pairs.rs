@@ -34,7 +34,7 @@ impl Set {
             pos_b: &self.pos_b,
             vel_b: &self.vel_b,
             friction_b: PerPair::Each(&self.mu_b),
-            radius: PerPair::All(RADIUS),
+            contact_distance: PerPair::All(RADIUS),
             t_max: PerPair::All(f64::INFINITY),
         }
     }
