@@ -170,8 +170,9 @@ def time_break(repeats: int, mu: float = 0.6) -> dict:
             moved = [friction_state(pos[b], vel[b], mu, e.time - since[b]) for b in idx]
             p = [m[0] for m in moved]
             v = [m[1] for m in moved]
-            if e.j < 0:
-                v[0][e.axis] = -v[0][e.axis]
+            if e.j < 0:  # a wall: index 2·axis (low) or 2·axis + 1 (high)
+                axis = e.index // 2
+                v[0][axis] = -v[0][axis]
             else:
                 n = (p[0] - p[1]) / np.linalg.norm(p[0] - p[1])
                 dv = np.dot(v[0] - v[1], n) * n

@@ -354,6 +354,21 @@ def test_the_first_events_are_python_billiards_ones() -> None:
         assert event_calendar.same_first_events(ours, theirs) == 50
 
 
+def test_the_benchmarks_break_driven_from_python_runs() -> None:
+    # benchmarks/event_calendar.py --break: a simulator's loop over next_event and
+    # update_balls, with walls and balls resolved in Python (it reads the events' fields).
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
+    try:
+        import event_calendar
+    finally:
+        sys.path.pop(0)
+    run = event_calendar.time_break(1)
+    assert run["events"] > 16  # the rack scatters: more events than balls
+
+
 @st.composite
 def tables(draw, dim: int) -> dict[str, object]:
     """A few objects of every kind in the scenes' square ``[0, 2]^dim`` (dyadic numbers:
