@@ -17,66 +17,34 @@
 //! | moving entry | `moving_entry.rs` | both moving, a plain crossing in the first window: the contact by the eighth entry below, cut by the horizon | `collision_time`, scene, batch lanes |
 //! | after stop | `after_stop.rs` | after the first stop, the mover against a ball at rest: closed form | `collision_time`, scene, batch lanes |
 //! | **paths** | | | |
-//! | path bounds | `path_bounds.rs`; lane-wise, `batch/path_lanes.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch; rows of 2 and 3 segments eight pairs at a time on AVX-512 CPUs, the same proof to the bit); not for two paths of one segment each, whose one window goes straight to the window's stages |
+//! | path bounds | `path_bounds.rs`; lane-wise, `batch/path_lanes.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch; rows of 2 and 3 segments eight pairs at a time, lane-wise, at the SIMD levels that run the lane stages, the same proof to the bit); not for two paths of one segment each, whose one window goes straight to the window's stages |
 //! | chord normals | `chord_normals.rs` | on the normal of either path's chord (from where its ball starts to where it rests), the two paths' spans are apart: never a contact | `path_collision_time`, `path_collision_times`, after the path bounds (lane-wise with them in `batch/path_lanes.rs`) |
 //! | segment boxes | `path_bounds.rs` (`segments_apart`) | the boxes of the two segments active on a window (kept with the path bounds) are apart: no contact on the window, and no motion formed | path windows |
 //! | path contact | `path_contact.rs` | the window loop: windows between segment starts of either path, each formed from the two active segments in time since their own starts | `path_collision_time`, `path_collision_times` |
 //! | (counts) | `stage_counts.rs` | how many pairs and windows each path stage settles (cargo feature `stage-counts`) | the benchmarks |
 //! | window box | `window_box.rs` | the box the separation sweeps over one window keeps out of the contact distance | path windows; pieces of long windows |
 //! | window chord | `window_chord.rs` | across the chord of the separation's run over one window, its span keeps out of the contact distance on one side | path windows, after the window box |
-//! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` on AVX-512 CPUs, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
+//! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` at the SIMD levels that run the lane stages, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
 //! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |
 //! | eighth entry | `eighth_entry.rs` | a window whose first open eighth is plain (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`) |
-//! | (first-window lanes) | `batch/first_window_lanes.rs`, `path_contact.rs` (`PathFirstWindow`) | the eighth entry on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window free (the walk starts after it) | `path_collision_times` on AVX-512 CPUs, rows of 2 and 3 segments |
+//! | (first-window lanes) | `batch/first_window_lanes.rs`, `path_contact.rs` (`PathFirstWindow`) | the eighth entry on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window free (the walk starts after it) | `path_collision_times` at the SIMD levels that run the lane stages, rows of 2 and 3 segments |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
 //! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `entry` (for `search_window`), `crossing`, `moving_entry` |
 //! | entry | `entry.rs` | the first + → − sign change on the pieces left: critical points, bracketed Newton | `search_window` |
 //! | narrow dip | `narrow_dip.rs` | a dip whose float samples stay positive, the radius tiny beside the motion (`≤ 2⁻⁴⁰`): a contact if the closest approach, `|d × d′|/|d′|` from the cross product's own coefficients, is within the radius | `entry` (its dips and minima); `eighth_entry` only declines to call such a dip a miss |
 //!
-//! ## Friction balls
+//! The friction balls' batch lanes (`prefilter`, `crossing`, `moving_entry`, lane-wise in
+//! `crate::batch`) run at every SIMD level ([`crate::simd`]: portable, AVX2 with FMA, AVX-512,
+//! NEON). The path lanes (`batch/path_lanes.rs`, `batch/window_lanes.rs`,
+//! `batch/first_window_lanes.rs`) are compiled and tested at every level but run only where the
+//! vectors hold four or more lanes (AVX2 with FMA, AVX-512: `Simd::RUNS_LANE_STAGES`); at the
+//! portable and NEON levels those pairs go one by one, to the same bits.
 //!
-//! The time axis splits at the two stop times into at most three windows; on each, both
-//! motions are polynomial and the gap `g(t) = |x_A(t) − x_B(t)|² − radius²` is a quartic
-//! (see [`Gap`]). The collision is the first `t ≥ 0` where `g` goes from positive to
-//! negative, searched window by window:
-//!
-//! 1. time is scaled by a power of two to the window (exact), so each window is `[0, ≤ 1]`;
-//! 2. a Bernstein-basis subdivision (`exclusion`) proves most of the window contact-free, and
-//!    shows the shape of `g` on the pieces it cannot: on the first piece with a single root,
-//!    the entry is found by bracketed Newton; on a piece with a single minimum, by bracketed
-//!    Newton for the minimum, then for the entry if `g` is negative there;
-//! 3. otherwise the critical points of `g` split the window into monotone pieces, and the
-//!    first piece that goes from positive to negative is solved by bracketed Newton.
-//!
-//! When exactly one ball is at rest the relative motion is a straight line and the gap a
-//! quadratic in the distance covered: a closed form answers instead (`straight`). When both
-//! move, the first window is first tried whole, without a branch (`moving_entry`): where its
-//! first open eighth holds a single root or a single minimum, a fixed number of bracketed
-//! Newton steps settles it; the steps above handle the rest. From the first stop on, one ball
-//! rests and the other runs along a line: the closed form answers there too (`after_stop`).
-//! Batches first screen out, lane-wise, the pairs whose paths stay apart (`prefilter`), then,
-//! among moving pairs whose paths cross, those that are never there at the same time
-//! (`crossing`), then run `moving_entry` lane-wise; single queries run the same proofs first,
-//! so both give the same bits.
-//!
-//! The quartic is never divided by its leading coefficient, so equal or nearly equal friction
-//! vectors (where it vanishes or nearly so) need no special case.
-//!
-//! ## Paths
-//!
-//! A path query first compares the two paths' bounds (`path_bounds`), then, for paths that
-//! end at rest, their spans across each one's chord (`chord_normals`); the pairs left are
-//! searched window by window (`path_contact`): the boxes of the window's two segments, then
-//! its separation box (`window_box`) and its span across its chord (`window_chord`), settle
-//! most windows, and the rest go to the same window search as the friction balls'. Two paths
-//! of one segment each (frictionless balls, say) have one window, for ever: it goes straight
-//! to the window's stages (the straight window's closed form, the separation box and chord,
-//! the search), which settle it as soon as the screens would. A batch holds the pairs its
-//! lanes take and leave until eight are waiting, then settles their first windows at once on
-//! the first open eighth (`batch/first_window_lanes.rs`): the walk then answers only the
-//! pairs that are left, or starts after a first window found free.
+//! The gap `g(t) = |x_A(t) − x_B(t)|² − radius²` (see [`Gap`]) is a quartic on each window;
+//! it is never divided by its leading coefficient, so equal or nearly equal friction vectors
+//! (where it vanishes or nearly so) need no special case.
 //!
 //! ## Semantics (SPEC)
 //! - touching or overlapping at `t = 0` is a collision at `0` only if the balls approach
