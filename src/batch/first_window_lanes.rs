@@ -101,7 +101,7 @@ mod tests {
     use super::*;
     use crate::batch::{PathRows, PerPair};
     use crate::collision::path_bounds::PathBounds;
-    use crate::collision::path_contact::{Prior, first_bounded_contact};
+    use crate::collision::path_contact::{Prior, first_contact_bounded};
     use crate::path::Path2;
     use crate::test_rng::Rng;
     use nalgebra::Vector2;
@@ -192,7 +192,7 @@ mod tests {
                 let (a, b) = (a.segments(), b.segments());
                 let bounds = (PathBounds::<2>::of(a), PathBounds::<2>::of(b));
                 let walk = |prior| {
-                    first_bounded_contact(
+                    first_contact_bounded(
                         (a, &bounds.0),
                         (b, &bounds.1),
                         [radius[i], 0.0],

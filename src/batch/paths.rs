@@ -23,7 +23,7 @@ use super::first_window_lanes::eighth_contacts;
 use super::path_lanes::settled;
 use super::{PerPair, Threads, check_len, run_chunks};
 use crate::collision::path_bounds::PathBounds;
-use crate::collision::path_contact::{Prior, first_bounded_contact};
+use crate::collision::path_contact::{Prior, first_contact_bounded};
 use crate::collision::stage_counts::{Stage, count};
 use crate::error::{InputError, InputErrorKind, check_horizon, check_radius, finite};
 use crate::path::{Names, Segment, locate, segments_from_rows};
@@ -481,7 +481,7 @@ fn pair_time<const D: usize, const K: usize>(
     };
     let radius = check_radius("radius", pairs.radius.get(i)).map_err(|e| e.at(i))?;
     let t_max = check_horizon("t_max", pairs.t_max.get(i)).map_err(|e| e.at(i))?;
-    let contact = first_bounded_contact(a, b, [radius, 0.0], t_max, prior);
+    let contact = first_contact_bounded(a, b, [radius, 0.0], t_max, prior);
     Ok(contact.unwrap_or(f64::INFINITY))
 }
 
@@ -707,7 +707,7 @@ mod tests {
 
     /// The scalar search on two checked paths, `∞` for none.
     fn first_path_contact_of(a: &[Segment<2>], b: &[Segment<2>], radius: f64) -> f64 {
-        crate::collision::path_contact::first_path_contact(a, b, [radius, 0.0], f64::INFINITY)
+        crate::collision::path_contact::first_contact_of_paths(a, b, [radius, 0.0], f64::INFINITY)
             .unwrap_or(f64::INFINITY)
     }
 }

@@ -8,7 +8,7 @@ use super::queue::{Key, Queue};
 use super::reach::{Reach, reach};
 use super::walls::{Side, Walls, first_wall_contact};
 use crate::collision::path_bounds::PathBounds;
-use crate::collision::path_contact::{first_bounded_contact_one, first_path_contact};
+use crate::collision::path_contact::{first_contact_bounded_fma, first_contact_of_paths};
 use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon, finite};
 use crate::geometry::{ObjectKind, Table};
 use crate::interrupt::Interrupt;
@@ -1052,9 +1052,9 @@ impl<const D: usize> CollisionSchedule<D> {
         let radii = [self.radii[a] + self.radii[b], 0.0];
         match (self.bounds.get(a), self.bounds.get(b)) {
             (Some(ba), Some(bb)) => {
-                first_bounded_contact_one((pa, ba), (pb, bb), radii, self.t_max)
+                first_contact_bounded_fma((pa, ba), (pb, bb), radii, self.t_max)
             }
-            _ => first_path_contact(pa, pb, radii, self.t_max),
+            _ => first_contact_of_paths(pa, pb, radii, self.t_max),
         }
     }
 
