@@ -208,7 +208,7 @@ mod tests {
                     found += 1;
                 }
                 if is_free {
-                    let after = walk(Prior::FirstWindowFree);
+                    let after = walk(Prior::FirstWindowScreenedOut);
                     assert_eq!(after.to_bits(), answer.to_bits(), "pair {i} (free)");
                     free += 1;
                 }

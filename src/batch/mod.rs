@@ -37,7 +37,7 @@ use crate::collision::crossing::{FirstWindow, apart_by_window};
 use crate::collision::first_contact_given;
 use crate::collision::length_unit::{normalise_lanes, normalised};
 use crate::collision::moving_entry::{WhileMoving, while_moving};
-use crate::collision::prefilter::{PairInput, screen_pair, valid};
+use crate::collision::prefilter::{PairInput, screen_runs, valid};
 use crate::collision::straight;
 use crate::error::{
     InputError, InputErrorKind, check_friction, check_horizon, check_radius, finite,
@@ -367,7 +367,7 @@ impl Held {
         let mut no_entry = [false; LANES];
         for ((entry, no_entry), lane) in entry.iter_mut().zip(&mut no_entry).zip(&lanes) {
             let m = while_moving(lane);
-            (*entry, *no_entry) = (m.entry, m.no_entry);
+            (*entry, *no_entry) = (m.entry, m.screened_out);
         }
         let mut free = [false; LANES];
         for ((free, &(first, _)), &no_entry) in free.iter_mut().zip(&apart).zip(&no_entry) {
@@ -403,7 +403,14 @@ impl Held {
             } else if free & applies {
                 t
             } else {
-                search(pairs, i, Some(WhileMoving { entry, no_entry }))?
+                search(
+                    pairs,
+                    i,
+                    Some(WhileMoving {
+                        entry,
+                        screened_out: no_entry,
+                    }),
+                )?
             };
         }
         Ok(())
@@ -420,7 +427,7 @@ fn search(pairs: &Pairs<'_>, i: usize, moving: Option<WhileMoving>) -> Result<f6
 
 /// What the screening of a block settles, and where the pairs it leaves open go.
 struct Screened {
-    /// `∞` for pairs proven apart ([`screen_pair`]), in a block where every pair has one ball
+    /// `∞` for pairs proven apart ([`screen_runs`]), in a block where every pair has one ball
     /// at rest the closed form's time (or `∞`) where it applies; NaN for the rest (and for
     /// lanes past the block's length).
     answers: [f64; LANES],
@@ -484,7 +491,7 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> Screened {
         .zip(&mut screened.at_rest);
     for (k, ((answer, crossing), at_rest)) in lanes.enumerate() {
         let pair = lane(k);
-        let (plain, apart) = screen_pair(&pair);
+        let (plain, apart) = screen_runs(&pair);
         let plain = plain & (k < len);
         *answer = if plain & apart {
             f64::INFINITY
@@ -803,7 +810,7 @@ fn first_error(x: Result<(), InputError>, y: Result<(), InputError>) -> Result<(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::collision::prefilter::never_touch;
+    use crate::collision::prefilter::screened_out_by_runs;
     use crate::{CollisionOptions, collision_time_with};
 
     #[test]
@@ -980,7 +987,7 @@ mod tests {
             let len = LANES.min(r.pos_a.len() - start);
             let answers = screen(&p, start, len).answers;
             for (k, &answer) in answers.iter().enumerate().take(len) {
-                if never_touch(&one(start + k)) {
+                if screened_out_by_runs(&one(start + k)) {
                     assert_eq!(answer, f64::INFINITY, "pair {}", start + k);
                     apart += 1;
                 }

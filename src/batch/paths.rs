@@ -259,7 +259,7 @@ fn path_pairs_in_turn<S: Simd, const D: usize, const K: usize>(
                 for ((&k, &contact), &free) in block.iter().zip(&contacts).zip(&free) {
                     if contact.is_nan() {
                         let prior = if free {
-                            Prior::FirstWindowFree
+                            Prior::FirstWindowScreenedOut
                         } else {
                             Prior::LanesLeft
                         };

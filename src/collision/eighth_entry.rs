@@ -31,8 +31,8 @@ pub(crate) struct EighthEntry {
     pub entry: f64,
     /// The first entry is `entry`.
     pub found: bool,
-    /// The window holds no entry, and the gap ends it positive.
-    pub no_entry: bool,
+    /// The window is screened out: it holds no entry, and the gap ends it positive.
+    pub screened_out: bool,
 }
 
 /// The first entry on the window `[0, end]` of `gap` (time scaled so that `end ≤ 1`), where
@@ -115,7 +115,7 @@ pub(crate) fn eighth_entry<const D: usize>(
     EighthEntry {
         entry,
         found: crossing & entry_found,
-        no_entry: missed & eighth.rest_positive,
+        screened_out: missed & eighth.rest_positive,
     }
 }
 
@@ -140,7 +140,7 @@ pub(crate) fn window_eighth<const D: usize, const ONE_PAIR: bool>(
     let nothing = EighthEntry {
         entry: f64::NAN,
         found: false,
-        no_entry: false,
+        screened_out: false,
     };
     let plain = (length >= f64::MIN_POSITIVE) & !long_window(gap, length);
     // (Where the window is not plain, these are never used.)
@@ -154,7 +154,7 @@ pub(crate) fn window_eighth<const D: usize, const ONE_PAIR: bool>(
     let proven = qualifies & (eighth.index == 8.0);
     if ONE_PAIR && proven {
         return EighthEntry {
-            no_entry: true,
+            screened_out: true,
             ..nothing
         };
     }
@@ -165,7 +165,7 @@ pub(crate) fn window_eighth<const D: usize, const ONE_PAIR: bool>(
     EighthEntry {
         entry: found.entry * h,
         found: found.found,
-        no_entry: found.no_entry | proven,
+        screened_out: found.screened_out | proven,
     }
 }
 

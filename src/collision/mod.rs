@@ -28,7 +28,7 @@
 //! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |
 //! | eighth entry | `eighth_entry.rs` | a window whose first open eighth is plain (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`) |
-//! | (first-window lanes) | `batch/first_window_lanes.rs`, `path_contact.rs` (`PathFirstWindow`) | the eighth entry on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window free (the walk starts after it) | `path_collision_times` at the SIMD levels that run the lane stages, rows of 2 and 3 segments |
+//! | (first-window lanes) | `batch/first_window_lanes.rs`, `path_contact.rs` (`PathFirstWindow`) | the eighth entry on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window screened out (the walk starts after it) | `path_collision_times` at the SIMD levels that run the lane stages, rows of 2 and 3 segments |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
 //! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `entry` (for `search_window`), `crossing`, `moving_entry` |
@@ -87,7 +87,7 @@ use nalgebra::SVector;
 pub use path_contact::path_collision_time;
 #[doc(hidden)]
 pub use path_contact::path_collision_time_unscreened;
-use prefilter::{PairInput, never_touch};
+use prefilter::{PairInput, screened_out_by_runs};
 use window_box::apart_on_window;
 
 /// Options of a collision query ([`collision_time_with`]).
@@ -166,7 +166,7 @@ pub fn collision_time_with(
     Ok(first_contact_screened(a, b, [radius, 0.0], t_max))
 }
 
-/// [`first_contact`] after the batch's proofs that the balls never touch ([`never_touch`],
+/// [`first_contact`] after the batch's proofs that the balls never touch ([`screened_out_by_runs`],
 /// [`apart_by_window`]): a pair they settle is one the search answers "none" for too (their
 /// margins see to it), found for a fraction of the cost; and the same answer as a batch's,
 /// bit for bit, either way. The contact distance is the sum of `radii` (formed in the pair's
@@ -188,7 +188,7 @@ pub(crate) fn first_contact_screened(
     // One ball at rest: the closed form is cheaper than the proofs.
     let one_at_rest = a.is_at_rest() != b.is_at_rest();
     let both_moving = !a.is_at_rest() && !b.is_at_rest();
-    if !one_at_rest && never_touch(&pair) {
+    if !one_at_rest && screened_out_by_runs(&pair) {
         return None;
     }
     if both_moving && apart_by_window(&pair) == (true, true) {
@@ -247,9 +247,9 @@ fn first_contact_in_unit(
         (ta.min(tb), ta.max(tb))
     };
     // With no contact in the first window, the balls are apart at its end.
-    let mut previous_positive = apart || moving.no_entry;
+    let mut previous_positive = apart || moving.screened_out;
     let windows = [(0.0, t1), (t1, t2), (t2, f64::INFINITY)];
-    for (start, end) in windows.into_iter().skip(usize::from(moving.no_entry)) {
+    for (start, end) in windows.into_iter().skip(usize::from(moving.screened_out)) {
         // Windows are searched whole, whatever the horizon, which only cuts the answer: a
         // contact before it comes back bit for bit as without it.
         if start >= t_max {

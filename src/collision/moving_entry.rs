@@ -17,7 +17,7 @@
 use super::approaching;
 use super::crossing::FirstWindow;
 use super::eighth_entry::eighth_entry;
-use super::exclusion::{OpenEighth, first_open_eighth, proves_positive_at_once};
+use super::exclusion::{OpenEighth, first_open_eighth, window_screened_out_at_once};
 use super::prefilter::PairInput;
 
 /// What [`while_moving`] settles about a pair's first window.
@@ -26,9 +26,9 @@ pub(crate) struct WhileMoving {
     /// The first contact, if it comes in the first window: its time, `∞` if that time is at
     /// or past the horizon; NaN where this does not settle it.
     pub entry: f64,
-    /// The first window holds no contact, and the balls are apart at its end (the search goes
+    /// The first window is screened out: no contact, the balls apart at its end (the search goes
     /// on from the second window).
-    pub no_entry: bool,
+    pub screened_out: bool,
 }
 
 /// The first window of `pair` (both balls moving), where its first open eighth is plain.
@@ -69,20 +69,20 @@ impl crate::simd::Kernel for WhileMovingOne<'_> {
 fn while_moving_one_portable(pair: &PairInput) -> WhileMoving {
     let nothing = WhileMoving {
         entry: f64::NAN,
-        no_entry: false,
+        screened_out: false,
     };
     let window = FirstWindow::of(pair);
     let start = at_start(&window, pair.t_max);
     if !start.is_nan() {
         return WhileMoving {
             entry: start,
-            no_entry: false,
+            screened_out: false,
         };
     }
     // A window proven positive whole has no entry, which the search finds at once: `settle`
     // would find no entry there either (at most that there is none, which the search then
     // takes the same way).
-    if !window.qualifies || proves_positive_at_once(&window.gap, window.end) {
+    if !window.qualifies || window_screened_out_at_once(&window.gap, window.end) {
         return nothing;
     }
     let eighth = first_open_eighth(&window.gap, window.end);
@@ -110,7 +110,7 @@ fn settle(
     let start = at_start(window, pair.t_max);
     WhileMoving {
         entry: if start.is_nan() { entry } else { start },
-        no_entry: found.no_entry,
+        screened_out: found.screened_out,
     }
 }
 

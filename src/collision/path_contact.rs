@@ -187,9 +187,9 @@ pub(crate) enum Prior {
     /// The screens are proofs, so the answer is the same either way.
     LanesLeft,
     /// As `LanesLeft`, and the first-window lanes (`batch/first_window_lanes.rs`) found the
-    /// pair's first window free of entries, with the gap positive at its end: what its
+    /// pair's first window screened out (no entry, the gap positive at its end): what its
     /// search would find ([`PathFirstWindow::eighth_contact`]), so the walk starts after it.
-    FirstWindowFree,
+    FirstWindowScreenedOut,
 }
 
 /// The first contact: the whole-path screens, then the walk over windows, with the screens
@@ -228,7 +228,7 @@ fn first_contact_walk<const D: usize, const S: usize, const SCREENS: bool>(
     let mut start = first_time(a.first()?, b.first()?);
     let (mut i, mut j) = (active(a, 0, start), active(b, 0, start));
     let mut previous_positive = None;
-    let mut first_free = prior == Prior::FirstWindowFree;
+    let mut first_screened_out = prior == Prior::FirstWindowScreenedOut;
     loop {
         if start >= t_max {
             return None;
@@ -236,11 +236,11 @@ fn first_contact_walk<const D: usize, const S: usize, const SCREENS: bool>(
         let (end_a, end_b) = (end_of(a, i), end_of(b, j));
         let end = end_a.min(end_b);
         count(Stage::Window);
-        if first_free {
+        if first_screened_out {
             // Searched and settled on its first open eighth, lane-wise.
             count(Stage::WindowSearched);
             count(Stage::WindowEighth);
-            first_free = false;
+            first_screened_out = false;
             previous_positive = Some(true);
         } else if SCREENS && bounds_a.segments_apart(i, bounds_b, j, reach) {
             // The boxes of the two segments, from the path bounds, settle most windows of
@@ -394,7 +394,7 @@ impl<const D: usize> Window<'_, D> {
             if eighth.found {
                 count(Stage::WindowEighth);
                 WindowSearch::Entry(eighth.entry)
-            } else if eighth.no_entry {
+            } else if eighth.screened_out {
                 count(Stage::WindowEighth);
                 WindowSearch::NoEntry {
                     ends_positive: true,
@@ -447,9 +447,9 @@ impl<const D: usize> PathFirstWindow<D> {
     /// What the pair's first window settles on its first open eighth ([`window_eighth`]),
     /// where the relative acceleration is not zero (so that no closed form comes first): the
     /// pair's answer where it finds an entry (its time, `∞` at or past the horizon; NaN
-    /// elsewhere), and whether it finds the window free of entries, the gap positive at its
-    /// end. The screens the walk would run first are proofs that the balls are apart, which
-    /// such an entry rules out, and which would find the window free just the same; and the
+    /// elsewhere), and whether it screens the window out (no entry, the gap positive at its
+    /// end). The screens the walk would run first are proofs that the balls are apart, which
+    /// such an entry rules out, and which would screen the window out just the same; and the
     /// balls are apart at the start: so these are the walk's findings, to the bit. Without a
     /// branch, so that a batch runs it lane-wise.
     #[inline(always)]
@@ -473,7 +473,7 @@ impl<const D: usize> PathFirstWindow<D> {
         } else {
             f64::NAN
         };
-        (found, eighth.no_entry & accelerating)
+        (found, eighth.screened_out & accelerating)
     }
 }
 
