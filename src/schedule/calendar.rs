@@ -1044,9 +1044,9 @@ impl<const D: usize> CollisionSchedule<D> {
         Ok(())
     }
 
-    /// Ball `i`'s contact time with ball `j` (`i ≠ j`): the pair search on `(lo, hi)`, with
+    /// The first contact of balls `i` and `j` (`i ≠ j`): the pair search on `(lo, hi)`, with
     /// the paths' bounds (stored, or formed here: the same either way).
-    fn pair_time(&self, i: usize, j: usize) -> Option<f64> {
+    fn first_contact(&self, i: usize, j: usize) -> Option<f64> {
         let (a, b) = (i.min(j), i.max(j));
         let (pa, pb) = (self.paths[a].segments(), self.paths[b].segments());
         let radii = [self.radii[a] + self.radii[b], 0.0];
@@ -1235,7 +1235,7 @@ impl<const D: usize> CollisionSchedule<D> {
                     if was_searched(searched, k) && self.updated[ku] <= stamp {
                         continue;
                     }
-                    self.pair_time(i, ku)
+                    self.first_contact(i, ku)
                 }
                 Some(Known::Since { partner_time, .. }) => {
                     // The same pair on the same paths: its answer as found then.
@@ -1243,7 +1243,7 @@ impl<const D: usize> CollisionSchedule<D> {
                     Some(partner_time)
                 }
                 Some(Known::Pair(other, Some(answer))) if other == ku => answer,
-                _ => self.pair_time(i, ku),
+                _ => self.first_contact(i, ku),
             };
             if k == self.want {
                 self.pair_answer = Some(t);
