@@ -214,13 +214,13 @@ fn first_contact_walk<const D: usize, const S: usize, const SCREENS: bool>(
     }
     // Paths whose boxes keep apart need no window: a proof (its margin far above the
     // search's rounding), so its answer is the search's, in any unit.
-    let reach = bounds_a.reach(bounds_b, radii[0] + radii[1]);
+    let distance = bounds_a.screen_distance(bounds_b, radii[0] + radii[1]);
     let screens = SCREENS && prior == Prior::Nothing;
-    if screens && bounds_a.apart(bounds_b, reach) {
+    if screens && bounds_a.apart(bounds_b, distance) {
         count(Stage::BoundsApart);
         return None;
     }
-    if screens && apart_across_chords(a, b, reach) {
+    if screens && apart_across_chords(a, b, distance) {
         count(Stage::ChordsApart);
         return None;
     }
@@ -242,7 +242,7 @@ fn first_contact_walk<const D: usize, const S: usize, const SCREENS: bool>(
             count(Stage::WindowEighth);
             first_screened_out = false;
             previous_positive = Some(true);
-        } else if SCREENS && bounds_a.segments_apart(i, bounds_b, j, reach) {
+        } else if SCREENS && bounds_a.segments_apart(i, bounds_b, j, distance) {
             // The boxes of the two segments, from the path bounds, settle most windows of
             // balls on general paths before any motion is formed (a proof like the path
             // bounds', so the same answer as the search's).
@@ -488,7 +488,7 @@ pub(crate) fn every_window_screened<const D: usize>(
     radius: f64,
 ) -> bool {
     let (bounds_a, bounds_b) = (PathBounds::<D>::of(a), PathBounds::of(b));
-    let reach = bounds_a.reach(&bounds_b, radius);
+    let distance = bounds_a.screen_distance(&bounds_b, radius);
     let (unit, radius) = pair_unit(&bounds_a, &bounds_b, [radius, 0.0]);
     let (Some(first_a), Some(first_b)) = (a.first(), b.first()) else {
         return false;
@@ -498,7 +498,7 @@ pub(crate) fn every_window_screened<const D: usize>(
     loop {
         let (end_a, end_b) = (end_of(a, i), end_of(b, j));
         let end = end_a.min(end_b);
-        if !bounds_a.segments_apart(i, &bounds_b, j, reach) {
+        if !bounds_a.segments_apart(i, &bounds_b, j, distance) {
             if end == f64::INFINITY {
                 return false;
             }
