@@ -31,7 +31,6 @@ use nalgebra::Vector2;
 use rayon::prelude::*;
 use rayon::{ThreadPool, ThreadPoolBuilder};
 
-use crate::coefficients::gap_value;
 use crate::collision::after_stop::after_first_stop_of;
 use crate::collision::crossing::{FirstWindow, apart_by_window};
 use crate::collision::first_contact_given;
@@ -42,6 +41,7 @@ use crate::collision::straight;
 use crate::error::{
     InputError, InputErrorKind, check_friction, check_horizon, check_radius, finite,
 };
+use crate::gap::gap_value;
 use crate::interrupt::Interrupt;
 use crate::motion::Ball;
 use crate::simd::{self, LANES};

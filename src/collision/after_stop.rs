@@ -10,7 +10,7 @@
 use super::crossing::FirstWindow;
 use super::prefilter::PairInput;
 use super::straight;
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 use crate::motion::Ball;
 
 /// The first contact from the first stop on, for balls `a` and `b` whose first window holds

@@ -21,7 +21,7 @@ use super::exclusion::window_screened_out;
 use super::long_window::long_window;
 use super::prefilter::{LIMIT, MARGIN, PairInput, valid};
 use super::{LONGEST_WINDOW, normal_time_unit};
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// The first window of two moving balls with friction, `[0, min(τ_A, τ_B)]`, exactly as
 /// [`first_contact`](super::first_contact) builds and scales it.

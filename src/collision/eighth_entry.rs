@@ -22,7 +22,7 @@ use super::exclusion::{OpenEighth, first_open_eighth};
 use super::long_window::long_window;
 use super::narrow_dip::narrow;
 use super::{in_own_unit, normal_time_unit};
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// What [`eighth_entry`] settles about a window.
 #[derive(Clone, Copy, Debug, PartialEq)]

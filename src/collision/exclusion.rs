@@ -17,7 +17,7 @@
 //! coefficients show: a single root (the first crossing, if it is the first such piece), or a
 //! single minimum (a near miss or a grazing contact, settled there by the search).
 
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// How many times [`OpenPieces`] may halve a window (its margin, shared with
 /// [`window_screened_out`], covers the rounding of that many halvings).

@@ -9,7 +9,7 @@
 //!
 //! So a window longer than [`LONG`]` · T` is cut: a first piece of `LONG · T`, then pieces
 //! each `LONG` times the time scale of the gap at their own start (re-expanded there, as
-//! [`Gap::between`](crate::coefficients::Gap::between) does at a window's start), at least
+//! [`Gap::between`](crate::gap::Gap::between) does at a window's start), at least
 //! doubling, until the window's end. The time scale can shrink inside a piece (a ball that
 //! runs far away and comes back), so a piece is searched as it is only where it is plain even
 //! measured by the radius ([`plain_piece`]), and otherwise halved, its halves proven apart by
@@ -19,7 +19,7 @@
 //! The test is [`long_window`], shared by the search and the batch's lanes (which leave long
 //! windows to the search), on the same numbers, so both take the same steps.
 
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// How many of its own time scales a window may last before it is cut: `2⁴⁰ ≈ 1.1e12`, far
 /// below where the window search loses contacts (`~10²⁸`), far above any window on a table.

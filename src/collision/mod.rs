@@ -73,8 +73,8 @@ pub(crate) mod straight;
 pub(crate) mod window_box;
 pub(crate) mod window_chord;
 
-use crate::coefficients::{Gap, gap_value_of};
 use crate::error::{InputError, check_horizon, check_radius};
+use crate::gap::{Gap, gap_value_of};
 use crate::motion::Ball;
 use crate::poly::scaling::{exponent, pow2};
 use after_stop::after_first_stop;

@@ -35,8 +35,8 @@ use super::{
     CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_finite_length,
     bounded_length, search_window,
 };
-use crate::coefficients::Gap;
 use crate::error::{InputError, check_horizon, check_radius};
+use crate::gap::Gap;
 use crate::path::{Path, Segment};
 use nalgebra::SVector;
 

@@ -10,7 +10,7 @@
 //! root searches (critical point and entry) by three square roots and one division.
 
 use super::entry::WindowSearch;
-use crate::coefficients::{Gap, gap_value_of};
+use crate::gap::{Gap, gap_value_of};
 use crate::motion::Ball;
 
 /// How decisive the closed form of [`straight_window`] must be, relative to the magnitudes
