@@ -106,7 +106,7 @@ fn one_root(b: &[f64; 5], margin: f64) -> bool {
 /// open (not proven positive), in time order: an iterator.
 ///
 /// Pieces not proven positive are halved (even where `g` may cross zero at their end, to
-/// isolate the crossing) until their shape is plain (a single root or a single minimum), or
+/// isolate the crossing) until their shape is isolated (a single root or a single minimum), or
 /// they are at the finest level, or start at or below the margin; those are the open pieces.
 /// Everything between them is proven positive.
 pub(crate) struct OpenPieces {
@@ -168,7 +168,7 @@ impl Iterator for OpenPieces {
             if above(&b, margin) {
                 continue;
             }
-            // A piece whose shape is plain already needs no halving.
+            // A piece whose shape is isolated already needs no halving.
             let shape = shape(&b, margin);
             if shape != Shape::Other || depth == ISOLATING_SPLITS || b[0] <= margin {
                 return Some(OpenPiece {

@@ -14,7 +14,7 @@
 //! | prefilter | `prefilter.rs` | the balls' straight runs to rest stay apart: never a contact | `collision_time`, scene, batch lanes |
 //! | crossing | `crossing.rs` | moving balls whose runs cross are never there at the same time | `collision_time`, scene, batch lanes |
 //! | straight | `straight.rs` (`first_contact`, `contact`) | one ball at rest: the contact in closed form | `collision_time`, scene, batch lanes |
-//! | moving entry | `moving_entry.rs` | both moving, a plain crossing in the first window: the contact by the eighth entry below, cut by the horizon | `collision_time`, scene, batch lanes |
+//! | moving entry | `moving_entry.rs` | both moving, an isolated crossing in the first window: the contact by the eighth entry below, cut by the horizon | `collision_time`, scene, batch lanes |
 //! | after stop | `after_stop.rs` | after the first stop, the mover against a ball at rest: closed form | `collision_time`, scene, batch lanes |
 //! | **paths** | | | |
 //! | path bounds | `path_bounds.rs`; lane-wise, `batch/path_lanes.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch; rows of 2 and 3 segments eight pairs at a time, lane-wise, at the SIMD levels that run the lane stages, the same proof to the bit); not for two paths of one segment each, whose one window goes straight to the window's stages |
@@ -27,7 +27,7 @@
 //! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` at the SIMD levels that run the lane stages, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
 //! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |
-//! | eighth entry | `eighth_entry.rs` | a window whose first open eighth is plain (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`) |
+//! | eighth entry | `eighth_entry.rs` | a window whose first open eighth is isolated (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`) |
 //! | (first-window lanes) | `batch/first_window_lanes.rs`, `path_contact.rs` (`PathFirstWindow`) | the eighth entry on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window screened out (the walk starts after it) | `path_collision_times` at the SIMD levels that run the lane stages, rows of 2 and 3 segments |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
@@ -81,7 +81,7 @@ use after_stop::after_first_stop;
 use crossing::apart_by_window;
 use entry::{WindowSearch, first_entry, piecewise_entry};
 use length_unit::{LengthUnit, largest, normalised_balls};
-use long_window::{first_piece, long_window, next_piece, plain_piece};
+use long_window::{first_piece, long_window, next_piece, short_piece};
 use moving_entry::{WhileMoving, while_moving_one};
 use nalgebra::SVector;
 pub use path_contact::path_collision_time;
@@ -237,7 +237,8 @@ fn first_contact_in_unit(
     if let Some(answer) = straight::first_contact(a, b, radius, t_max, g0) {
         return answer;
     }
-    // The first window settled where it is plain (as a batch does it lane-wise).
+    // The first window settled where its first open eighth is isolated (as a batch does it
+    // lane-wise).
     let moving = moving.unwrap_or_else(|| while_moving_one(&PairInput::of(a, b, radius, t_max)));
     if !moving.entry.is_nan() {
         return moving.entry.is_finite().then_some(moving.entry);
@@ -402,7 +403,7 @@ fn search_window_in<const D: usize>(
 ) -> WindowSearch {
     let length = bounded_length(gap, length);
     if !long_window(gap, length) {
-        return search_plain_window(gap, length, previous_positive);
+        return search_short_window(gap, length, previous_positive);
     }
     let (mut start, mut end) = (0.0, first_piece(gap, length));
     let mut previous_positive = previous_positive;
@@ -434,8 +435,8 @@ const SPLITS: u32 = 4096;
 
 /// The first entry on a piece of a long window (its motion `piece`, re-expanded at its start),
 /// as time since its start: nothing if its box proves it apart ([`apart_on_window`]); the
-/// window search if it is plain even measured by the radius alone ([`plain_piece`]: then it
-/// is plain wherever the balls may touch in it); otherwise its two halves in turn, while the
+/// window search if it is short even measured by the radius alone ([`short_piece`]: then it
+/// is short wherever the balls may touch in it); otherwise its two halves in turn, while the
 /// `budget` of halvings lasts.
 ///
 /// The halving is depth first, first halves before second halves, each second half
@@ -464,8 +465,8 @@ fn search_piece<const D: usize>(
             Some(WindowSearch::NoEntry {
                 ends_positive: true,
             })
-        } else if *budget == 0 || plain_piece(&piece, length) || length.is_nan() || length <= 0.0 {
-            Some(search_plain_window(&piece, length, previous_positive))
+        } else if *budget == 0 || short_piece(&piece, length) || length.is_nan() || length <= 0.0 {
+            Some(search_short_window(&piece, length, previous_positive))
         } else {
             None
         };
@@ -545,7 +546,7 @@ fn unbounded_length<const D: usize>(gap: &Gap<D>) -> f64 {
 
 /// The first entry on a window of `length` that is not long, as time since its start.
 #[inline(always)]
-fn search_plain_window<const D: usize>(
+fn search_short_window<const D: usize>(
     gap: &Gap<D>,
     length: f64,
     previous_positive: bool,

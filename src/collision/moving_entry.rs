@@ -1,4 +1,4 @@
-//! Two moving balls that first touch while both still move, where the crossing is plain:
+//! Two moving balls that first touch while both still move, where the crossing is isolated:
 //! found lane-wise, without a branch.
 //!
 //! On a table most contacts come before either ball stops (on the first window), and most
@@ -31,9 +31,9 @@ pub(crate) struct WhileMoving {
     pub screened_out: bool,
 }
 
-/// The first window of `pair` (both balls moving), where its first open eighth is plain.
+/// The first window of `pair` (both balls moving), where its first open eighth is isolated.
 ///
-/// The eighth is plain when it holds a single root, or a single minimum (a grazing contact,
+/// The eighth is isolated when it holds a single root, or a single minimum (a grazing contact,
 /// an entry and an exit close together, or a near miss): the minimum is found first, by
 /// Newton on the slope; if the gap is negative there, the entry lies between the eighth's
 /// start and it; if not, and the minimum has converged and every later eighth is proven
@@ -46,7 +46,7 @@ pub(crate) fn while_moving(pair: &PairInput) -> WhileMoving {
 }
 
 /// [`while_moving`] for one pair: the same answer, without the Newton steps where the window
-/// holds no plain eighth (most pairs that reach the search), and with fused multiply-adds
+/// holds no isolated eighth (most pairs that reach the search), and with fused multiply-adds
 /// in hardware where the CPU has them.
 pub(crate) fn while_moving_one(pair: &PairInput) -> WhileMoving {
     // The level of the batch (or the process): `simd`'s one dispatch point.
@@ -164,7 +164,7 @@ mod tests {
     }
 
     #[test]
-    fn what_is_not_plain_is_left_to_the_search() {
+    fn what_is_not_isolated_is_left_to_the_search() {
         // Apart for ever, a ball at rest, a grazing pass: not settled here.
         for p in [
             pair([0.0, 0.0], [1.0, 0.0], [0.0, 5.0], [1.0, 0.0]),

@@ -388,7 +388,7 @@ impl<const D: usize> Window<'_, D> {
             }
         } else {
             count(Stage::WindowSearched);
-            // Most entries are plain on the window's first open eighth, and most windows
+            // Most entries are isolated on the window's first open eighth, and most windows
             // without one too: settled there by a few Newton steps, the rest searched.
             let eighth = window_eighth::<D, true>(&gap, bounded_length(&gap, length), before);
             if eighth.found {
