@@ -73,7 +73,13 @@ pub use path::{Path, Path2, Path3, Segment, Segment2, Segment3};
 #[cfg(test)]
 #[path = "../tests/support/cases.rs"]
 mod test_cases;
+/// The tests' random path rows (`super::rng` there: the generator above).
+#[cfg(test)]
+#[path = "../tests/support/path_rows.rs"]
+mod test_path_rows;
 /// The tests' and benchmarks' shared deterministic generator.
 #[cfg(test)]
 #[path = "../tests/support/rng.rs"]
 mod test_rng;
+#[cfg(test)]
+use test_rng as rng;

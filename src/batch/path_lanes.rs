@@ -443,6 +443,7 @@ mod tests {
     use crate::collision::path_contact::every_window_screened;
     use crate::path::Path2;
     use crate::simd::{Kernel, Level, dispatch, test_levels};
+    use crate::test_path_rows::RowSpec;
     use crate::test_rng::Rng;
 
     /// [`settled`] on a block, as a kernel to dispatch at a level.
@@ -493,25 +494,29 @@ mod tests {
     impl<const K: usize> Block<K> {
         fn draw(rng: &mut Rng) -> Self {
             let scale = 2f64.powi(rng.below(2020) as i32 - 1060);
+            let spec = RowSpec::<2> {
+                segments: K,
+                every_row_used: true,
+                later_first_start: 1.0,
+                first_start: [-1.0, 1.0],
+                length: [0.0, 2.0],
+                empty: 0.0,
+                pos: RowSpec::each_axis(-3.0, 3.0),
+                continuous: false,
+                vel: RowSpec::each_axis(-2.0, 2.0),
+                acc: RowSpec::each_axis(-2.0, 2.0),
+                last_at_rest: 2.0 / 3.0,
+            };
             let draw_side = |rng: &mut Rng| {
-                let (mut start, mut rows) = (vec![], [vec![], vec![], vec![]]);
-                for _ in 0..LANES {
-                    let mut t = rng.uniform(-1.0, 1.0) * scale;
-                    for k in 0..K {
-                        start.push(t);
-                        t += rng.uniform(0.0, 2.0) * scale;
-                        let at_rest = k + 1 == K && rng.below(3) > 0;
-                        for (r, rows) in rows.iter_mut().enumerate() {
-                            let size = if r == 0 { 3.0 } else { 2.0 };
-                            let mut x = || rng.uniform(-size, size) * scale;
-                            let row = if r > 0 && at_rest {
-                                [0.0; 2]
-                            } else {
-                                [x(), x()]
-                            };
-                            rows.push(row);
-                        }
-                    }
+                // Drawn in units of `scale` (a power of two), then scaled: at the smallest
+                // scales the values underflow into subnormals and neighbouring starts may round
+                // to one (an empty row), as rows drawn at that scale do.
+                let (mut start, mut rows) = spec.draw(rng, LANES);
+                for t in &mut start {
+                    *t *= scale;
+                }
+                for x in rows.iter_mut().flatten().flatten() {
+                    *x *= scale;
                 }
                 // A few rows the lanes cannot take.
                 for _ in 0..rng.below(3) {
