@@ -7,7 +7,7 @@
 //! millions of pairs.
 //!
 //! - [`Ball`] ([`motion`]): one ball's state and trajectory;
-//! - [`Gap`] ([`coefficients`]): the relative motion of two balls and its gap quartic;
+//! - [`Gap`] ([`gap`]): the relative motion of two balls and its gap quartic;
 //! - [`collision_time`] ([`collision`]): the first contact of two balls;
 //! - [`Path`] ([`path`]): general motion, paths of constant-acceleration segments in 2-D and 3-D;
 //! - [`geometry`]: static objects (segments, circles, targets, planes) and when a ball on a
@@ -31,9 +31,9 @@
 
 pub mod batch;
 pub mod billiards;
-pub mod coefficients;
 pub mod collision;
 pub mod error;
+pub mod gap;
 pub mod geometry;
 pub mod interrupt;
 pub mod motion;
@@ -45,9 +45,27 @@ pub mod scene;
 pub mod schedule;
 pub mod simd;
 
-pub use coefficients::Gap;
+/// The old name of [`gap`], kept so that code written against it still builds.
+///
+/// ```
+/// #![allow(deprecated)]
+/// use ballcollide::Ball;
+/// use nalgebra::Vector2;
+///
+/// let a = Ball::at_rest(Vector2::new(0.0, 0.0))?;
+/// let b = Ball::at_rest(Vector2::new(2.0, 0.0))?;
+/// let gap: ballcollide::coefficients::Gap = ballcollide::gap::Gap::between(&a, &b, 1.0, 0.0);
+/// assert_eq!(gap.value(0.0), 3.0);
+/// # Ok::<(), ballcollide::InputError>(())
+/// ```
+#[deprecated(note = "renamed to `gap` (it holds `Gap`)")]
+pub mod coefficients {
+    pub use crate::gap::Gap;
+}
+
 pub use collision::{CollisionOptions, collision_time, collision_time_with, path_collision_time};
 pub use error::{InputError, InputErrorKind};
+pub use gap::Gap;
 pub use motion::Ball;
 pub use path::{Path, Path2, Path3, Segment, Segment2, Segment3};
 
@@ -55,7 +73,13 @@ pub use path::{Path, Path2, Path3, Segment, Segment2, Segment3};
 #[cfg(test)]
 #[path = "../tests/support/cases.rs"]
 mod test_cases;
+/// The tests' random path rows (`super::rng` there: the generator above).
+#[cfg(test)]
+#[path = "../tests/support/path_rows.rs"]
+mod test_path_rows;
 /// The tests' and benchmarks' shared deterministic generator.
 #[cfg(test)]
 #[path = "../tests/support/rng.rs"]
 mod test_rng;
+#[cfg(test)]
+use test_rng as rng;

@@ -42,7 +42,7 @@ argument that is not made of real numbers raises ``TypeError``.
 
 The functions are those of the compiled ``_core`` module, re-exported: it reads and checks
 every argument itself. Their docstrings are the Rust doc comments of the bindings
-(``src/python``).
+(``src/python/``).
 
 >>> import ballcollide as bc
 >>> # A ball shot at 1 m/s (no friction) at a resting ball 1 m away; contact at 0.5 m.
@@ -52,7 +52,7 @@ every argument itself. Their docstrings are the Rust doc comments of the binding
 
 from __future__ import annotations
 
-# The exports are listed once, where the compiled module is built (src/python.rs: what it
+# The exports are listed once, where the compiled module is built (src/python/mod.rs: what it
 # adds goes into `_core.__all__`); its stub, `_core.pyi`, lists them for type checkers, and
 # stubtest checks that both agree.
 from . import _core

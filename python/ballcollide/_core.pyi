@@ -1,5 +1,5 @@
 # Types only. The docstrings of these functions and of InputError are the Rust doc comments
-# in src/python.rs and src/python/*.rs (what `help()` shows): the one place the
+# in src/python/mod.rs and src/python/*.rs (what `help()` shows): the one place the
 # Python API is documented.
 
 from collections.abc import Callable, Sequence

@@ -101,8 +101,9 @@ mod tests {
     use super::*;
     use crate::batch::{PathRows, PerPair};
     use crate::collision::path_bounds::PathBounds;
-    use crate::collision::path_contact::{Prior, first_bounded_contact};
+    use crate::collision::path_contact::{Prior, first_contact_bounded};
     use crate::path::Path2;
+    use crate::test_path_rows::RowSpec;
     use crate::test_rng::Rng;
     use nalgebra::Vector2;
 
@@ -110,36 +111,20 @@ mod tests {
     /// near each other on a table: random accelerations, the last segment often at rest, a
     /// first start of 0 or a little later.
     fn rows<const K: usize>(rng: &mut Rng, n: usize) -> (Vec<f64>, [Vec<[f64; 2]>; 3]) {
-        let (mut start, mut pos, mut vel, mut acc) = (vec![], vec![], vec![], vec![]);
-        for _ in 0..n {
-            let mut t = if rng.below(4) == 0 {
-                rng.uniform(0.0, 0.3)
-            } else {
-                0.0
-            };
-            let mut p = [rng.uniform(0.0, 0.6), rng.uniform(0.0, 0.6)];
-            for k in 0..K {
-                let rest = k + 1 == K && rng.below(2) == 0;
-                let mut draw = |scale: f64| {
-                    if rest {
-                        [0.0; 2]
-                    } else {
-                        [rng.uniform(-scale, scale), rng.uniform(-scale, scale)]
-                    }
-                };
-                let (v, a) = (draw(2.0), draw(3.0));
-                start.push(t);
-                pos.push(p);
-                vel.push(v);
-                acc.push(a);
-                let length = rng.uniform(0.01, 0.8);
-                for i in 0..2 {
-                    p[i] += (v[i] + 0.5 * a[i] * length) * length;
-                }
-                t += length;
-            }
+        RowSpec::<2> {
+            segments: K,
+            every_row_used: true,
+            later_first_start: 0.25,
+            first_start: [0.0, 0.3],
+            length: [0.01, 0.8],
+            empty: 0.0,
+            pos: RowSpec::each_axis(0.0, 0.6),
+            continuous: true,
+            vel: RowSpec::each_axis(-2.0, 2.0),
+            acc: RowSpec::each_axis(-3.0, 3.0),
+            last_at_rest: 0.5,
         }
-        (start, [pos, vel, acc])
+        .draw(rng, n)
     }
 
     fn first_window_lanes_give_the_walks_bits<const K: usize>() {
@@ -192,7 +177,7 @@ mod tests {
                 let (a, b) = (a.segments(), b.segments());
                 let bounds = (PathBounds::<2>::of(a), PathBounds::<2>::of(b));
                 let walk = |prior| {
-                    first_bounded_contact(
+                    first_contact_bounded(
                         (a, &bounds.0),
                         (b, &bounds.1),
                         [radius[i], 0.0],
@@ -208,7 +193,7 @@ mod tests {
                     found += 1;
                 }
                 if is_free {
-                    let after = walk(Prior::FirstWindowFree);
+                    let after = walk(Prior::FirstWindowScreenedOut);
                     assert_eq!(after.to_bits(), answer.to_bits(), "pair {i} (free)");
                     free += 1;
                 }

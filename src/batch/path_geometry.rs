@@ -203,6 +203,7 @@ pub(crate) fn check_path_geometry<const D: usize>(
 mod tests {
     use super::*;
     use crate::geometry::{Circle, LineSegment, ObjectKind, Plane, SegmentSide, Target};
+    use crate::test_path_rows::RowSpec;
     use crate::test_rng::Rng;
     use crate::{CollisionOptions, Path};
     use nalgebra::{SVector, Vector2};
@@ -245,23 +246,21 @@ mod tests {
     /// `n` random paths of up to 3 segments in rows of 3 (padded with `+∞` starts): balls on
     /// the table, sliding then rolling, some at rest; in 3-D some in the air under gravity.
     fn random_rows<const D: usize>(n: usize, seed: u64) -> (Vec<f64>, [Vec<[f64; D]>; 3]) {
-        let mut rng = Rng(seed);
-        let (mut start, mut pos, mut vel, mut acc) = (vec![], vec![], vec![], vec![]);
-        for _ in 0..n {
-            let used = 1 + rng.below(3) as usize;
-            let mut t = 0.0;
-            for k in 0..3 {
-                let mut draw = |lo: [f64; 3], hi: [f64; 3]| -> [f64; D] {
-                    std::array::from_fn(|i| rng.uniform(lo[i], hi[i]))
-                };
-                start.push(if k < used { t } else { f64::INFINITY });
-                pos.push(draw([0.0, 0.0, 0.02], [2.54, 1.27, 0.5]));
-                vel.push(draw([-3.0, -3.0, -2.0], [3.0, 3.0, 2.0]));
-                acc.push(draw([-2.0, -2.0, -10.0], [2.0, 2.0, 0.0]));
-                t += rng.uniform(0.0, 2.0);
-            }
+        let axes = |ranges: [[f64; 2]; 3]| -> [[f64; 2]; D] { std::array::from_fn(|i| ranges[i]) };
+        RowSpec::<D> {
+            segments: 3,
+            every_row_used: false,
+            later_first_start: 0.0,
+            first_start: [0.0, 0.0],
+            length: [0.0, 2.0],
+            empty: 0.0,
+            pos: axes([[0.0, 2.54], [0.0, 1.27], [0.02, 0.5]]),
+            continuous: false,
+            vel: axes([[-3.0, 3.0], [-3.0, 3.0], [-2.0, 2.0]]),
+            acc: axes([[-2.0, 2.0], [-2.0, 2.0], [-10.0, 0.0]]),
+            last_at_rest: 0.0,
         }
-        (start, [pos, vel, acc])
+        .draw(&mut Rng(seed), n)
     }
 
     fn rows<const D: usize>(data: &(Vec<f64>, [Vec<[f64; D]>; 3])) -> PathRows<'_, D> {

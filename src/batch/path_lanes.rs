@@ -8,13 +8,13 @@
 //! search, which reads them again and reports any error.
 //!
 //! They are the two screens' proofs, computed the way [`PathBounds::set_to`],
-//! [`PathBounds::reach`] and [`apart_across_chords`] compute them: the same operations in the
-//! same order on the same numbers, so that a lane is settled exactly when the pair's own
-//! screens would settle it, and the batch's answers are the same bits with or without them.
-//! They take the paths they can take whole: both sides with a path per pair and `K` rows each,
-//! every row used with starts that increase strictly, every value finite, a finite size, and
-//! no reach that underflow could touch; anything else is left to the pair's own path (which
-//! settles it, or names its error).
+//! [`PathBounds::screen_distance`] and [`apart_across_chords`] compute them: the same
+//! operations in the same order on the same numbers, so that a lane is settled exactly when
+//! the pair's own screens would settle it, and the batch's answers are the same bits with or
+//! without them. They take the paths they can take whole: both sides with a path per pair and
+//! `K` rows each, every row used with starts that increase strictly, every value finite, a
+//! finite size, and no screen distance that underflow could touch; anything else is left to
+//! the pair's own path (which settles it, or names its error).
 //!
 //! On a pool table three pairs in four are settled by the whole-path screens and one in five
 //! by the windows, at about fifteen nanoseconds a pair instead of the sixty to eighty that
@@ -22,7 +22,7 @@
 //!
 //! [`PathBounds::apart`]: crate::collision::path_bounds::PathBounds
 //! [`PathBounds::set_to`]: crate::collision::path_bounds::PathBounds
-//! [`PathBounds::reach`]: crate::collision::path_bounds::PathBounds
+//! [`PathBounds::screen_distance`]: crate::collision::path_bounds::PathBounds
 //! [`apart_across_chords`]: crate::collision::chord_normals
 
 use super::PerPair;
@@ -103,7 +103,7 @@ pub(crate) fn settled<S: Simd, const D: usize, const K: usize>(
     let radius = lanes_of(s, pairs.contact_distance, first);
     let t_max = lanes_of(s, pairs.t_max, first);
     let zero = s.zero();
-    // `radius + MARGIN·(size_a + size_b + radius)`, as `PathBounds::reach` forms it.
+    // `radius + MARGIN·(size_a + size_b + radius)`, as `PathBounds::screen_distance` forms it.
     let sizes = s.add(s.add(a.size, b.size), radius);
     let reach = s.add(radius, s.mul(s.splat(MARGIN), sizes));
     // Where underflow could count (`with_underflow` would grow the reach): not taken.
@@ -443,6 +443,7 @@ mod tests {
     use crate::collision::path_contact::every_window_screened;
     use crate::path::Path2;
     use crate::simd::{Kernel, Level, dispatch, test_levels};
+    use crate::test_path_rows::RowSpec;
     use crate::test_rng::Rng;
 
     /// [`settled`] on a block, as a kernel to dispatch at a level.
@@ -493,25 +494,29 @@ mod tests {
     impl<const K: usize> Block<K> {
         fn draw(rng: &mut Rng) -> Self {
             let scale = 2f64.powi(rng.below(2020) as i32 - 1060);
+            let spec = RowSpec::<2> {
+                segments: K,
+                every_row_used: true,
+                later_first_start: 1.0,
+                first_start: [-1.0, 1.0],
+                length: [0.0, 2.0],
+                empty: 0.0,
+                pos: RowSpec::each_axis(-3.0, 3.0),
+                continuous: false,
+                vel: RowSpec::each_axis(-2.0, 2.0),
+                acc: RowSpec::each_axis(-2.0, 2.0),
+                last_at_rest: 2.0 / 3.0,
+            };
             let draw_side = |rng: &mut Rng| {
-                let (mut start, mut rows) = (vec![], [vec![], vec![], vec![]]);
-                for _ in 0..LANES {
-                    let mut t = rng.uniform(-1.0, 1.0) * scale;
-                    for k in 0..K {
-                        start.push(t);
-                        t += rng.uniform(0.0, 2.0) * scale;
-                        let at_rest = k + 1 == K && rng.below(3) > 0;
-                        for (r, rows) in rows.iter_mut().enumerate() {
-                            let size = if r == 0 { 3.0 } else { 2.0 };
-                            let mut x = || rng.uniform(-size, size) * scale;
-                            let row = if r > 0 && at_rest {
-                                [0.0; 2]
-                            } else {
-                                [x(), x()]
-                            };
-                            rows.push(row);
-                        }
-                    }
+                // Drawn in units of `scale` (a power of two), then scaled: at the smallest
+                // scales the values underflow into subnormals and neighbouring starts may round
+                // to one (an empty row), as rows drawn at that scale do.
+                let (mut start, mut rows) = spec.draw(rng, LANES);
+                for t in &mut start {
+                    *t *= scale;
+                }
+                for x in rows.iter_mut().flatten().flatten() {
+                    *x *= scale;
                 }
                 // A few rows the lanes cannot take.
                 for _ in 0..rng.below(3) {
@@ -579,7 +584,7 @@ mod tests {
                 };
                 let radius = self.radius[l];
                 let gap = b.whole().0[0] - a.whole().1[0];
-                let miss = a.reach(&b, radius).distance() - gap;
+                let miss = a.screen_distance(&b, radius).value() - gap;
                 if !miss.is_finite() {
                     return false;
                 }
@@ -604,7 +609,8 @@ mod tests {
                 };
                 let (bounds_a, bounds_b) = (PathBounds::<2>::of(a), PathBounds::of(b));
                 let length2 = n[0] * n[0] + n[1] * n[1];
-                let reach = bounds_a.reach(&bounds_b, self.radius[l]).distance() * length2.sqrt();
+                let reach =
+                    bounds_a.screen_distance(&bounds_b, self.radius[l]).value() * length2.sqrt();
                 let gap = other[0] - own[1];
                 let ulps = rng.uniform(-4.0, 4.0) * f64::EPSILON * gap.abs();
                 let by = (reach - gap + ulps) / length2;
@@ -661,8 +667,8 @@ mod tests {
                 PathBounds::<2>::of(a.segments()),
                 PathBounds::of(b.segments()),
             );
-            let reach = bounds_a.reach(&bounds_b, radius);
-            let plain = plain_a && plain_b && bounds_a.plain_reach(&bounds_b, radius);
+            let reach = bounds_a.screen_distance(&bounds_b, radius);
+            let plain = plain_a && plain_b && bounds_a.screen_distance_in_range(&bounds_b, radius);
             let apart = bounds_a.apart(&bounds_b, reach);
             let chords = apart_across_chords(a.segments(), b.segments(), reach);
             Some((plain, apart, chords))

@@ -23,7 +23,7 @@ use super::first_window_lanes::eighth_contacts;
 use super::path_lanes::settled;
 use super::{PerPair, Threads, check_len, run_chunks};
 use crate::collision::path_bounds::PathBounds;
-use crate::collision::path_contact::{Prior, first_bounded_contact};
+use crate::collision::path_contact::{Prior, first_contact_bounded};
 use crate::collision::stage_counts::{Stage, count};
 use crate::error::{InputError, InputErrorKind, check_contact_distance, check_horizon, finite};
 use crate::path::{Names, Segment, locate, segments_from_rows};
@@ -260,7 +260,7 @@ fn path_pairs_in_turn<S: Simd, const D: usize, const K: usize>(
                 for ((&k, &contact), &free) in block.iter().zip(&contacts).zip(&free) {
                     if contact.is_nan() {
                         let prior = if free {
-                            Prior::FirstWindowFree
+                            Prior::FirstWindowScreenedOut
                         } else {
                             Prior::LanesLeft
                         };
@@ -485,7 +485,7 @@ fn pair_time<const D: usize, const K: usize>(
     let radius = check_contact_distance("contact_distance", pairs.contact_distance.get(i))
         .map_err(|e| e.at(i))?;
     let t_max = check_horizon("t_max", pairs.t_max.get(i)).map_err(|e| e.at(i))?;
-    let contact = first_bounded_contact(a, b, [radius, 0.0], t_max, prior);
+    let contact = first_contact_bounded(a, b, [radius, 0.0], t_max, prior);
     Ok(contact.unwrap_or(f64::INFINITY))
 }
 
@@ -534,38 +534,27 @@ pub(super) fn check_side<const D: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_path_rows::RowSpec;
     use crate::test_rng::Rng;
 
     /// `n` random 2-D paths of up to `k` segments in rows of `k` (padded with `+∞` starts):
     /// positions on a table, speeds and accelerations of a rolling or sliding ball, in random
     /// directions, segments of random lengths (sometimes empty), the last often at rest.
     fn random_rows(n: usize, seed: u64, k: usize) -> (Vec<f64>, [Vec<[f64; 2]>; 3]) {
-        let mut rng = Rng(seed);
-        let (mut start, mut pos, mut vel, mut acc) = (vec![], vec![], vec![], vec![]);
-        for _ in 0..n {
-            let used = 1 + rng.below(k as u64) as usize;
-            let mut t = 0.0;
-            for k in 0..k {
-                let at_rest = k + 1 == used && rng.below(2) == 0;
-                let draw = |rng: &mut Rng, scale: f64| {
-                    if at_rest {
-                        [0.0; 2]
-                    } else {
-                        [rng.uniform(-scale, scale), rng.uniform(-scale, scale)]
-                    }
-                };
-                start.push(if k < used { t } else { f64::INFINITY });
-                pos.push([rng.uniform(0.0, 2.5), rng.uniform(0.0, 1.3)]);
-                vel.push(draw(&mut rng, 3.0));
-                acc.push(draw(&mut rng, 2.0));
-                t += if rng.below(8) == 0 {
-                    0.0
-                } else {
-                    rng.uniform(0.0, 2.0)
-                };
-            }
+        RowSpec::<2> {
+            segments: k,
+            every_row_used: false,
+            later_first_start: 0.0,
+            first_start: [0.0, 0.0],
+            length: [0.0, 2.0],
+            empty: 0.125,
+            pos: [[0.0, 2.5], [0.0, 1.3]],
+            continuous: false,
+            vel: RowSpec::each_axis(-3.0, 3.0),
+            acc: RowSpec::each_axis(-2.0, 2.0),
+            last_at_rest: 0.5,
         }
-        (start, [pos, vel, acc])
+        .draw(&mut Rng(seed), n)
     }
 
     /// The chunk at every level the CPU has gives the portable copy's bits, which are the
@@ -700,7 +689,10 @@ mod tests {
             // A NaN in pair 7's last row of B: the same error, naming the same segment.
             let mut bad = b.clone();
             bad.1[1][7 * k + k - 1][0] = f64::NAN;
-            bad.0[7 * k + k - 1] = 9.0; // used, whatever the draw
+            // Every row of pair 7 used, whatever the draw.
+            for (j, start) in bad.0[7 * k..8 * k].iter_mut().enumerate() {
+                *start = j as f64;
+            }
             let err = run(&pairs(rows(&a, k), rows(&bad, k))).unwrap_err();
             assert_eq!(
                 err.to_string(),
@@ -711,7 +703,7 @@ mod tests {
 
     /// The scalar search on two checked paths, `∞` for none.
     fn first_path_contact_of(a: &[Segment<2>], b: &[Segment<2>], radius: f64) -> f64 {
-        crate::collision::path_contact::first_path_contact(a, b, [radius, 0.0], f64::INFINITY)
+        crate::collision::path_contact::first_contact_of_paths(a, b, [radius, 0.0], f64::INFINITY)
             .unwrap_or(f64::INFINITY)
     }
 }

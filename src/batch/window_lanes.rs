@@ -10,7 +10,7 @@
 //! window from the later of their starts to the earlier of their ends, if it is not empty.
 //! Every pair `(i, j)` is tried, each lane keeping only its own windows, so that the lanes need
 //! no walk and no branch on the data. Each window is proven apart as the pair's own search
-//! would prove it ([`first_bounded_contact`]): by its two segments' boxes, or else by the box
+//! would prove it ([`first_contact_bounded`]): by its two segments' boxes, or else by the box
 //! or the chord of its separation, formed from the two segments' own inputs in time since
 //! their own starts; the window that lasts for ever only by the segment boxes (the search
 //! would bound its length first). Where the pair's search would find the same proof, the
@@ -26,7 +26,7 @@
 //! [`PathBounds::segments_apart`]: crate::collision::path_bounds::PathBounds
 //! [`apart_on_window`]: crate::collision::window_box
 //! [`apart_across_window_chord`]: crate::collision::window_chord
-//! [`first_bounded_contact`]: crate::collision::path_contact
+//! [`first_contact_bounded`]: crate::collision::path_contact
 
 use super::path_lanes::{LaneBoxes, LaneRows};
 use crate::collision::LONGEST_WINDOW;

@@ -10,7 +10,7 @@
 use super::crossing::FirstWindow;
 use super::prefilter::PairInput;
 use super::straight;
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 use crate::motion::Ball;
 
 /// The first contact from the first stop on, for balls `a` and `b` whose first window holds
@@ -83,8 +83,8 @@ mod tests {
 
     #[test]
     fn where_it_applies_it_is_the_search_of_the_second_window() {
-        // Random moving pairs at scales 1e-6 to 1e6 whose first window is free: where the
-        // closed form applies, the search (which calls it) agrees with it, and the window
+        // Random moving pairs at scales 1e-6 to 1e6 whose first window is screened out: where
+        // the closed form applies, the search (which calls it) agrees with it, and the window
         // search it replaces agrees to within the floor of the problem.
         let mut rng = Rng(0xa5);
         let mut checked = 0;

@@ -17,36 +17,36 @@
 //! not an axis: a drift whose projected velocity rounds to zero could still leave it, so any
 //! other path proves nothing here.
 //!
-//! The projections are formed on the caller's numbers with the path bounds' [`Reach`]: the
+//! The projections are formed on the caller's numbers with the path bounds' [`ScreenDistance`]: the
 //! normal's components are at most ½ in magnitude, so that every projected value and every
 //! intermediate of its hull is no larger than the largest per-axis term of the bounds' size,
 //! and their roundings (and underflows) are covered by the same margin, as one more axis
 //! would be. Where a projection overflows, so does the pair's size, and an infinite or NaN
-//! reach proves nothing.
+//! screen distance proves nothing.
 
-use super::path_bounds::{Reach, bernstein_hull};
+use super::path_bounds::{ScreenDistance, bernstein_hull};
 use crate::path::Segment;
 
 /// Whether balls on paths `a` and `b` (valid, [`Path::segments`](crate::Path::segments))
-/// provably never come within `reach` of each other: on the normal of either path's chord,
+/// provably never come within `distance` of each other: on the normal of either path's chord,
 /// their spans are farther apart than it (times the normal's length, for it is not
 /// normalised to 1, see [`chord_normal`]).
 ///
 /// Rigour: the normal `n` has components of magnitude at most ½ (+ a rounding), so that each
 /// projection `n·x` is off by no more than a few roundings of the magnitudes the path
-/// bounds' size sums, far below the margin in `reach`, and overflows only where that size
+/// bounds' size sums, far below the margin in `distance`, and overflows only where that size
 /// does; its length, `√(n·n)` to a few
 /// roundings (far below that margin too), turns a proof on `n` into one on the unit normal.
 #[inline(always)]
 pub(crate) fn apart_across_chords<const D: usize>(
     a: &[Segment<D>],
     b: &[Segment<D>],
-    reach: Reach,
+    distance: ScreenDistance,
 ) -> bool {
     if !(rests_at_end(a) && rests_at_end(b)) {
         return false;
     }
-    apart_across_chord_of(a, b, reach) || apart_across_chord_of(b, a, reach)
+    apart_across_chord_of(a, b, distance) || apart_across_chord_of(b, a, distance)
 }
 
 /// Whether paths `own` and `other` (both ending at rest) are apart on the normal of `own`'s
@@ -55,7 +55,7 @@ pub(crate) fn apart_across_chords<const D: usize>(
 fn apart_across_chord_of<const D: usize>(
     own: &[Segment<D>],
     other: &[Segment<D>],
-    reach: Reach,
+    distance: ScreenDistance,
 ) -> bool {
     let Some(normal) = chord_normal(own) else {
         return false;
@@ -66,7 +66,7 @@ fn apart_across_chord_of<const D: usize>(
         return false;
     };
     // The spans hold the paths' ends: unless the other path starts and ends on the same side
-    // of where this one starts, beyond the reach (on a normal at least ½ long), the spans
+    // of where this one starts, beyond the screen distance (on a normal at least ½ long), the spans
     // cannot be apart. Most pairs that the boxes leave stop here, before any span or square
     // root is formed. (An empty first segment's position is no part of its path: this test
     // may then give up on a pair the spans would prove, never the other way round.)
@@ -75,16 +75,16 @@ fn apart_across_chord_of<const D: usize>(
         along(&normal, &other_start.position),
         along(&normal, &other_end.position),
     ];
-    // (Against less than half the reach: the normal is at least ½ long, less a rounding.)
-    let least = 0.49 * reach.distance();
+    // (Against less than half the distance: the normal is at least ½ long, less a rounding.)
+    let least = 0.49 * distance.value();
     let above = ends[0].min(ends[1]) - centre > least;
     let below = centre - ends[0].max(ends[1]) > least;
     if !(above | below) {
         return false;
     }
-    let reach = reach.distance() * (normal[0] * normal[0] + normal[1] * normal[1]).sqrt();
+    let distance = distance.value() * (normal[0] * normal[0] + normal[1] * normal[1]).sqrt();
     let (own, other) = (span(own, &normal), span(other, &normal));
-    (own[0] - other[1] > reach) | (other[0] - own[1] > reach)
+    (own[0] - other[1] > distance) | (other[0] - own[1] > distance)
 }
 
 /// The normal of `own`'s chord and both paths' spans on it, as the screen forms them (for
@@ -188,7 +188,7 @@ mod tests {
 
     fn apart(a: &[Segment<2>], b: &[Segment<2>], radius: f64) -> bool {
         let (ba, bb) = (PathBounds::<2>::of(a), PathBounds::<2>::of(b));
-        apart_across_chords(a, b, ba.reach(&bb, radius))
+        apart_across_chords(a, b, ba.screen_distance(&bb, radius))
     }
 
     /// The screened and unscreened answers of the pair.
@@ -208,7 +208,7 @@ mod tests {
         let a = roll([0.0, 0.0], [4.0, 4.0]);
         let b = roll([1.0, 0.0], [5.0, 4.0]);
         let (ba, bb) = (PathBounds::<2>::of(&a), PathBounds::<2>::of(&b));
-        assert!(!ba.apart(&bb, ba.reach(&bb, 0.7)));
+        assert!(!ba.apart(&bb, ba.screen_distance(&bb, 0.7)));
         assert!(apart(&a, &b, 0.7) && apart(&b, &a, 0.7));
         assert!(!apart(&a, &b, 0.71) && !apart(&b, &a, 0.71));
         assert_eq!(answers(&a, &b, 0.7), [None, None]);
@@ -330,7 +330,15 @@ mod tests {
             })
             .collect();
         let (br, bu) = (PathBounds::<3>::of(&run), PathBounds::<3>::of(&rising));
-        assert!(apart_across_chords(&run, &rising, br.reach(&bu, 1.9)));
-        assert!(!apart_across_chords(&run, &rising, br.reach(&bu, 2.1)));
+        assert!(apart_across_chords(
+            &run,
+            &rising,
+            br.screen_distance(&bu, 1.9)
+        ));
+        assert!(!apart_across_chords(
+            &run,
+            &rising,
+            br.screen_distance(&bu, 2.1)
+        ));
     }
 }

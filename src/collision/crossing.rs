@@ -8,7 +8,7 @@
 //! contacts themselves:
 //!
 //! - on the first window (both balls moving), the search's own Bernstein test
-//!   ([`proves_positive`]) on the very window the search would build, bit for bit, so the
+//!   ([`window_screened_out`]) on the very window the search would build, bit for bit, so the
 //!   search can only agree;
 //! - on the second window one ball rests at its stopping point while the other runs on
 //!   along a straight segment: the distance from that point to that segment, against the
@@ -17,17 +17,17 @@
 
 use nalgebra::Vector2;
 
-use super::exclusion::proves_positive;
+use super::exclusion::window_screened_out;
 use super::long_window::long_window;
 use super::prefilter::{LIMIT, MARGIN, PairInput, valid};
 use super::{LONGEST_WINDOW, normal_time_unit};
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// The first window of two moving balls with friction, `[0, min(τ_A, τ_B)]`, exactly as
 /// [`first_contact`](super::first_contact) builds and scales it.
 pub(crate) struct FirstWindow {
     /// Whether the pair qualifies for the lane-wise tests: valid, both balls moving with
-    /// friction, every magnitude in the plain range, a window of normal length.
+    /// friction, every magnitude in range ([`LIMIT`]), a window of normal length.
     pub qualifies: bool,
     /// The relative motion from time 0, in seconds: the search's own `Gap::between(a, b, r, 0)`.
     pub initial: Gap,
@@ -53,18 +53,18 @@ impl FirstWindow {
         let (square_a, square_b) = (vax * vax + vay * vay, vbx * vbx + vby * vby);
         let (speed_a, speed_b) = (square_a.sqrt(), square_b.sqrt());
         let (tau_a, tau_b) = (speed_a / mu_a, speed_b / mu_b);
-        let plain = |x: f64| (1.0 / LIMIT..=LIMIT).contains(&x);
+        let in_range = |x: f64| (1.0 / LIMIT..=LIMIT).contains(&x);
         // The window the search searches: the horizon plays no part in it (it only cuts the
         // answer), so that a contact before the horizon comes back bit for bit as without one.
         let length = tau_a.min(tau_b).min(LONGEST_WINDOW);
         let qualifies = valid(pair)
-            & plain(square_a)
-            & plain(square_b)
-            & plain(mu_a)
-            & plain(mu_b)
+            & in_range(square_a)
+            & in_range(square_b)
+            & in_range(mu_a)
+            & in_range(mu_b)
             & (pair.pos_a[0].abs().max(pair.pos_a[1].abs()) <= LIMIT)
             & (pair.pos_b[0].abs().max(pair.pos_b[1].abs()) <= LIMIT)
-            & plain(radius)
+            & in_range(radius)
             & (length >= f64::MIN_POSITIVE);
         let unit = normal_time_unit(length);
         let initial = Gap {
@@ -88,17 +88,17 @@ impl FirstWindow {
 
 /// Whether two valid moving balls with friction provably never touch. `false` means "not
 /// proven" (and is the answer for inputs that do not qualify: a ball at rest or without
-/// friction, magnitudes outside the plain range, a horizon of 0). The batch takes the two
+/// friction, magnitudes out of range, a horizon of 0). The batch takes the two
 /// proofs apart ([`apart_by_window`]); the tests take them together.
 #[cfg(test)]
-pub(crate) fn never_meet(pair: &PairInput) -> bool {
+pub(crate) fn screened_out_by_crossing(pair: &PairInput) -> bool {
     let (first, second) = apart_by_window(pair);
     first & second
 }
 
-/// `never_meet`'s proofs one window at a time: the balls never touch while both move (the
-/// first window), and never after one has stopped (the second window and after). Each is
-/// `false` for inputs that do not qualify.
+/// `screened_out_by_crossing`'s proofs one window at a time: the balls never touch while both
+/// move (the first window), and never after one has stopped (the second window and after).
+/// Each is `false` for inputs that do not qualify.
 #[inline(always)]
 pub(crate) fn apart_by_window(pair: &PairInput) -> (bool, bool) {
     let [vax, vay] = pair.vel_a;
@@ -107,7 +107,7 @@ pub(crate) fn apart_by_window(pair: &PairInput) -> (bool, bool) {
     let window = FirstWindow::of(pair);
     let [tau_a, tau_b] = window.tau;
     // A proof up to the horizon is enough: a contact after it is none.
-    let first = proves_positive(&window.gap, window.end.min(t_max / window.unit));
+    let first = window_screened_out(&window.gap, window.end.min(t_max / window.unit));
 
     // The second window: the ball that stops first rests at its stopping point; the other
     // runs on from where it is at that moment to where it stops.
@@ -176,7 +176,7 @@ mod tests {
     fn crossing_at_different_times_is_proven() {
         // A crosses x = 2 along y = 0 at about 0.54 s; B, coming up x = 2 from y = −4.5,
         // stops right on A's path, at (2, 0), but only at 3 s, when A is at x = 7.5.
-        assert!(never_meet(&pair(
+        assert!(screened_out_by_crossing(&pair(
             [0.0, 0.0],
             [4.0, 0.0],
             [2.0, -4.5],
@@ -187,7 +187,7 @@ mod tests {
     #[test]
     fn a_contact_is_never_proven_away() {
         // Head-on along x: they meet.
-        assert!(!never_meet(&pair(
+        assert!(!screened_out_by_crossing(&pair(
             [0.0, 0.0],
             [2.0, 0.0],
             [1.0, 0.0],
@@ -198,7 +198,7 @@ mod tests {
     #[test]
     fn a_ball_running_into_the_stopped_one_is_caught_on_the_second_window() {
         // A stops at x = 0.5 (after 1 s); B, slower off the mark from x = 3, reaches it later.
-        assert!(!never_meet(&PairInput {
+        assert!(!screened_out_by_crossing(&PairInput {
             friction_b: 0.25,
             ..pair([0.0, 0.0], [1.0, 0.0], [3.0, 0.0], [-1.5, 0.0])
         }));
@@ -225,10 +225,10 @@ mod tests {
                 ..ok
             },
         ] {
-            assert!(!never_meet(&bad), "{bad:?}");
+            assert!(!screened_out_by_crossing(&bad), "{bad:?}");
         }
         // The window is the search's whatever the horizon; the proof needs only reach it.
-        assert!(never_meet(&PairInput { t_max: 0.0, ..ok }));
+        assert!(screened_out_by_crossing(&PairInput { t_max: 0.0, ..ok }));
     }
 
     #[test]
@@ -253,7 +253,7 @@ mod tests {
                 },
             );
             let found = search(&input).is_some();
-            if never_meet(&input) {
+            if screened_out_by_crossing(&input) {
                 proven += 1;
                 assert!(!found, "{input:?}");
             }
@@ -303,7 +303,7 @@ mod tests {
             );
             let (a, b) = if a_rests { (rest, run) } else { (run, rest) };
             let input = pair_of(a, b, radius, f64::INFINITY);
-            if never_meet(&input) {
+            if screened_out_by_crossing(&input) {
                 proven += 1;
                 assert_eq!(search(&input), None, "{input:?}");
             }

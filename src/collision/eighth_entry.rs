@@ -1,4 +1,4 @@
-//! The first entry on a window whose first open eighth is plain: found by a fixed number of
+//! The first entry on a window whose first open eighth is isolated: found by a fixed number of
 //! Newton steps, without a branch, so that a batch runs it eight windows at a time.
 //!
 //! Most contacts are transversal: the first eighth of the window that the Bernstein
@@ -22,7 +22,7 @@ use super::exclusion::{OpenEighth, first_open_eighth};
 use super::long_window::long_window;
 use super::narrow_dip::narrow;
 use super::{in_own_unit, normal_time_unit};
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// What [`eighth_entry`] settles about a window.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -31,12 +31,12 @@ pub(crate) struct EighthEntry {
     pub entry: f64,
     /// The first entry is `entry`.
     pub found: bool,
-    /// The window holds no entry, and the gap ends it positive.
-    pub no_entry: bool,
+    /// The window is screened out: it holds no entry, and the gap ends it positive.
+    pub screened_out: bool,
 }
 
 /// The first entry on the window `[0, end]` of `gap` (time scaled so that `end ≤ 1`), where
-/// its first open `eighth` is plain and the gap is positive at its start; `qualifies`: the
+/// its first open `eighth` is isolated and the gap is positive at its start; `qualifies`: the
 /// caller's own conditions (magnitudes in the range where its arithmetic is exact enough). With
 /// `one_pair`, the Newton steps whose results would be masked out are skipped and the steps
 /// stop at convergence (lanes take them all: the results are the same).
@@ -76,10 +76,10 @@ pub(crate) fn eighth_entry<const D: usize>(
         )
     };
     let g_lowest = gap.value(lowest);
-    let plain = qualifies & (gap.value(0.0) > 0.0) & (g_lo > 0.0);
+    let starts_positive = qualifies & (gap.value(0.0) > 0.0) & (g_lo > 0.0);
     // The entry lies between the eighth's start and its end (a single root) or its minimum.
     let (right, g_right) = if root { (hi, g_hi) } else { (lowest, g_lowest) };
-    let crossing = plain & (root | dip) & (g_right < 0.0);
+    let crossing = starts_positive & (root | dip) & (g_right < 0.0);
     // From a minimum, where the root may be near-double, the quadratic model there is
     // already close (where a secant would crawl in): g(m) + c·(u − m)² = 0.
     let model = right - (-g_right / gap.half_curvature(right)).sqrt();
@@ -111,11 +111,12 @@ pub(crate) fn eighth_entry<const D: usize>(
     };
     // A dip narrower than the float grid is not called a miss here: the window search decides
     // it on the closest approach (`narrow_dip`).
-    let missed = plain & dip & lowest_found & (g_lowest >= 0.0) & (g_hi > 0.0) & !narrow(gap);
+    let missed =
+        starts_positive & dip & lowest_found & (g_lowest >= 0.0) & (g_hi > 0.0) & !narrow(gap);
     EighthEntry {
         entry,
         found: crossing & entry_found,
-        no_entry: missed & eighth.rest_positive,
+        screened_out: missed & eighth.rest_positive,
     }
 }
 
@@ -124,9 +125,9 @@ pub(crate) fn eighth_entry<const D: usize>(
 /// the pair's unit of length, `length` its length bounded as the search bounds it
 /// ([`bounded_length`](super::bounded_length), which the caller's screens have formed), `before`
 /// whether the gap was positive just before it. The entry is in time since the window's start,
-/// as the search gives it. Nothing is settled where the window is not plain, or the radius is
+/// as the search gives it. Nothing is settled where the window is not short, or the radius is
 /// so small beside the motion that the gap's squares could underflow. With `ONE_PAIR`, a
-/// window without a plain eighth returns at once, and the Newton steps stop at convergence;
+/// window without an isolated eighth returns at once, and the Newton steps stop at convergence;
 /// without it (lanes), every step is taken, without a branch: the same answer.
 #[inline(always)]
 pub(crate) fn window_eighth<const D: usize, const ONE_PAIR: bool>(
@@ -140,21 +141,21 @@ pub(crate) fn window_eighth<const D: usize, const ONE_PAIR: bool>(
     let nothing = EighthEntry {
         entry: f64::NAN,
         found: false,
-        no_entry: false,
+        screened_out: false,
     };
-    let plain = (length >= f64::MIN_POSITIVE) & !long_window(gap, length);
-    // (Where the window is not plain, these are never used.)
+    let short = (length >= f64::MIN_POSITIVE) & !long_window(gap, length);
+    // (Where the window is not short, these are never used.)
     let h = normal_time_unit(length);
     let scaled = in_own_unit(&gap.time_scaled(h));
     let end = length / h;
     let eighth = first_open_eighth(&scaled, end);
-    let qualifies = plain & before & (scaled.radius >= RADIUS_FLOOR);
+    let qualifies = short & before & (scaled.radius >= RADIUS_FLOOR);
     // Every eighth proven positive: no entry, the gap positive at the end (the search would
     // prove it piece by piece).
     let proven = qualifies & (eighth.index == 8.0);
     if ONE_PAIR && proven {
         return EighthEntry {
-            no_entry: true,
+            screened_out: true,
             ..nothing
         };
     }
@@ -165,7 +166,7 @@ pub(crate) fn window_eighth<const D: usize, const ONE_PAIR: bool>(
     EighthEntry {
         entry: found.entry * h,
         found: found.found,
-        no_entry: found.no_entry | proven,
+        screened_out: found.screened_out | proven,
     }
 }
 

@@ -2,7 +2,7 @@
 
 use super::exclusion::{OpenPieces, Shape};
 use super::narrow_dip::{narrow, narrow_entry};
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 use crate::poly::{bracketed_newton, solve_quadratic};
 
 /// The critical points of `g` in `(0, end)`, ascending: the roots of `½g′ = d·d′`.

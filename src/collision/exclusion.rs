@@ -12,15 +12,15 @@
 //! ball round, and that fictitious return would often spoil the proof. Where the first test
 //! fails, the window is halved (de Casteljau, exact halvings and one rounding per average),
 //! which tightens the bounds quadratically around a near miss: three times at most in the
-//! batch's lane-wise test ([`proves_positive`]), six in the search ([`OpenPieces`]), which
+//! batch's lane-wise test ([`window_screened_out`]), six in the search ([`OpenPieces`]), which
 //! lists the pieces, in time order, that it cannot prove positive, with what their
 //! coefficients show: a single root (the first crossing, if it is the first such piece), or a
 //! single minimum (a near miss or a grazing contact, settled there by the search).
 
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// How many times [`OpenPieces`] may halve a window (its margin, shared with
-/// [`proves_positive`], covers the rounding of that many halvings).
+/// [`window_screened_out`], covers the rounding of that many halvings).
 const ISOLATING_SPLITS: u32 = 6;
 
 /// Whether `g(u) > 0` is proven for every `u ∈ [0, end]` (time already scaled so that
@@ -34,7 +34,7 @@ const ISOLATING_SPLITS: u32 = 6;
 /// coefficients and margin and subdivides further: every window proven here, it proves too,
 /// so a pair that the batch settles with this test is one the search answers the same way.
 #[inline(always)]
-pub(crate) fn proves_positive<const D: usize>(gap: &Gap<D>, end: f64) -> bool {
+pub(crate) fn window_screened_out<const D: usize>(gap: &Gap<D>, end: f64) -> bool {
     let (b, margin) = bernstein(gap, end);
     positive_within_3_halvings(b, margin)
 }
@@ -46,7 +46,7 @@ pub(crate) fn proves_positive<const D: usize>(gap: &Gap<D>, end: f64) -> bool {
 /// whether every later eighth is proven positive.
 ///
 /// Branch-free (every eighth is evaluated), so that a batch runs it lane-wise. The margin is
-/// that of [`proves_positive`], and each eighth comes from three exact halvings.
+/// that of [`window_screened_out`], and each eighth comes from three exact halvings.
 #[inline(always)]
 pub(crate) fn first_open_eighth<const D: usize>(gap: &Gap<D>, end: f64) -> OpenEighth {
     let (b, margin) = bernstein(gap, end);
@@ -71,9 +71,9 @@ pub(crate) fn first_open_eighth<const D: usize>(gap: &Gap<D>, end: f64) -> OpenE
 }
 
 /// Whether the Bernstein coefficients of the whole window `[0, end]` prove `g > 0`: the first
-/// test of [`proves_positive`] and [`OpenPieces`], alone.
+/// test of [`window_screened_out`] and [`OpenPieces`], alone.
 #[inline(always)]
-pub(crate) fn proves_positive_at_once<const D: usize>(gap: &Gap<D>, end: f64) -> bool {
+pub(crate) fn window_screened_out_at_once<const D: usize>(gap: &Gap<D>, end: f64) -> bool {
     let (b, margin) = bernstein(gap, end);
     above(&b, margin)
 }
@@ -106,7 +106,7 @@ fn one_root(b: &[f64; 5], margin: f64) -> bool {
 /// open (not proven positive), in time order: an iterator.
 ///
 /// Pieces not proven positive are halved (even where `g` may cross zero at their end, to
-/// isolate the crossing) until their shape is plain (a single root or a single minimum), or
+/// isolate the crossing) until their shape is isolated (a single root or a single minimum), or
 /// they are at the finest level, or start at or below the margin; those are the open pieces.
 /// Everything between them is proven positive.
 pub(crate) struct OpenPieces {
@@ -168,7 +168,7 @@ impl Iterator for OpenPieces {
             if above(&b, margin) {
                 continue;
             }
-            // A piece whose shape is plain already needs no halving.
+            // A piece whose shape is isolated already needs no halving.
             let shape = shape(&b, margin);
             if shape != Shape::Other || depth == ISOLATING_SPLITS || b[0] <= margin {
                 return Some(OpenPiece {
@@ -306,7 +306,7 @@ mod tests {
 
     #[test]
     fn far_apart_and_receding_is_excluded() {
-        assert!(proves_positive(
+        assert!(window_screened_out(
             &gap([5.0, 0.0], [1.0, 0.0], [-0.5, 0.0]),
             1.0
         ));
@@ -315,22 +315,22 @@ mod tests {
     #[test]
     fn contact_inside_the_window_is_never_excluded() {
         // Head-on: |d| = 3 − 4u reaches 1 at u = 0.5.
-        assert!(!proves_positive(
+        assert!(!window_screened_out(
             &gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]),
             1.0
         ));
         // Grazing from above by 1e-15: within rounding, so not excluded either.
-        assert!(!proves_positive(
+        assert!(!window_screened_out(
             &gap([-1.0, 1.0 + 1e-15], [2.0, 0.0], [0.0, 0.0]),
             1.0
         ));
         // Grazing from above by 1e-12: above rounding, and halving proves the miss.
-        assert!(proves_positive(
+        assert!(window_screened_out(
             &gap([-1.0, 1.0 + 1e-12], [2.0, 0.0], [0.0, 0.0]),
             1.0
         ));
         // Contact just inside the window's end (|d| = 3 − 4u = 1 at u = 0.5).
-        assert!(!proves_positive(
+        assert!(!window_screened_out(
             &gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]),
             0.5 + 1e-9
         ));
@@ -341,8 +341,8 @@ mod tests {
         // |d| = 3 − 4u reaches 1 at u = 0.5, after a window that ends at u = 0.4 (a ball
         // stops there: past it the formula is fictitious). [0, 1] could not be proven.
         let g = gap([3.0, 0.0], [-4.0, 0.0], [0.0, 0.0]);
-        assert!(proves_positive(&g, 0.4));
-        assert!(!proves_positive(&g, 1.0));
+        assert!(window_screened_out(&g, 0.4));
+        assert!(!window_screened_out(&g, 1.0));
     }
 
     #[test]
@@ -352,7 +352,7 @@ mod tests {
         let [a4, a3, a2, a1, a0] = g.quartic();
         let b2 = a0 + 0.5 * a1 + a2 / 6.0;
         assert!(b2 < 0.0 && a4 == 0.0 && a3 == 0.0); // not provable without halving
-        assert!(proves_positive(&g, 1.0));
+        assert!(window_screened_out(&g, 1.0));
     }
 
     #[test]
@@ -389,7 +389,7 @@ mod tests {
         // settles. Three halvings prove nothing either way.
         for y in [1.0000001, 0.9999999] {
             let g = gap([-0.9, y], [2.0, 0.0], [0.0, 0.0]);
-            assert!(!proves_positive(&g, 1.0));
+            assert!(!window_screened_out(&g, 1.0));
             let pieces: Vec<_> = OpenPieces::new(&g, 1.0).collect();
             assert_eq!(pieces.len(), 1, "{pieces:?}");
             assert_eq!(pieces[0].shape, Shape::OneDip);
@@ -397,7 +397,7 @@ mod tests {
         }
         // Passing 0.2 above: a miss the coefficients show at once.
         let g = gap([-0.9, 1.2], [2.0, 0.0], [0.0, 0.0]);
-        assert!(proves_positive(&g, 1.0));
+        assert!(window_screened_out(&g, 1.0));
         assert_eq!(OpenPieces::new(&g, 1.0).next(), None);
     }
 }

@@ -16,7 +16,7 @@
 use nalgebra::SVector;
 
 use super::prefilter::PairInput;
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 use crate::motion::Ball;
 
 /// The unit of a pair whose largest length (in magnitude) is `largest`: multiplying by

@@ -9,17 +9,17 @@
 //!
 //! So a window longer than [`LONG`]` · T` is cut: a first piece of `LONG · T`, then pieces
 //! each `LONG` times the time scale of the gap at their own start (re-expanded there, as
-//! [`Gap::between`](crate::coefficients::Gap::between) does at a window's start), at least
+//! [`Gap::between`](crate::gap::Gap::between) does at a window's start), at least
 //! doubling, until the window's end. The time scale can shrink inside a piece (a ball that
-//! runs far away and comes back), so a piece is searched as it is only where it is plain even
-//! measured by the radius ([`plain_piece`]), and otherwise halved, its halves proven apart by
+//! runs far away and comes back), so a piece is searched as it is only where it is short even
+//! measured by the radius ([`short_piece`]), and otherwise halved, its halves proven apart by
 //! their boxes or halved again, within a budget. Windows up to `LONG · T` (every window of
 //! balls on a table, by many orders of magnitude) are searched whole, as before.
 //!
 //! The test is [`long_window`], shared by the search and the batch's lanes (which leave long
 //! windows to the search), on the same numbers, so both take the same steps.
 
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// How many of its own time scales a window may last before it is cut: `2⁴⁰ ≈ 1.1e12`, far
 /// below where the window search loses contacts (`~10²⁸`), far above any window on a table.
@@ -40,12 +40,12 @@ pub(crate) fn long_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool {
     (run2 > LONG2 * size2) | (bend2 > LONG2 * (LONG2 * size2))
 }
 
-/// Whether a piece of `length` is plain wherever the balls may touch on it: no longer than
+/// Whether a piece of `length` is short wherever the balls may touch on it: no longer than
 /// [`LONG`] times the time the motion takes to cover the radius at its largest speed on the
 /// piece (`|v| + |a|·length`), nor than `LONG` times `√(r/|a|)`. Near a contact the
 /// separation is about the radius, so this bounds the time scale there, whatever it is at the
 /// piece's start.
-pub(crate) fn plain_piece<const D: usize>(gap: &Gap<D>, length: f64) -> bool {
+pub(crate) fn short_piece<const D: usize>(gap: &Gap<D>, length: f64) -> bool {
     let a = gap.acceleration.norm();
     let speed = gap.velocity.norm() + a * length;
     (length * speed <= LONG * gap.radius) & (length * (length * a) <= LONG * (LONG * gap.radius))

@@ -14,69 +14,37 @@
 //! | prefilter | `prefilter.rs` | the balls' straight runs to rest stay apart: never a contact | `collision_time`, scene, batch lanes |
 //! | crossing | `crossing.rs` | moving balls whose runs cross are never there at the same time | `collision_time`, scene, batch lanes |
 //! | straight | `straight.rs` (`first_contact`, `contact`) | one ball at rest: the contact in closed form | `collision_time`, scene, batch lanes |
-//! | moving entry | `moving_entry.rs` | both moving, a plain crossing in the first window: the contact by the eighth entry below, cut by the horizon | `collision_time`, scene, batch lanes |
+//! | moving entry | `moving_entry.rs` | both moving, an isolated crossing in the first window: the contact by the eighth entry below, cut by the horizon | `collision_time`, scene, batch lanes |
 //! | after stop | `after_stop.rs` | after the first stop, the mover against a ball at rest: closed form | `collision_time`, scene, batch lanes |
 //! | **paths** | | | |
-//! | path bounds | `path_bounds.rs`; lane-wise, `batch/path_lanes.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch; rows of 2 and 3 segments eight pairs at a time on AVX-512 CPUs, the same proof to the bit); not for two paths of one segment each, whose one window goes straight to the window's stages |
+//! | path bounds | `path_bounds.rs`; lane-wise, `batch/path_lanes.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch; rows of 2 and 3 segments eight pairs at a time, lane-wise, at the SIMD levels that run the lane stages, the same proof to the bit); not for two paths of one segment each, whose one window goes straight to the window's stages |
 //! | chord normals | `chord_normals.rs` | on the normal of either path's chord (from where its ball starts to where it rests), the two paths' spans are apart: never a contact | `path_collision_time`, `path_collision_times`, after the path bounds (lane-wise with them in `batch/path_lanes.rs`) |
 //! | segment boxes | `path_bounds.rs` (`segments_apart`) | the boxes of the two segments active on a window (kept with the path bounds) are apart: no contact on the window, and no motion formed | path windows |
 //! | path contact | `path_contact.rs` | the window loop: windows between segment starts of either path, each formed from the two active segments in time since their own starts | `path_collision_time`, `path_collision_times` |
 //! | (counts) | `stage_counts.rs` | how many pairs and windows each path stage settles (cargo feature `stage-counts`) | the benchmarks |
 //! | window box | `window_box.rs` | the box the separation sweeps over one window keeps out of the contact distance | path windows; pieces of long windows |
 //! | window chord | `window_chord.rs` | across the chord of the separation's run over one window, its span keeps out of the contact distance on one side | path windows, after the window box |
-//! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` on AVX-512 CPUs, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
+//! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` at the SIMD levels that run the lane stages, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
 //! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |
-//! | eighth entry | `eighth_entry.rs` | a window whose first open eighth is plain (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`) |
-//! | (first-window lanes) | `batch/first_window_lanes.rs`, `path_contact.rs` (`PathFirstWindow`) | the eighth entry on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window free (the walk starts after it) | `path_collision_times` on AVX-512 CPUs, rows of 2 and 3 segments |
+//! | eighth entry | `eighth_entry.rs` | a window whose first open eighth is isolated (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`) |
+//! | (first-window lanes) | `batch/first_window_lanes.rs`, `path_contact.rs` (`PathFirstWindow`) | the eighth entry on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window screened out (the walk starts after it) | `path_collision_times` at the SIMD levels that run the lane stages, rows of 2 and 3 segments |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
 //! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `entry` (for `search_window`), `crossing`, `moving_entry` |
 //! | entry | `entry.rs` | the first + → − sign change on the pieces left: critical points, bracketed Newton | `search_window` |
 //! | narrow dip | `narrow_dip.rs` | a dip whose float samples stay positive, the radius tiny beside the motion (`≤ 2⁻⁴⁰`): a contact if the closest approach, `|d × d′|/|d′|` from the cross product's own coefficients, is within the radius | `entry` (its dips and minima); `eighth_entry` only declines to call such a dip a miss |
 //!
-//! ## Friction balls
+//! The friction balls' batch lanes (`prefilter`, `crossing`, `moving_entry`, lane-wise in
+//! `crate::batch`) run at every SIMD level ([`crate::simd`]: portable, AVX2 with FMA, AVX-512,
+//! NEON). The path lanes (`batch/path_lanes.rs`, `batch/window_lanes.rs`,
+//! `batch/first_window_lanes.rs`) are compiled and tested at every level but run only where the
+//! vectors hold four or more lanes (AVX2 with FMA, AVX-512: `Simd::RUNS_LANE_STAGES`); at the
+//! portable and NEON levels those pairs go one by one, to the same bits.
 //!
-//! The time axis splits at the two stop times into at most three windows; on each, both
-//! motions are polynomial and the gap `g(t) = |x_A(t) − x_B(t)|² − radius²` is a quartic
-//! (see [`Gap`]). The collision is the first `t ≥ 0` where `g` goes from positive to
-//! negative, searched window by window:
-//!
-//! 1. time is scaled by a power of two to the window (exact), so each window is `[0, ≤ 1]`;
-//! 2. a Bernstein-basis subdivision (`exclusion`) proves most of the window contact-free, and
-//!    shows the shape of `g` on the pieces it cannot: on the first piece with a single root,
-//!    the entry is found by bracketed Newton; on a piece with a single minimum, by bracketed
-//!    Newton for the minimum, then for the entry if `g` is negative there;
-//! 3. otherwise the critical points of `g` split the window into monotone pieces, and the
-//!    first piece that goes from positive to negative is solved by bracketed Newton.
-//!
-//! When exactly one ball is at rest the relative motion is a straight line and the gap a
-//! quadratic in the distance covered: a closed form answers instead (`straight`). When both
-//! move, the first window is first tried whole, without a branch (`moving_entry`): where its
-//! first open eighth holds a single root or a single minimum, a fixed number of bracketed
-//! Newton steps settles it; the steps above handle the rest. From the first stop on, one ball
-//! rests and the other runs along a line: the closed form answers there too (`after_stop`).
-//! Batches first screen out, lane-wise, the pairs whose paths stay apart (`prefilter`), then,
-//! among moving pairs whose paths cross, those that are never there at the same time
-//! (`crossing`), then run `moving_entry` lane-wise; single queries run the same proofs first,
-//! so both give the same bits.
-//!
-//! The quartic is never divided by its leading coefficient, so equal or nearly equal friction
-//! vectors (where it vanishes or nearly so) need no special case.
-//!
-//! ## Paths
-//!
-//! A path query first compares the two paths' bounds (`path_bounds`), then, for paths that
-//! end at rest, their spans across each one's chord (`chord_normals`); the pairs left are
-//! searched window by window (`path_contact`): the boxes of the window's two segments, then
-//! its separation box (`window_box`) and its span across its chord (`window_chord`), settle
-//! most windows, and the rest go to the same window search as the friction balls'. Two paths
-//! of one segment each (frictionless balls, say) have one window, for ever: it goes straight
-//! to the window's stages (the straight window's closed form, the separation box and chord,
-//! the search), which settle it as soon as the screens would. A batch holds the pairs its
-//! lanes take and leave until eight are waiting, then settles their first windows at once on
-//! the first open eighth (`batch/first_window_lanes.rs`): the walk then answers only the
-//! pairs that are left, or starts after a first window found free.
+//! The gap `g(t) = |x_A(t) − x_B(t)|² − radius²` (see [`Gap`]) is a quartic on each window;
+//! it is never divided by its leading coefficient, so equal or nearly equal friction vectors
+//! (where it vanishes or nearly so) need no special case.
 //!
 //! ## Semantics (SPEC)
 //! - touching or overlapping at `t = 0` is a collision at `0` only if the balls approach
@@ -105,21 +73,21 @@ pub(crate) mod straight;
 pub(crate) mod window_box;
 pub(crate) mod window_chord;
 
-use crate::coefficients::{Gap, gap_value_of};
 use crate::error::{InputError, check_contact_distance, check_horizon};
+use crate::gap::{Gap, gap_value_of};
 use crate::motion::Ball;
 use crate::poly::scaling::{exponent, pow2};
 use after_stop::after_first_stop;
 use crossing::apart_by_window;
 use entry::{WindowSearch, first_entry, piecewise_entry};
 use length_unit::{LengthUnit, largest, normalised_balls};
-use long_window::{first_piece, long_window, next_piece, plain_piece};
+use long_window::{first_piece, long_window, next_piece, short_piece};
 use moving_entry::{WhileMoving, while_moving_one};
 use nalgebra::SVector;
 pub use path_contact::path_collision_time;
 #[doc(hidden)]
 pub use path_contact::path_collision_time_unscreened;
-use prefilter::{PairInput, never_touch};
+use prefilter::{PairInput, screened_out_by_runs};
 use window_box::apart_on_window;
 
 /// Options of a collision query ([`collision_time_with`]).
@@ -202,7 +170,7 @@ pub fn collision_time_with(
     Ok(first_contact_screened(a, b, [radius, 0.0], t_max))
 }
 
-/// [`first_contact`] after the batch's proofs that the balls never touch ([`never_touch`],
+/// [`first_contact`] after the batch's proofs that the balls never touch ([`screened_out_by_runs`],
 /// [`apart_by_window`]): a pair they settle is one the search answers "none" for too (their
 /// margins see to it), found for a fraction of the cost; and the same answer as a batch's,
 /// bit for bit, either way. The contact distance is the sum of `radii` (formed in the pair's
@@ -224,7 +192,7 @@ pub(crate) fn first_contact_screened(
     // One ball at rest: the closed form is cheaper than the proofs.
     let one_at_rest = a.is_at_rest() != b.is_at_rest();
     let both_moving = !a.is_at_rest() && !b.is_at_rest();
-    if !one_at_rest && never_touch(&pair) {
+    if !one_at_rest && screened_out_by_runs(&pair) {
         return None;
     }
     if both_moving && apart_by_window(&pair) == (true, true) {
@@ -273,7 +241,8 @@ fn first_contact_in_unit(
     if let Some(answer) = straight::first_contact(a, b, radius, t_max, g0) {
         return answer;
     }
-    // The first window settled where it is plain (as a batch does it lane-wise).
+    // The first window settled where its first open eighth is isolated (as a batch does it
+    // lane-wise).
     let moving = moving.unwrap_or_else(|| while_moving_one(&PairInput::of(a, b, radius, t_max)));
     if !moving.entry.is_nan() {
         return moving.entry.is_finite().then_some(moving.entry);
@@ -283,9 +252,9 @@ fn first_contact_in_unit(
         (ta.min(tb), ta.max(tb))
     };
     // With no contact in the first window, the balls are apart at its end.
-    let mut previous_positive = apart || moving.no_entry;
+    let mut previous_positive = apart || moving.screened_out;
     let windows = [(0.0, t1), (t1, t2), (t2, f64::INFINITY)];
-    for (start, end) in windows.into_iter().skip(usize::from(moving.no_entry)) {
+    for (start, end) in windows.into_iter().skip(usize::from(moving.screened_out)) {
         // Windows are searched whole, whatever the horizon, which only cuts the answer: a
         // contact before it comes back bit for bit as without it.
         if start >= t_max {
@@ -438,7 +407,7 @@ fn search_window_in<const D: usize>(
 ) -> WindowSearch {
     let length = bounded_length(gap, length);
     if !long_window(gap, length) {
-        return search_plain_window(gap, length, previous_positive);
+        return search_short_window(gap, length, previous_positive);
     }
     let (mut start, mut end) = (0.0, first_piece(gap, length));
     let mut previous_positive = previous_positive;
@@ -470,8 +439,8 @@ const SPLITS: u32 = 4096;
 
 /// The first entry on a piece of a long window (its motion `piece`, re-expanded at its start),
 /// as time since its start: nothing if its box proves it apart ([`apart_on_window`]); the
-/// window search if it is plain even measured by the radius alone ([`plain_piece`]: then it
-/// is plain wherever the balls may touch in it); otherwise its two halves in turn, while the
+/// window search if it is short even measured by the radius alone ([`short_piece`]: then it
+/// is short wherever the balls may touch in it); otherwise its two halves in turn, while the
 /// `budget` of halvings lasts.
 ///
 /// The halving is depth first, first halves before second halves, each second half
@@ -500,8 +469,8 @@ fn search_piece<const D: usize>(
             Some(WindowSearch::NoEntry {
                 ends_positive: true,
             })
-        } else if *budget == 0 || plain_piece(&piece, length) || length.is_nan() || length <= 0.0 {
-            Some(search_plain_window(&piece, length, previous_positive))
+        } else if *budget == 0 || short_piece(&piece, length) || length.is_nan() || length <= 0.0 {
+            Some(search_short_window(&piece, length, previous_positive))
         } else {
             None
         };
@@ -581,7 +550,7 @@ fn unbounded_length<const D: usize>(gap: &Gap<D>) -> f64 {
 
 /// The first entry on a window of `length` that is not long, as time since its start.
 #[inline(always)]
-fn search_plain_window<const D: usize>(
+fn search_short_window<const D: usize>(
     gap: &Gap<D>,
     length: f64,
     previous_positive: bool,

@@ -1,4 +1,4 @@
-//! Two moving balls that first touch while both still move, where the crossing is plain:
+//! Two moving balls that first touch while both still move, where the crossing is isolated:
 //! found lane-wise, without a branch.
 //!
 //! On a table most contacts come before either ball stops (on the first window), and most
@@ -17,7 +17,7 @@
 use super::approaching;
 use super::crossing::FirstWindow;
 use super::eighth_entry::eighth_entry;
-use super::exclusion::{OpenEighth, first_open_eighth, proves_positive_at_once};
+use super::exclusion::{OpenEighth, first_open_eighth, window_screened_out_at_once};
 use super::prefilter::PairInput;
 
 /// What [`while_moving`] settles about a pair's first window.
@@ -26,14 +26,14 @@ pub(crate) struct WhileMoving {
     /// The first contact, if it comes in the first window: its time, `∞` if that time is at
     /// or past the horizon; NaN where this does not settle it.
     pub entry: f64,
-    /// The first window holds no contact, and the balls are apart at its end (the search goes
+    /// The first window is screened out: no contact, the balls apart at its end (the search goes
     /// on from the second window).
-    pub no_entry: bool,
+    pub screened_out: bool,
 }
 
-/// The first window of `pair` (both balls moving), where its first open eighth is plain.
+/// The first window of `pair` (both balls moving), where its first open eighth is isolated.
 ///
-/// The eighth is plain when it holds a single root, or a single minimum (a grazing contact,
+/// The eighth is isolated when it holds a single root, or a single minimum (a grazing contact,
 /// an entry and an exit close together, or a near miss): the minimum is found first, by
 /// Newton on the slope; if the gap is negative there, the entry lies between the eighth's
 /// start and it; if not, and the minimum has converged and every later eighth is proven
@@ -46,7 +46,7 @@ pub(crate) fn while_moving(pair: &PairInput) -> WhileMoving {
 }
 
 /// [`while_moving`] for one pair: the same answer, without the Newton steps where the window
-/// holds no plain eighth (most pairs that reach the search), and with fused multiply-adds
+/// holds no isolated eighth (most pairs that reach the search), and with fused multiply-adds
 /// in hardware where the CPU has them.
 pub(crate) fn while_moving_one(pair: &PairInput) -> WhileMoving {
     // The level of the batch (or the process): `simd`'s one dispatch point.
@@ -69,20 +69,20 @@ impl crate::simd::Kernel for WhileMovingOne<'_> {
 fn while_moving_one_portable(pair: &PairInput) -> WhileMoving {
     let nothing = WhileMoving {
         entry: f64::NAN,
-        no_entry: false,
+        screened_out: false,
     };
     let window = FirstWindow::of(pair);
     let start = at_start(&window, pair.t_max);
     if !start.is_nan() {
         return WhileMoving {
             entry: start,
-            no_entry: false,
+            screened_out: false,
         };
     }
     // A window proven positive whole has no entry, which the search finds at once: `settle`
     // would find no entry there either (at most that there is none, which the search then
     // takes the same way).
-    if !window.qualifies || proves_positive_at_once(&window.gap, window.end) {
+    if !window.qualifies || window_screened_out_at_once(&window.gap, window.end) {
         return nothing;
     }
     let eighth = first_open_eighth(&window.gap, window.end);
@@ -110,7 +110,7 @@ fn settle(
     let start = at_start(window, pair.t_max);
     WhileMoving {
         entry: if start.is_nan() { entry } else { start },
-        no_entry: found.no_entry,
+        screened_out: found.screened_out,
     }
 }
 
@@ -164,7 +164,7 @@ mod tests {
     }
 
     #[test]
-    fn what_is_not_plain_is_left_to_the_search() {
+    fn what_is_not_isolated_is_left_to_the_search() {
         // Apart for ever, a ball at rest, a grazing pass: not settled here.
         for p in [
             pair([0.0, 0.0], [1.0, 0.0], [0.0, 5.0], [1.0, 0.0]),

@@ -24,7 +24,7 @@
 //! answer, bit for bit.
 
 use super::length_unit::LengthUnit;
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// How small the contact distance must be beside the window's motion (the sum of the
 /// magnitudes of its offset, velocity and acceleration, time scaled to the window) before the

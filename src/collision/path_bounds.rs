@@ -56,10 +56,11 @@ impl<const D: usize> AxisBox<D> {
         out
     }
 
-    /// Whether the boxes are more than `reach` apart on some axis.
+    /// Whether the boxes are more than `distance` apart on some axis.
     #[inline(always)]
-    fn apart(&self, other: &Self, reach: f64) -> bool {
-        (0..D).any(|i| (self.lo[i] - other.hi[i] > reach) | (other.lo[i] - self.hi[i] > reach))
+    fn apart(&self, other: &Self, distance: f64) -> bool {
+        (0..D)
+            .any(|i| (self.lo[i] - other.hi[i] > distance) | (other.lo[i] - self.hi[i] > distance))
     }
 }
 
@@ -77,15 +78,16 @@ pub(crate) struct PathBounds<const D: usize, const S: usize = SEGMENT_BOXES> {
     largest: f64,
 }
 
-/// The distance beyond which two balls are proven apart: the contact distance `radius` and
-/// the margin for the roundings made in forming boxes of the given sizes and spreads.
+/// The screen distance: the distance beyond which two balls are proven apart, the contact
+/// distance `radius` grown by the margin for the roundings made in forming boxes of the given
+/// sizes and spreads.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Reach(f64);
+pub(crate) struct ScreenDistance(f64);
 
-impl Reach {
+impl ScreenDistance {
     /// The distance itself.
     #[inline(always)]
-    pub(crate) fn distance(self) -> f64 {
+    pub(crate) fn value(self) -> f64 {
         self.0
     }
 }
@@ -200,8 +202,8 @@ impl<const D: usize, const S: usize> PathBounds<D, S> {
     /// `radius` grown by the margin. On the caller's numbers (the comparisons need no unit);
     /// a radius sum that overflows proves nothing.
     #[inline(always)]
-    pub(crate) fn reach(&self, other: &Self, radius: f64) -> Reach {
-        Reach(with_underflow(
+    pub(crate) fn screen_distance(&self, other: &Self, radius: f64) -> ScreenDistance {
+        ScreenDistance(with_underflow(
             radius + MARGIN * (self.size + other.size + radius),
             self.spread + other.spread,
         ))
@@ -213,31 +215,39 @@ impl<const D: usize, const S: usize> PathBounds<D, S> {
         (self.whole.lo, self.whole.hi)
     }
 
-    /// Whether the reach of these two paths is `radius + MARGIN·(sizes + radius)` itself, of
-    /// finite sizes, untouched by underflow: what the lane-wise bounds take (their tests' oracle).
+    /// Whether the screen distance of these two paths is in range: `radius + MARGIN·(sizes +
+    /// radius)` itself, of finite sizes, untouched by underflow: what the lane-wise bounds take
+    /// (their tests' oracle).
     #[cfg(test)]
-    pub(crate) fn plain_reach(&self, other: &Self, radius: f64) -> bool {
+    pub(crate) fn screen_distance_in_range(&self, other: &Self, radius: f64) -> bool {
         let sizes = self.size + other.size + radius;
-        let reach = radius + MARGIN * sizes;
-        sizes.is_finite() && reach >= super::window_box::NORMAL_FLOOR * (self.spread + other.spread)
+        let distance = radius + MARGIN * sizes;
+        sizes.is_finite()
+            && distance >= super::window_box::NORMAL_FLOOR * (self.spread + other.spread)
     }
 
-    /// Whether balls on the two paths provably never come within the reach of each other: the
-    /// boxes of the whole paths, grown by it, are disjoint on some axis.
+    /// Whether balls on the two paths provably never come within the screen distance of each
+    /// other: the boxes of the whole paths, grown by it, are disjoint on some axis.
     #[inline(always)]
-    pub(crate) fn apart(&self, other: &Self, reach: Reach) -> bool {
-        self.whole.apart(&other.whole, reach.0)
+    pub(crate) fn apart(&self, other: &Self, distance: ScreenDistance) -> bool {
+        self.whole.apart(&other.whole, distance.0)
     }
 
     /// Whether balls on segment `i` of this path and segment `j` of the other's provably keep
-    /// out of the reach of each other while both are on them (a window of the pair): their
+    /// out of the screen distance of each other while both are on them (a window of the pair): their
     /// boxes (the whole path's, for a segment past the first `S`), grown by it,
     /// are disjoint on some axis.
     #[inline(always)]
-    pub(crate) fn segments_apart(&self, i: usize, other: &Self, j: usize, reach: Reach) -> bool {
+    pub(crate) fn segments_apart(
+        &self,
+        i: usize,
+        other: &Self,
+        j: usize,
+        distance: ScreenDistance,
+    ) -> bool {
         let a = self.segments.get(i).unwrap_or(&self.whole);
         let b = other.segments.get(j).unwrap_or(&other.whole);
-        a.apart(b, reach.0)
+        a.apart(b, distance.0)
     }
 
     /// The unit of length of a pair of paths with these bounds and contact `radii`: from the
@@ -258,7 +268,7 @@ mod tests {
 
     fn apart(a: &[Segment<2>], b: &[Segment<2>], radius: f64) -> bool {
         let (a, b) = (Bounds::of(a), Bounds::of(b));
-        a.apart(&b, a.reach(&b, radius))
+        a.apart(&b, a.screen_distance(&b, radius))
     }
 
     #[test]
@@ -299,17 +309,17 @@ mod tests {
         let rest = |start: f64, x: f64| Segment::at_rest(start, V::new(x, 0.0));
         let a = Bounds::of(&[rest(0.0, 0.0), rest(1.0, 10.0)]);
         let b = Bounds::of(&[rest(0.0, 10.0), rest(1.0, 0.0)]);
-        let reach = a.reach(&b, 1.0);
-        assert!(!a.apart(&b, reach));
-        assert!(a.segments_apart(0, &b, 0, reach) && a.segments_apart(1, &b, 1, reach));
-        assert!(!a.segments_apart(0, &b, 1, reach) && !a.segments_apart(1, &b, 0, reach));
+        let distance = a.screen_distance(&b, 1.0);
+        assert!(!a.apart(&b, distance));
+        assert!(a.segments_apart(0, &b, 0, distance) && a.segments_apart(1, &b, 1, distance));
+        assert!(!a.segments_apart(0, &b, 1, distance) && !a.segments_apart(1, &b, 0, distance));
         // Past the first SEGMENT_BOXES segments, the whole path's box stands in.
         let many: Vec<_> = (0..6)
             .map(|k| rest(k as f64, 10.0 * (k % 2) as f64))
             .collect();
         let many = Bounds::of(&many);
-        assert!(many.segments_apart(0, &b, 0, reach)); // x = 0 against x = 10
-        assert!(!many.segments_apart(SEGMENT_BOXES, &b, 0, reach)); // [0, 10] against 10
+        assert!(many.segments_apart(0, &b, 0, distance)); // x = 0 against x = 10
+        assert!(!many.segments_apart(SEGMENT_BOXES, &b, 0, distance)); // [0, 10] against 10
     }
 
     #[test]

@@ -9,6 +9,19 @@
 //! time relative to each segment's start, so that late absolute times and long rolls keep
 //! full accuracy; and every length is first divided by the pair's unit of length
 //! ([`length_unit`](super::length_unit)), so that the answer does not depend on it.
+//!
+//! One search, the first contact of two paths, with entry points that differ only in what
+//! the caller has done already:
+//!
+//! | function | inputs | for |
+//! |---|---|---|
+//! | [`path_collision_time`] | paths, radius and horizon unchecked | the public query |
+//! | `first_contact_checked` | the same, with the screens on or off | it and [`path_collision_time_unscreened`] |
+//! | [`first_contact_of_paths`] | valid segments; the bounds formed here | geometry's circles and targets, the calendar |
+//! | [`first_contact_bounded_fma`] | valid segments with their bounds | the calendar (one pair at a time, FMA in hardware) |
+//! | [`first_contact_bounded`] | the same, and what the lanes found ([`Prior`]) | the batches (inlined into each SIMD copy) |
+//! | `first_contact_walk` | the same, the screens on or off | all of the above: the walk over windows |
+//! | `first_contact_one_window` | two paths of one segment each | the walk's shortcut |
 
 use super::chord_normals::apart_across_chords;
 use super::eighth_entry::window_eighth;
@@ -22,8 +35,8 @@ use super::{
     CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_finite_length,
     bounded_length, search_window,
 };
-use crate::coefficients::Gap;
 use crate::error::{InputError, check_contact_distance, check_horizon};
+use crate::gap::Gap;
 use crate::path::{Path, Segment};
 use nalgebra::SVector;
 
@@ -61,12 +74,12 @@ pub fn path_collision_time<const D: usize>(
     contact_distance: f64,
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
-    single_query::<D, true>(a, b, contact_distance, options)
+    first_contact_checked::<D, true>(a, b, contact_distance, options)
 }
 
-/// A single query: its radius and horizon checked, then the search, with the screens that
-/// prove balls apart (`SCREENS`) or without them.
-fn single_query<const D: usize, const SCREENS: bool>(
+/// The first contact of one pair of paths, its radius and horizon checked first, with the
+/// screens (`SCREENS`) or without them.
+fn first_contact_checked<const D: usize, const SCREENS: bool>(
     a: &Path<D>,
     b: &Path<D>,
     radius: f64,
@@ -77,7 +90,7 @@ fn single_query<const D: usize, const SCREENS: bool>(
     let (a, b) = (a.segments(), b.segments());
     let bounds = (PathBounds::of(a), PathBounds::of(b));
     let (a, b) = ((a, &bounds.0), (b, &bounds.1));
-    Ok(first_screened_contact::<D, SEGMENT_BOXES, SCREENS>(
+    Ok(first_contact_walk::<D, SEGMENT_BOXES, SCREENS>(
         a,
         b,
         [radius, 0.0],
@@ -86,16 +99,16 @@ fn single_query<const D: usize, const SCREENS: bool>(
     ))
 }
 
-/// The search on validated inputs; the contact distance is the sum of `radii`, formed in the
-/// pair's unit of length.
+/// The first contact on validated inputs, the paths' bounds formed here; the contact distance
+/// is the sum of `radii`, formed in the pair's unit of length.
 /// `a` and `b` are the segments of valid paths ([`Path::segments`]).
-pub(crate) fn first_path_contact<const D: usize>(
+pub(crate) fn first_contact_of_paths<const D: usize>(
     a: &[Segment<D>],
     b: &[Segment<D>],
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
-    first_bounded_contact_one::<D, SEGMENT_BOXES>(
+    first_contact_bounded_fma::<D, SEGMENT_BOXES>(
         (a, &PathBounds::of(a)),
         (b, &PathBounds::of(b)),
         radii,
@@ -103,34 +116,34 @@ pub(crate) fn first_path_contact<const D: usize>(
     )
 }
 
-/// [`first_bounded_contact`] for one pair at a time (the calendar's), with fused
+/// [`first_contact_bounded`] (without a prior) for one pair at a time (the calendar's), with fused
 /// multiply-adds in hardware where the CPU has them: one instruction rather than a library
 /// call, the same exact result, so the same bits.
-pub(crate) fn first_bounded_contact_one<const D: usize, const S: usize>(
+pub(crate) fn first_contact_bounded_fma<const D: usize, const S: usize>(
     a: (&[Segment<D>], &PathBounds<D, S>),
     b: (&[Segment<D>], &PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
 ) -> Option<f64> {
     // The level of the batch (or the process): `simd`'s one dispatch point.
-    let contact = BoundedContact { a, b, radii, t_max };
+    let contact = FirstContactBoundedFma { a, b, radii, t_max };
     crate::simd::dispatch_scalar(crate::simd::current(), contact)
 }
 
-/// [`first_bounded_contact_one`]'s arguments, run by [`crate::simd::dispatch_scalar`].
-struct BoundedContact<'a, const D: usize, const S: usize> {
+/// [`first_contact_bounded_fma`]'s arguments, run by [`crate::simd::dispatch_scalar`].
+struct FirstContactBoundedFma<'a, const D: usize, const S: usize> {
     a: (&'a [Segment<D>], &'a PathBounds<D, S>),
     b: (&'a [Segment<D>], &'a PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
 }
 
-impl<const D: usize, const S: usize> crate::simd::Kernel for BoundedContact<'_, D, S> {
+impl<const D: usize, const S: usize> crate::simd::Kernel for FirstContactBoundedFma<'_, D, S> {
     type Output = Option<f64>;
 
     #[inline(always)]
     fn run<L: crate::simd::Simd>(self, _: L) -> Option<f64> {
-        first_bounded_contact(self.a, self.b, self.radii, self.t_max, Prior::Nothing)
+        first_contact_bounded(self.a, self.b, self.radii, self.t_max, Prior::Nothing)
     }
 }
 
@@ -145,20 +158,20 @@ pub fn path_collision_time_unscreened<const D: usize>(
     contact_distance: f64,
     options: &CollisionOptions,
 ) -> Result<Option<f64>, InputError> {
-    single_query::<D, false>(a, b, contact_distance, options)
+    first_contact_checked::<D, false>(a, b, contact_distance, options)
 }
 
-/// [`first_path_contact`] with each path's bounds given (a batch computes a broadcast path's
+/// [`first_contact_of_paths`] with each path's bounds given (a batch computes a broadcast path's
 /// once); inlined into each vector copy of the batch.
 #[inline(always)]
-pub(crate) fn first_bounded_contact<const D: usize, const S: usize>(
+pub(crate) fn first_contact_bounded<const D: usize, const S: usize>(
     a: (&[Segment<D>], &PathBounds<D, S>),
     b: (&[Segment<D>], &PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
     prior: Prior,
 ) -> Option<f64> {
-    first_screened_contact::<D, S, true>(a, b, radii, t_max, prior)
+    first_contact_walk::<D, S, true>(a, b, radii, t_max, prior)
 }
 
 /// What a caller already knows of a pair when its search starts.
@@ -174,14 +187,15 @@ pub(crate) enum Prior {
     /// The screens are proofs, so the answer is the same either way.
     LanesLeft,
     /// As `LanesLeft`, and the first-window lanes (`batch/first_window_lanes.rs`) found the
-    /// pair's first window free of entries, with the gap positive at its end: what its
+    /// pair's first window screened out (no entry, the gap positive at its end): what its
     /// search would find ([`PathFirstWindow::eighth_contact`]), so the walk starts after it.
-    FirstWindowFree,
+    FirstWindowScreenedOut,
 }
 
-/// The search, with the screens that prove balls apart (`SCREENS`) or without them.
+/// The first contact: the whole-path screens, then the walk over windows, with the screens
+/// that prove balls apart (`SCREENS`) or without them.
 #[inline(always)]
-fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
+fn first_contact_walk<const D: usize, const S: usize, const SCREENS: bool>(
     (a, bounds_a): (&[Segment<D>], &PathBounds<D, S>),
     (b, bounds_b): (&[Segment<D>], &PathBounds<D, S>),
     radii: [f64; 2],
@@ -190,17 +204,23 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
 ) -> Option<f64> {
     count(Stage::PathPair);
     if let ([sa], [sb]) = (a, b) {
-        return one_window_each::<D, S, SCREENS>(sa, sb, (bounds_a, bounds_b), radii, t_max);
+        return first_contact_one_window::<D, S, SCREENS>(
+            sa,
+            sb,
+            (bounds_a, bounds_b),
+            radii,
+            t_max,
+        );
     }
     // Paths whose boxes keep apart need no window: a proof (its margin far above the
     // search's rounding), so its answer is the search's, in any unit.
-    let reach = bounds_a.reach(bounds_b, radii[0] + radii[1]);
+    let distance = bounds_a.screen_distance(bounds_b, radii[0] + radii[1]);
     let screens = SCREENS && prior == Prior::Nothing;
-    if screens && bounds_a.apart(bounds_b, reach) {
+    if screens && bounds_a.apart(bounds_b, distance) {
         count(Stage::BoundsApart);
         return None;
     }
-    if screens && apart_across_chords(a, b, reach) {
+    if screens && apart_across_chords(a, b, distance) {
         count(Stage::ChordsApart);
         return None;
     }
@@ -208,7 +228,7 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
     let mut start = first_time(a.first()?, b.first()?);
     let (mut i, mut j) = (active(a, 0, start), active(b, 0, start));
     let mut previous_positive = None;
-    let mut first_free = prior == Prior::FirstWindowFree;
+    let mut first_screened_out = prior == Prior::FirstWindowScreenedOut;
     loop {
         if start >= t_max {
             return None;
@@ -216,13 +236,13 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
         let (end_a, end_b) = (end_of(a, i), end_of(b, j));
         let end = end_a.min(end_b);
         count(Stage::Window);
-        if first_free {
+        if first_screened_out {
             // Searched and settled on its first open eighth, lane-wise.
             count(Stage::WindowSearched);
             count(Stage::WindowEighth);
-            first_free = false;
+            first_screened_out = false;
             previous_positive = Some(true);
-        } else if SCREENS && bounds_a.segments_apart(i, bounds_b, j, reach) {
+        } else if SCREENS && bounds_a.segments_apart(i, bounds_b, j, distance) {
             // The boxes of the two segments, from the path bounds, settle most windows of
             // balls on general paths before any motion is formed (a proof like the path
             // bounds', so the same answer as the search's).
@@ -258,7 +278,7 @@ fn first_screened_contact<const D: usize, const S: usize, const SCREENS: bool>(
 /// as soon, and with them the search of one pair of disks ran about 40 % more instructions
 /// (calendar, N = 16).
 #[inline(always)]
-fn one_window_each<const D: usize, const S: usize, const SCREENS: bool>(
+fn first_contact_one_window<const D: usize, const S: usize, const SCREENS: bool>(
     a: &Segment<D>,
     b: &Segment<D>,
     (bounds_a, bounds_b): (&PathBounds<D, S>, &PathBounds<D, S>),
@@ -368,13 +388,13 @@ impl<const D: usize> Window<'_, D> {
             }
         } else {
             count(Stage::WindowSearched);
-            // Most entries are plain on the window's first open eighth, and most windows
+            // Most entries are isolated on the window's first open eighth, and most windows
             // without one too: settled there by a few Newton steps, the rest searched.
             let eighth = window_eighth::<D, true>(&gap, bounded_length(&gap, length), before);
             if eighth.found {
                 count(Stage::WindowEighth);
                 WindowSearch::Entry(eighth.entry)
-            } else if eighth.no_entry {
+            } else if eighth.screened_out {
                 count(Stage::WindowEighth);
                 WindowSearch::NoEntry {
                     ends_positive: true,
@@ -393,7 +413,7 @@ impl<const D: usize> Window<'_, D> {
     }
 }
 
-/// A pair's first window as the walk of [`first_bounded_contact`] forms it, for a batch to
+/// A pair's first window as the walk of [`first_contact_bounded`] forms it, for a batch to
 /// settle eight at a time: the segments of each path active at the pair's first time
 /// `start`, until the earlier of their ends `end` (finite); `largest`, the largest magnitude
 /// among both paths' values, from which with `radius` the pair's unit of length comes (as
@@ -427,9 +447,9 @@ impl<const D: usize> PathFirstWindow<D> {
     /// What the pair's first window settles on its first open eighth ([`window_eighth`]),
     /// where the relative acceleration is not zero (so that no closed form comes first): the
     /// pair's answer where it finds an entry (its time, `∞` at or past the horizon; NaN
-    /// elsewhere), and whether it finds the window free of entries, the gap positive at its
-    /// end. The screens the walk would run first are proofs that the balls are apart, which
-    /// such an entry rules out, and which would find the window free just the same; and the
+    /// elsewhere), and whether it screens the window out (no entry, the gap positive at its
+    /// end). The screens the walk would run first are proofs that the balls are apart, which
+    /// such an entry rules out, and which would screen the window out just the same; and the
     /// balls are apart at the start: so these are the walk's findings, to the bit. Without a
     /// branch, so that a batch runs it lane-wise.
     #[inline(always)]
@@ -453,12 +473,12 @@ impl<const D: usize> PathFirstWindow<D> {
         } else {
             f64::NAN
         };
-        (found, eighth.no_entry & accelerating)
+        (found, eighth.screened_out & accelerating)
     }
 }
 
 /// Whether every window of paths `a` and `b` (valid) is proven apart, at contact distance
-/// `radius`, by the window screens of [`first_bounded_contact`], as its walk forms them: the
+/// `radius`, by the window screens of [`first_contact_bounded`], as its walk forms them: the
 /// segment boxes, else (a window that ends) the box or the chord of its separation. The lane
 /// tests' oracle (`batch/window_lanes.rs`), which must settle exactly such pairs.
 #[cfg(test)]
@@ -468,7 +488,7 @@ pub(crate) fn every_window_screened<const D: usize>(
     radius: f64,
 ) -> bool {
     let (bounds_a, bounds_b) = (PathBounds::<D>::of(a), PathBounds::of(b));
-    let reach = bounds_a.reach(&bounds_b, radius);
+    let distance = bounds_a.screen_distance(&bounds_b, radius);
     let (unit, radius) = pair_unit(&bounds_a, &bounds_b, [radius, 0.0]);
     let (Some(first_a), Some(first_b)) = (a.first(), b.first()) else {
         return false;
@@ -478,7 +498,7 @@ pub(crate) fn every_window_screened<const D: usize>(
     loop {
         let (end_a, end_b) = (end_of(a, i), end_of(b, j));
         let end = end_a.min(end_b);
-        if !bounds_a.segments_apart(i, &bounds_b, j, reach) {
+        if !bounds_a.segments_apart(i, &bounds_b, j, distance) {
             if end == f64::INFINITY {
                 return false;
             }

@@ -7,7 +7,7 @@
 //! it), whatever their timing. Both lines are tried. On random pairs on a table that settles
 //! nine in ten with two square roots and a few dozen operations, no division, no branch and no
 //! library call, so that a batch evaluates it lane-wise (the compiler vectorises
-//! [`never_touch`] over a block of pairs) and sends only the survivors on.
+//! [`screened_out_by_runs`] over a block of pairs) and sends only the survivors on.
 //!
 //! Only proofs are taken: the separation must exceed the contact distance by a margin far
 //! above every rounding error made here, so a pair said never to touch has no contact, and the
@@ -67,26 +67,26 @@ pub(crate) const LIMIT: f64 = 1e100;
 /// motions bounded). `false` means "not proven".
 ///
 /// ```text
-/// never_touch(pair) == plain & apart, where (plain, apart) = screen_pair(pair)
+/// screened_out_by_runs(pair) == in_range & apart, where (in_range, apart) = screen_runs(pair)
 /// ```
 #[inline(always)]
-pub(crate) fn never_touch(pair: &PairInput) -> bool {
-    let (plain, apart) = screen_pair(pair);
-    plain & apart
+pub(crate) fn screened_out_by_runs(pair: &PairInput) -> bool {
+    let (in_range, apart) = screen_runs(pair);
+    in_range & apart
 }
 
-/// Whether `pair` is plain: valid (as [`valid`]: every number finite, frictions ≥ 0,
+/// Whether `pair` is in range: valid (as [`valid`]: every number finite, frictions ≥ 0,
 /// radius > 0, horizon ≥ 0) with bounded motions (each ball at rest, or moving with friction)
 /// and every magnitude in `[1/LIMIT, LIMIT]`; and, if so, whether its balls provably never
 /// touch (if not, that is meaningless).
 ///
-/// A batch gets both for the price of the proof: its survivors that are plain need no other
+/// A batch gets both for the price of the proof: its survivors that are in range need no other
 /// validation before the lane-wise stages.
 ///
 /// Written without branches (comparisons combine with `&`, choices are selects) so that a
 /// loop over a block of pairs vectorises; the same function serves one pair.
 #[inline(always)]
-pub(crate) fn screen_pair(pair: &PairInput) -> (bool, bool) {
+pub(crate) fn screen_runs(pair: &PairInput) -> (bool, bool) {
     let [pax, pay] = pair.pos_a;
     let [vax, vay] = pair.vel_a;
     let [pbx, pby] = pair.pos_b;
@@ -121,26 +121,26 @@ pub(crate) fn screen_pair(pair: &PairInput) -> (bool, bool) {
         radius,
         size,
     );
-    // Valid and bounded, magnitudes plain: every rounding error stays relative (nothing
+    // Valid and bounded, magnitudes in range: every rounding error stays relative (nothing
     // overflows, nothing underflows enough to matter against the margin). This implies
     // [`valid`]: every number is finite (NaN fails every comparison), frictions ≥ 0,
     // radius > 0, horizon ≥ 0.
-    let plain_range = |x: f64| (1.0 / LIMIT..=LIMIT).contains(&x);
-    // At rest (exactly) with a friction ≥ 0, or moving at a plain speed with plain friction
-    // (a frictionless mover runs for ever, and an underflowing |v|² would pass for rest).
+    let magnitude_in_range = |x: f64| (1.0 / LIMIT..=LIMIT).contains(&x);
+    // At rest (exactly) with a friction ≥ 0, or moving at a speed in range with a friction in
+    // range (a frictionless mover runs for ever, and an underflowing |v|² would pass for rest).
     // The speed's range is tested on its square, which is ready sooner.
-    let plain_square = |x: f64| (1.0 / (LIMIT * LIMIT)..=LIMIT * LIMIT).contains(&x);
+    let square_in_range = |x: f64| (1.0 / (LIMIT * LIMIT)..=LIMIT * LIMIT).contains(&x);
     let bounded = |[vx, vy]: [f64; 2], square: f64, mu: f64| {
         (mu <= LIMIT)
             & (((vx == 0.0) & (vy == 0.0) & (mu >= 0.0))
-                | (plain_square(square) & (mu >= 1.0 / LIMIT)))
+                | (square_in_range(square) & (mu >= 1.0 / LIMIT)))
     };
-    let plain = (size <= LIMIT)
-        & plain_range(radius)
+    let in_range = (size <= LIMIT)
+        & magnitude_in_range(radius)
         & (pair.t_max >= 0.0)
         & bounded(pair.vel_a, square_a, mu_a)
         & bounded(pair.vel_b, square_b, mu_b);
-    (plain, off_a | off_b)
+    (in_range, off_a | off_b)
 }
 
 /// Whether the segment of the ball with velocity `v`, speed `speed` and friction `mu`, which
@@ -285,7 +285,7 @@ mod tests {
     #[test]
     fn parallel_lanes_never_touch() {
         // Both run along x, 1 apart: the normal of either motion separates them.
-        assert!(never_touch(&pair(
+        assert!(screened_out_by_runs(&pair(
             [0.0, 0.0],
             [2.0, 0.0],
             [1.0, 1.0],
@@ -296,7 +296,7 @@ mod tests {
     #[test]
     fn crossing_paths_are_not_proven_apart() {
         // The paths cross (whether the balls meet depends on timing: the search decides).
-        assert!(!never_touch(&pair(
+        assert!(!screened_out_by_runs(&pair(
             [0.0, 0.0],
             [2.0, 0.0],
             [1.0, -1.0],
@@ -308,14 +308,14 @@ mod tests {
     fn a_segment_ending_short_of_the_line_is_proven_apart() {
         // B runs down from y = 3 at 2 m/s, μ = 1: it stops at y = 1, 0.9 beyond A's line
         // (which A follows up to x = 8, past B's).
-        assert!(never_touch(&pair(
+        assert!(screened_out_by_runs(&pair(
             [0.0, 0.0],
             [4.0, 0.0],
             [5.0, 3.0],
             [0.0, -2.0]
         )));
         // From y = 2.05 it stops within 0.05 of the line, and A might meet it there.
-        assert!(!never_touch(&pair(
+        assert!(!screened_out_by_runs(&pair(
             [0.0, 0.0],
             [4.0, 0.0],
             [5.0, 2.05],
@@ -323,7 +323,7 @@ mod tests {
         )));
         // Timing and extent along the line are not this test's business: a ball stopping
         // short of a resting ball on its own line is left to the search.
-        assert!(!never_touch(&pair(
+        assert!(!screened_out_by_runs(&pair(
             [0.0, 0.0],
             [2.0, 0.0],
             [2.6, 0.0],
@@ -334,7 +334,7 @@ mod tests {
     #[test]
     fn invalid_or_unbounded_inputs_are_never_proven() {
         let far = pair([0.0, 0.0], [1.0, 0.0], [0.0, 10.0], [0.0, 0.0]);
-        assert!(never_touch(&far));
+        assert!(screened_out_by_runs(&far));
         for bad in [
             PairInput {
                 friction_a: 0.0,
@@ -377,10 +377,10 @@ mod tests {
                 ..far
             }, // v² underflows
         ] {
-            assert!(!never_touch(&bad), "{bad:?}");
+            assert!(!screened_out_by_runs(&bad), "{bad:?}");
         }
         // A ball at rest, with or without friction, is a point (here 10 from B's line).
-        assert!(never_touch(&PairInput {
+        assert!(screened_out_by_runs(&PairInput {
             friction_a: 0.0,
             vel_a: [0.0, 0.0],
             vel_b: [1.0, 0.0],
@@ -389,9 +389,9 @@ mod tests {
     }
 
     #[test]
-    fn plain_pairs_are_valid() {
+    fn pairs_in_range_are_valid() {
         // Every field ordinary (0 included) or, one time in ten, hostile: whatever
-        // `screen_pair` calls plain, `valid` accepts (the batch sends plain survivors on
+        // `screen_runs` calls in range, `valid` accepts (the batch sends survivors in range on
         // without validating them).
         let hostile = [
             -0.0,
@@ -413,7 +413,7 @@ mod tests {
                 None => rng.uniform(low, high),
             }
         };
-        let (mut plain_count, mut rejected) = (0, 0);
+        let (mut in_range_count, mut rejected) = (0, 0);
         for _ in 0..100_000 {
             let pair = PairInput {
                 pos_a: [draw(-2.0, 2.0), draw(-2.0, 2.0)],
@@ -425,20 +425,20 @@ mod tests {
                 radius: draw(0.01, 0.1),
                 t_max: draw(0.0, 10.0),
             };
-            let (plain, _) = screen_pair(&pair);
-            assert!(!plain || valid(&pair), "{pair:?}");
-            plain_count += usize::from(plain);
+            let (in_range, _) = screen_runs(&pair);
+            assert!(!in_range || valid(&pair), "{pair:?}");
+            in_range_count += usize::from(in_range);
             rejected += usize::from(!valid(&pair));
         }
         assert!(
-            plain_count > 10_000 && rejected > 10_000,
-            "{plain_count} plain, {rejected} invalid"
+            in_range_count > 10_000 && rejected > 10_000,
+            "{in_range_count} in range, {rejected} invalid"
         );
     }
 
     #[test]
     fn overlapping_balls_are_never_proven_apart() {
-        assert!(!never_touch(&pair(
+        assert!(!screened_out_by_runs(&pair(
             [0.0, 0.0],
             [1.0, 0.0],
             [0.05, 0.0],
@@ -496,7 +496,7 @@ mod tests {
                 radius,
                 t_max: f64::INFINITY,
             };
-            if never_touch(&pair) {
+            if screened_out_by_runs(&pair) {
                 proven += 1;
                 assert_eq!(search(&pair), None, "{pair:?}");
             }

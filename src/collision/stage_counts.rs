@@ -24,8 +24,9 @@ pub struct StageCounts {
     /// Of the others, the pairs apart across either path's chord (`chord_normals`): no window.
     pub chords_apart: u64,
     /// Of the others, the pairs whose every window the window screens prove apart at once
-    /// (`batch/window_lanes.rs`, in batches on AVX-512 CPUs; elsewhere, and in single queries,
-    /// such pairs' windows are formed and counted one by one below).
+    /// (`batch/window_lanes.rs`, in batches at the SIMD levels that run the lane stages: AVX2
+    /// with FMA, AVX-512; elsewhere, and in single queries, such pairs' windows are formed and
+    /// counted one by one below).
     pub windows_apart: u64,
     /// Windows formed for the pairs left (`path_contact`).
     pub windows: u64,

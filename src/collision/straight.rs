@@ -10,7 +10,7 @@
 //! root searches (critical point and entry) by three square roots and one division.
 
 use super::entry::WindowSearch;
-use crate::coefficients::{Gap, gap_value_of};
+use crate::gap::{Gap, gap_value_of};
 use crate::motion::Ball;
 
 /// How decisive the closed form of [`straight_window`] must be, relative to the magnitudes
@@ -55,7 +55,7 @@ pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], mu: f64, radius: f64, g0: f6
     // Products of up to six lengths or speeds (E·(E − m) below: E is a length times |v|²)
     // stay in the normal range for these magnitudes; elsewhere the general search, which
     // scales, answers.
-    let plain = (1e-100..=1e100).contains(&speed2)
+    let in_range = (1e-100..=1e100).contains(&speed2)
         & (1e-50..=1e50).contains(&radius)
         & (dx.abs().max(dy.abs()) <= 1e50)
         & (g0 > 0.0);
@@ -81,10 +81,10 @@ pub(crate) fn contact(delta: [f64; 2], v: [f64; 2], mu: f64, radius: f64, g0: f6
     let t = (2.0 * g0) / (e + (e * (e - m)).max(0.0).sqrt()) * speed;
     // A contact whose time overflowed, or whose E is so small that E·(E − m) could lose
     // digits to underflow, is left to the general search (E·(E − m) stays below the overflow
-    // for the magnitudes `plain` admits).
+    // for the magnitudes `in_range` admits).
     let settled = !meets | !before_stop | (t.is_finite() & (e >= 1e-100));
     let hit = meets & before_stop;
-    (plain & settled, if hit { t } else { f64::INFINITY })
+    (in_range & settled, if hit { t } else { f64::INFINITY })
 }
 
 /// The first entry on a window of `length` (time since its start, `∞` allowed) where the
@@ -108,16 +108,16 @@ pub(crate) fn straight_window<const D: usize>(
     length: f64,
     before: bool,
 ) -> Option<WindowSearch> {
-    // (A NaN length or value fails the comparisons: not straight, or not plain.)
+    // (A NaN length or value fails the comparisons: not straight, or not in range.)
     if gap.acceleration.iter().any(|&a| a != 0.0) || length.is_nan() || length <= 0.0 {
         return None;
     }
     let (d, v, radius) = (&gap.offset, &gap.velocity, gap.radius);
     let speed2 = v.norm_squared();
     let size2 = d.norm_squared() + radius * radius;
-    let plain =
+    let in_range =
         (1e-100..=1e100).contains(&speed2) && (1e-50..=1e50).contains(&radius) && d.amax() <= 1e50;
-    if !plain {
+    if !in_range {
         return None;
     }
     let g0 = gap_value_of(d, radius);

@@ -10,7 +10,7 @@
 //! that cross each other's paths at other times (the box is of the relative motion, so time
 //! is taken into account).
 
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// Relative size of the margin (the pair screen's, [`prefilter::MARGIN`]), `2⁻⁴⁰ ≈ 9e-13`
 /// of the magnitudes involved: far above the few roundings (`ε = 2⁻⁵³`) made in forming a

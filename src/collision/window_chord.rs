@@ -22,7 +22,7 @@
 //! square underflows).
 
 use super::window_box::{MARGIN, NORMAL_FLOOR, UNDERFLOW};
-use crate::coefficients::Gap;
+use crate::gap::Gap;
 
 /// Whether `g > 0` is proven on `[0, length]` (time since the window's start, finite) by the
 /// separation's span across its chord. `false` means "not proven".

@@ -7,7 +7,7 @@
 
 use super::shapes::Circle;
 use crate::CollisionOptions;
-use crate::collision::path_contact::first_path_contact;
+use crate::collision::path_contact::first_contact_of_paths;
 use crate::error::{InputError, check_ball_radius, check_horizon};
 use crate::path::{Path, Segment};
 
@@ -60,5 +60,5 @@ pub(crate) fn first_circle_contact<const D: usize>(
 ) -> Option<f64> {
     let start = segments.first()?.start;
     let centre = [Segment::at_rest(start, circle.centre())];
-    first_path_contact(segments, &centre, [radius, circle.rho()], t_max)
+    first_contact_of_paths(segments, &centre, [radius, circle.rho()], t_max)
 }

@@ -185,7 +185,7 @@ fn apart(segments: &[Segment<2>], p: Vector2<f64>, q: Vector2<f64>, radius: f64)
         PathBounds::<2, 0>::of(segments),
         PathBounds::<2, 0>::of(&ends),
     );
-    path.apart(&ends, path.reach(&ends, radius))
+    path.apart(&ends, path.screen_distance(&ends, radius))
 }
 
 /// What a segment of the path gives the acceptance of its candidates: the (scaled) signed

@@ -12,7 +12,9 @@
 //!   velocities;
 //! - [`Path::from_rows`] (`rows.rs`): a path from rows of the batch arrays, with their `+∞`
 //!   padding;
-//! - [`Ball::path`] (`from_ball.rs`): the friction ball as a path.
+//! - [`Ball::path`] (`from_ball.rs`): the friction ball as a path;
+//! - [`FrictionPath`] (`friction_path.rs`): the friction ball as a path from a given time, in
+//!   a calendar's dimension.
 //!
 //! ```
 //! use ballcollide::path::{Path3, Segment3};
@@ -32,11 +34,13 @@
 //! [`Ball`]: crate::Ball
 //! [`Ball::path`]: crate::Ball::path
 
+mod friction_path;
 mod from_ball;
 mod piecewise;
 mod rows;
 mod segment;
 
+pub use friction_path::FrictionPath;
 pub(crate) use piecewise::{Names, locate, spans};
 pub use piecewise::{Path, Path2, Path3};
 pub(crate) use rows::segments_from_rows;

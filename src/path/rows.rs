@@ -85,7 +85,7 @@ pub(crate) fn segments_from_rows<const D: usize>(
     // finite (`0·x` is ±0 for finite `x`, NaN otherwise). Anything else is checked
     // again below, slowly, to name the first offending value.
     let mut previous = f64::NEG_INFINITY;
-    let mut plain = true;
+    let mut common = true;
     let n = start.len().min(pos.len()).min(vel.len()).min(acc.len());
     let (starts, pos, vel, acc) = (&start[..n], &pos[..n], &vel[..n], &acc[..n]);
     if buffer.len() < n {
@@ -95,7 +95,7 @@ pub(crate) fn segments_from_rows<const D: usize>(
     for (k, segment) in buffer[..n].iter_mut().enumerate() {
         let s = starts[k];
         if s == f64::INFINITY {
-            plain &= starts[k..].iter().all(|&x| x == f64::INFINITY);
+            common &= starts[k..].iter().all(|&x| x == f64::INFINITY);
             used = k;
             break;
         }
@@ -103,14 +103,14 @@ pub(crate) fn segments_from_rows<const D: usize>(
         for i in 0..D {
             zero += 0.0 * pos[k][i] + 0.0 * vel[k][i] + 0.0 * acc[k][i];
         }
-        plain &= (s >= previous) & (zero == 0.0);
+        common &= (s >= previous) & (zero == 0.0);
         previous = s;
         segment.start = s;
         segment.position = pos[k].into();
         segment.velocity = vel[k].into();
         segment.acceleration = acc[k].into();
     }
-    if plain && used > 0 {
+    if common && used > 0 {
         return Ok(used);
     }
     let used = used_rows(start).map_err(|e| e.renamed(names.start))?;

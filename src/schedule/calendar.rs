@@ -8,12 +8,12 @@ use super::queue::{Key, Queue};
 use super::reach::{Reach, reach};
 use super::walls::{Side, Walls, first_wall_contact};
 use crate::collision::path_bounds::PathBounds;
-use crate::collision::path_contact::{first_bounded_contact_one, first_path_contact};
+use crate::collision::path_contact::{first_contact_bounded_fma, first_contact_of_paths};
 use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon, finite};
 use crate::geometry::{ObjectKind, Table};
 use crate::interrupt::Interrupt;
 use crate::motion::Ball;
-use crate::path::{Path, Segment};
+use crate::path::{FrictionPath, Path, Segment};
 
 /// Options of a [`CollisionSchedule`].
 ///
@@ -1044,17 +1044,17 @@ impl<const D: usize> CollisionSchedule<D> {
         Ok(())
     }
 
-    /// Ball `i`'s contact time with ball `j` (`i ≠ j`): the pair search on `(lo, hi)`, with
+    /// The first contact of balls `i` and `j` (`i ≠ j`): the pair search on `(lo, hi)`, with
     /// the paths' bounds (stored, or formed here: the same either way).
-    fn pair_time(&self, i: usize, j: usize) -> Option<f64> {
+    fn first_contact(&self, i: usize, j: usize) -> Option<f64> {
         let (a, b) = (i.min(j), i.max(j));
         let (pa, pb) = (self.paths[a].segments(), self.paths[b].segments());
         let radii = [self.radii[a] + self.radii[b], 0.0];
         match (self.bounds.get(a), self.bounds.get(b)) {
             (Some(ba), Some(bb)) => {
-                first_bounded_contact_one((pa, ba), (pb, bb), radii, self.t_max)
+                first_contact_bounded_fma((pa, ba), (pb, bb), radii, self.t_max)
             }
-            _ => first_path_contact(pa, pb, radii, self.t_max),
+            _ => first_contact_of_paths(pa, pb, radii, self.t_max),
         }
     }
 
@@ -1235,7 +1235,7 @@ impl<const D: usize> CollisionSchedule<D> {
                     if was_searched(searched, k) && self.updated[ku] <= stamp {
                         continue;
                     }
-                    self.pair_time(i, ku)
+                    self.first_contact(i, ku)
                 }
                 Some(Known::Since { partner_time, .. }) => {
                     // The same pair on the same paths: its answer as found then.
@@ -1243,7 +1243,7 @@ impl<const D: usize> CollisionSchedule<D> {
                     Some(partner_time)
                 }
                 Some(Known::Pair(other, Some(answer))) if other == ku => answer,
-                _ => self.pair_time(i, ku),
+                _ => self.first_contact(i, ku),
             };
             if k == self.want {
                 self.pair_answer = Some(t);
@@ -1379,69 +1379,6 @@ impl<const D: usize> CollisionSchedule<D> {
             _ => TransitionKey::NOTHING,
         };
         queue.set(i, key);
-    }
-}
-
-/// A friction ball's path from a time `t`, in the dimension `D` of a calendar.
-pub trait FrictionPath<const D: usize> {
-    /// [`Ball::path`] with every start moved on by `t`.
-    ///
-    /// # Errors
-    /// As [`Ball::path`].
-    ///
-    /// ```
-    /// use ballcollide::Ball;
-    /// use ballcollide::schedule::FrictionPath;
-    /// use nalgebra::Vector2;
-    /// let ball = Ball::new(Vector2::zeros(), Vector2::new(1.0, 0.0), 0.5)?;
-    /// let path = FrictionPath::<2>::path_from(&ball, 3.0)?;
-    /// assert_eq!(path.segments()[1].start, 5.0);
-    /// # Ok::<(), ballcollide::InputError>(())
-    /// ```
-    fn path_from(&self, t: f64) -> Result<Path<D>, InputError> {
-        let mut segments = Vec::new();
-        self.write_path_from(t, &mut segments)?;
-        Path::new(segments)
-    }
-
-    /// The segments of [`path_from`](Self::path_from)`(t)` written over `out`'s (its memory
-    /// reused: what a calendar's update does), checked as `path_from` checks them.
-    ///
-    /// # Errors
-    /// As [`path_from`](Self::path_from); `out` then holds no path.
-    ///
-    /// ```
-    /// use ballcollide::Ball;
-    /// use ballcollide::path::Path2;
-    /// use ballcollide::schedule::FrictionPath;
-    /// use nalgebra::Vector2;
-    /// let ball = Ball::new(Vector2::zeros(), Vector2::new(1.0, 0.0), 0.5)?;
-    /// let mut segments = Vec::new();
-    /// FrictionPath::<2>::write_path_from(&ball, 3.0, &mut segments)?;
-    /// assert_eq!(Path2::new(segments)?, FrictionPath::<2>::path_from(&ball, 3.0)?);
-    /// # Ok::<(), ballcollide::InputError>(())
-    /// ```
-    fn write_path_from(&self, t: f64, out: &mut Vec<Segment<D>>) -> Result<(), InputError>;
-}
-
-impl FrictionPath<2> for Ball {
-    fn write_path_from(&self, t: f64, out: &mut Vec<Segment<2>>) -> Result<(), InputError> {
-        let shift = |out: &mut Vec<Segment<2>>| {
-            for segment in out.iter_mut() {
-                segment.start += t;
-            }
-        };
-        self.write_segments(out);
-        shift(out);
-        // Valid moved on, valid from 0 (the same values; starts 0 ≤ τ finite, as τ + t is):
-        // one check. Else the error `Ball::path` reports first, if any, as `path_from` does.
-        if Path::check(out).is_ok() {
-            return Ok(());
-        }
-        self.write_segments(out);
-        Path::check(out)?;
-        shift(out);
-        Path::check(out)
     }
 }
 

@@ -42,7 +42,10 @@ mod reach;
 mod simulation;
 mod walls;
 
-pub use calendar::{CollisionSchedule, FrictionPath, HeapBytes, ScheduleOptions, UPDATE_CHUNK};
+pub use calendar::{CollisionSchedule, HeapBytes, ScheduleOptions, UPDATE_CHUNK};
+// Re-exported from `path`, where it lives: the calendar's friction-ball
+// constructors take balls that have it.
+pub use crate::path::FrictionPath;
 pub use event::{Collision, Event, ObjectEvent, Transition, WallContact};
 pub use objects::ObjectCounts;
 pub use simulation::{

@@ -3,7 +3,7 @@
 //! down to contact distances of `2⁻⁴⁰⁰` of the separation (issue 39). The pairs and the check
 //! are shared with the fuzz target `queries` (`tests/support/narrow_pairs.rs`).
 
-use crate::support::narrow_pairs;
+use crate::support::{cases, narrow_pairs};
 
 use narrow_pairs::{NarrowDraw, narrow_pair, queries_agree};
 use proptest::prelude::*;
@@ -37,8 +37,8 @@ fn draw_strategy() -> impl Strategy<Value = NarrowDraw> {
 }
 
 proptest! {
-    // Two cheap queries a case (about 10 µs): many cases.
-    #![proptest_config(ProptestConfig::with_cases(4096))]
+    // Two cheap queries a case (about 10 µs): many cases (`PROPTEST_CASES` if set).
+    #![proptest_config(ProptestConfig::with_cases(cases::cases(4096)))]
 
     #[test]
     fn both_queries_agree_on_one_pair(draw in draw_strategy()) {

@@ -15,6 +15,7 @@ pub mod geometry_strategies;
 pub mod invariants;
 pub mod narrow_pairs;
 pub mod path_invariants;
+pub mod path_rows;
 pub mod path_strategies;
 pub mod path_table;
 pub mod property_paths;

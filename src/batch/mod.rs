@@ -31,17 +31,17 @@ use nalgebra::Vector2;
 use rayon::prelude::*;
 use rayon::{ThreadPool, ThreadPoolBuilder};
 
-use crate::coefficients::gap_value;
 use crate::collision::after_stop::after_first_stop_of;
 use crate::collision::crossing::{FirstWindow, apart_by_window};
 use crate::collision::first_contact_given;
 use crate::collision::length_unit::{normalise_lanes, normalised};
 use crate::collision::moving_entry::{WhileMoving, while_moving};
-use crate::collision::prefilter::{PairInput, screen_pair, valid};
+use crate::collision::prefilter::{PairInput, screen_runs, valid};
 use crate::collision::straight;
 use crate::error::{
     InputError, InputErrorKind, check_contact_distance, check_friction, check_horizon, finite,
 };
+use crate::gap::gap_value;
 use crate::interrupt::Interrupt;
 use crate::motion::Ball;
 use crate::simd::{self, LANES};
@@ -368,7 +368,7 @@ impl Held {
         let mut no_entry = [false; LANES];
         for ((entry, no_entry), lane) in entry.iter_mut().zip(&mut no_entry).zip(&lanes) {
             let m = while_moving(lane);
-            (*entry, *no_entry) = (m.entry, m.no_entry);
+            (*entry, *no_entry) = (m.entry, m.screened_out);
         }
         let mut free = [false; LANES];
         for ((free, &(first, _)), &no_entry) in free.iter_mut().zip(&apart).zip(&no_entry) {
@@ -404,7 +404,14 @@ impl Held {
             } else if free & applies {
                 t
             } else {
-                search(pairs, i, Some(WhileMoving { entry, no_entry }))?
+                search(
+                    pairs,
+                    i,
+                    Some(WhileMoving {
+                        entry,
+                        screened_out: no_entry,
+                    }),
+                )?
             };
         }
         Ok(())
@@ -421,7 +428,7 @@ fn search(pairs: &Pairs<'_>, i: usize, moving: Option<WhileMoving>) -> Result<f6
 
 /// What the screening of a block settles, and where the pairs it leaves open go.
 struct Screened {
-    /// `∞` for pairs proven apart ([`screen_pair`]), in a block where every pair has one ball
+    /// `∞` for pairs proven apart ([`screen_runs`]), in a block where every pair has one ball
     /// at rest the closed form's time (or `∞`) where it applies; NaN for the rest (and for
     /// lanes past the block's length).
     answers: [f64; LANES],
@@ -485,7 +492,7 @@ fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> Screened {
         .zip(&mut screened.at_rest);
     for (k, ((answer, crossing), at_rest)) in lanes.enumerate() {
         let pair = lane(k);
-        let (plain, apart) = screen_pair(&pair);
+        let (plain, apart) = screen_runs(&pair);
         let plain = plain & (k < len);
         *answer = if plain & apart {
             f64::INFINITY
@@ -806,7 +813,7 @@ fn first_error(x: Result<(), InputError>, y: Result<(), InputError>) -> Result<(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::collision::prefilter::never_touch;
+    use crate::collision::prefilter::screened_out_by_runs;
     use crate::{CollisionOptions, collision_time_with};
 
     #[test]
@@ -983,7 +990,7 @@ mod tests {
             let len = LANES.min(r.pos_a.len() - start);
             let answers = screen(&p, start, len).answers;
             for (k, &answer) in answers.iter().enumerate().take(len) {
-                if never_touch(&one(start + k)) {
+                if screened_out_by_runs(&one(start + k)) {
                     assert_eq!(answer, f64::INFINITY, "pair {}", start + k);
                     apart += 1;
                 }
