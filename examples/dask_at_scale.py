@@ -59,7 +59,7 @@ def scene(pairs: int, chunk: int, seed: int) -> dict[str, Any]:
         "pos_b": rng.uniform(0.0, 1.0, *rows) * np.array(TABLE),
         "vel_b": velocity(1.0),
         "friction_b": 0.1,
-        "radius": RADIUS,
+        "contact_distance": RADIUS,
     }
 
 

@@ -69,7 +69,7 @@ pub use gap::Gap;
 pub use motion::Ball;
 pub use path::{Path, Path2, Path3, Segment, Segment2, Segment3};
 
-/// The property tests' case counts (`PROPTEST_CASES`, else the fast tier's).
+/// The property tests' case counts (the fast tier's, raised to `PROPTEST_CASES` if set).
 #[cfg(test)]
 #[path = "../tests/support/cases.rs"]
 mod test_cases;

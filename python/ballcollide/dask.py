@@ -58,6 +58,8 @@ ArrayInput = Union["da.Array", npt.ArrayLike]
 PerPairInput = Union[float, "da.Array", npt.ArrayLike]
 
 _ROWS = ("pos_a", "vel_a", "pos_b", "vel_b")
+#: An argument left out (``None`` is a value, which the core names as a bad one).
+_UNSET: Any = object()
 _NAMES = (
     "pos_a",
     "vel_a",
@@ -179,11 +181,11 @@ def collision_times(
     pos_b: ArrayInput,
     vel_b: ArrayInput,
     friction_b: PerPairInput,
-    contact_distance: PerPairInput | None = None,
+    contact_distance: Any = _UNSET,
     *,
     t_max: PerPairInput = np.inf,
     num_threads: int | None = 1,
-    radius: PerPairInput | None = None,
+    radius: Any = _UNSET,
 ) -> da.Array:
     """The collision times of N pairs held in Dask arrays, as a lazy Dask array.
 
@@ -302,13 +304,13 @@ def collision_times(
 def _contact_distance(contact_distance: Any, radius: Any) -> Any:
     """``contact_distance``, or the same value under its deprecated name ``radius=``, read as
     :func:`ballcollide.collision_times` reads them (with its warning and its errors)."""
-    if radius is None:
-        if contact_distance is None:
+    if radius is _UNSET:
+        if contact_distance is _UNSET:
             raise TypeError(
                 "contact_distance: missing (the distance between the centres at contact)"
             )
         return contact_distance
-    if contact_distance is not None:
+    if contact_distance is not _UNSET:
         raise TypeError("contact_distance: given twice (radius= is its deprecated name)")
     warnings.warn(
         "radius= is deprecated in the pair calls, where it is the contact distance "

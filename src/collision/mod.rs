@@ -145,7 +145,7 @@ pub fn collision_time(
 /// [`collision_time`] with options, such as a horizon `t_max`.
 ///
 /// # Errors
-/// `radius` must be finite and positive, `t_max` must be ≥ 0 (`∞` allowed).
+/// `contact_distance` must be finite and positive, `t_max` must be ≥ 0 (`∞` allowed).
 ///
 /// ```
 /// use ballcollide::{Ball, CollisionOptions, collision_time_with};

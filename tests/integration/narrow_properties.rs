@@ -37,7 +37,7 @@ fn draw_strategy() -> impl Strategy<Value = NarrowDraw> {
 }
 
 proptest! {
-    // Two cheap queries a case (about 10 µs): many cases (`PROPTEST_CASES` if set).
+    // Two cheap queries a case (about 10 µs): many cases (more if `PROPTEST_CASES` asks).
     #![proptest_config(ProptestConfig::with_cases(cases::cases(4096)))]
 
     #[test]

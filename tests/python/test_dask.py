@@ -429,3 +429,8 @@ def test_the_old_name_radius_still_works_with_a_deprecation_warning() -> None:
         bcd.collision_times(*args, 0.0, 0.5, radius=0.5)
     with pytest.raises(TypeError, match=r"^contact_distance: missing"):
         bcd.collision_times(*args, 0.0)
+    # None is a value, as for ballcollide.collision_times: given, and a bad one.
+    with pytest.raises(TypeError, match=r"^contact_distance: given twice"):
+        bcd.collision_times(*args, 0.0, None, radius=0.5)
+    with pytest.raises(TypeError, match=r"^contact_distance: expected real numbers"):
+        bcd.collision_times(*args, 0.0, None)
