@@ -16,6 +16,7 @@ use std::time::Duration;
 use ballcollide::batch::{Threads, collision_times};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
+mod cpu_time;
 #[path = "../tests/support/machine.rs"]
 mod machine;
 #[path = "../tests/support/rng.rs"]
@@ -24,8 +25,8 @@ mod rng;
 mod table_pairs;
 #[path = "../tests/support/thread_cpu_time.rs"]
 mod thread_cpu_time;
+use cpu_time::ThreadCpuTime;
 use table_pairs::{Kind, Set, set};
-use thread_cpu_time::ThreadCpuTime;
 
 fn kernel(c: &mut Criterion<ThreadCpuTime>) {
     machine::print_machine();

@@ -35,6 +35,7 @@ use criterion::{
 };
 use nalgebra::Vector2;
 
+mod cpu_time;
 #[path = "../tests/support/machine.rs"]
 mod machine;
 #[path = "../tests/support/path_table.rs"]
@@ -47,11 +48,11 @@ mod rng;
 mod table_pairs;
 #[path = "../tests/support/thread_cpu_time.rs"]
 mod thread_cpu_time;
+use cpu_time::ThreadCpuTime;
 use path_table::PathTable;
 use pool_balls::{BALL_RADIUS, CUE_SPOT, PoolBall, rack};
 use rng::Rng;
 use table_pairs::{Kind, set};
-use thread_cpu_time::ThreadCpuTime;
 
 /// The contact distance of two pool balls.
 const CONTACT: f64 = 2.0 * BALL_RADIUS;
