@@ -71,8 +71,9 @@ pub fn interruptible<T>(stop: Arc<AtomicBool>, call: impl FnOnce() -> T) -> T {
 }
 
 /// Runs `call` on this thread with `done` as its counter: the batch calls made inside it
-/// ([`collision_times`](crate::batch::collision_times), the path and table batches) add the
-/// items of each chunk they finish to `done` (relaxed: read it from another thread for a
+/// ([`collision_times`](crate::batch::collision_times), the path and table batches) and the
+/// calendar's construction ([`CollisionSchedule::new`](crate::schedule::CollisionSchedule::new),
+/// counting balls) add the items of each chunk they finish to `done` (relaxed: read it from another thread for a
 /// progress bar; it reaches the number of items when the call succeeds). Calls nest: the
 /// innermost counter counts.
 ///

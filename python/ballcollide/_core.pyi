@@ -238,6 +238,7 @@ class CollisionSchedule:
         targets: _Objects = None,
         planes: _Objects = None,
         transitions: bool | None = False,
+        progress: _Progress = None,
     ) -> CollisionSchedule: ...
     @staticmethod
     def from_balls(
@@ -255,6 +256,7 @@ class CollisionSchedule:
         targets: _Objects = None,
         planes: _Objects = None,
         transitions: bool | None = False,
+        progress: _Progress = None,
     ) -> CollisionSchedule: ...
     @property
     def time(self) -> float: ...

@@ -17,7 +17,7 @@ use std::time::Instant;
 
 use super::index_i64;
 use super::input_error::{from_core, input_error};
-use super::long_call::{INLINE_UP_TO, Kernel, Progress, SIGNAL_CHECKS, look, run};
+use super::long_call::{INLINE_UP_TO, Kernel, Progress, SIGNAL_CHECKS, look, run, run_shown};
 use super::paths::{Layout, Side, side};
 use super::read::{self, Given, param, rows};
 use super::table::table_of;
@@ -86,6 +86,9 @@ macro_rules! each_dim {
 ///     (``lo < hi`` on every axis).
 /// t_max
 ///     Horizon: a contact at ``t ≥ t_max`` is none.
+/// progress
+///     As in :func:`collision_times`, counting the balls whose first events are found (the
+///     construction's cost; off by default).
 ///
 /// Raises
 /// ------
@@ -348,10 +351,10 @@ impl CollisionSchedule {
     #[pyo3(
         signature = (start, pos, vel, acc, radius, *, r#box=None, t_max=Given(None),
                      segments=None, segment_sides=None, circles=None, targets=None,
-                     planes=None, transitions=None),
+                     planes=None, transitions=None, progress=None),
         text_signature = "(start, pos, vel, acc, radius, *, box=None, t_max=1e999, \
                           segments=None, segment_sides=None, circles=None, targets=None, \
-                          planes=None, transitions=False)"
+                          planes=None, transitions=False, progress=None)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn new(
@@ -369,6 +372,7 @@ impl CollisionSchedule {
         targets: Option<&Bound<'_, PyAny>>,
         planes: Option<&Bound<'_, PyAny>>,
         transitions: Option<&Bound<'_, PyAny>>,
+        progress: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let paths = side(py, NAMES, [start, pos, vel, acc], Layout::Batch, None)?;
         let radii = radii(py, radius, paths.paths)?;
@@ -377,11 +381,11 @@ impl CollisionSchedule {
         let inner = match paths.dim {
             2 => {
                 let options = options_of::<2>(py, r#box, t_max, objects, transitions)?;
-                Inner::Two(build(py, &paths, &radii, options)?)
+                Inner::Two(build(py, &paths, &radii, options, progress)?)
             }
             _ => {
                 let options = options_of::<3>(py, r#box, t_max, objects, transitions)?;
-                Inner::Three(build(py, &paths, &radii, options)?)
+                Inner::Three(build(py, &paths, &radii, options, progress)?)
             }
         };
         Ok(Self { inner })
@@ -398,7 +402,7 @@ impl CollisionSchedule {
     ///     Numbers or shape ``(N,)``: friction decelerations (``≥ 0``) and radii (``> 0``).
     /// t
     ///     The time at which the balls are given (finite); it is the calendar's time.
-    /// box, t_max
+    /// box, t_max, progress
     ///     As for :class:`CollisionSchedule`.
     ///
     /// Raises
@@ -417,10 +421,10 @@ impl CollisionSchedule {
     #[pyo3(
         signature = (pos, vel, friction, radius, t=Given(None), r#box=None, *, t_max=Given(None),
                      segments=None, segment_sides=None, circles=None, targets=None,
-                     planes=None, transitions=None),
+                     planes=None, transitions=None, progress=None),
         text_signature = "(pos, vel, friction, radius, t=0.0, box=None, *, t_max=1e999, \
                           segments=None, segment_sides=None, circles=None, targets=None, \
-                          planes=None, transitions=False)"
+                          planes=None, transitions=False, progress=None)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn from_balls(
@@ -438,6 +442,7 @@ impl CollisionSchedule {
         targets: Option<&Bound<'_, PyAny>>,
         planes: Option<&Bound<'_, PyAny>>,
         transitions: Option<&Bound<'_, PyAny>>,
+        progress: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let balls = balls(py, pos, vel, friction)?;
         let radii = radii(py, radius, balls.len())?;
@@ -445,7 +450,8 @@ impl CollisionSchedule {
         let t_max = t_max.number_or("t_max", f64::INFINITY)?;
         let objects = [segments, segment_sides, circles, targets, planes];
         let options = options_of::<2>(py, r#box, t_max, objects, transitions)?;
-        let core = run(py, calendar_kernel(balls.len()), || {
+        let progress = Progress::of(py, progress, Some(balls.len()), "ball")?;
+        let core = run_shown(py, calendar_kernel(balls.len()), progress, || {
             Core::from_balls(&balls, &radii, t, options)
         })?;
         Ok(Self {
@@ -695,9 +701,11 @@ fn build<const D: usize>(
     paths: &Side<'_>,
     radii: &[f64],
     options: ScheduleOptions<D>,
+    progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Core<D>> {
     let paths = paths_of::<D>(paths).map_err(|e| from_core(py, e))?;
-    run(py, calendar_kernel(paths.len()), || {
+    let progress = Progress::of(py, progress, Some(paths.len()), "ball")?;
+    run_shown(py, calendar_kernel(paths.len()), progress, || {
         Core::new(paths, radii, options)
     })
 }

@@ -447,14 +447,18 @@ impl<const D: usize> CollisionSchedule<D> {
             schedule.refreshed = vec![0; n];
             schedule.searched = vec![0; n];
         }
-        for i in 0..n {
-            if i % 1024 == 0 {
-                interrupt.check()?;
+        // Each ball's first searches, the build's cost: counted by the caller's counter (a
+        // progress bar) a chunk at a time.
+        for chunk in (0..n).step_by(1024) {
+            interrupt.check()?;
+            let end = (chunk + 1024).min(n);
+            for i in chunk..end {
+                schedule.refresh(i, None);
+                schedule.refresh_wall(i);
+                schedule.refresh_object(i);
+                schedule.refresh_transition(i);
             }
-            schedule.refresh(i, None);
-            schedule.refresh_wall(i);
-            schedule.refresh_object(i);
-            schedule.refresh_transition(i);
+            interrupt.done(end - chunk);
         }
         Ok(schedule)
     }

@@ -1,7 +1,8 @@
 """``progress=`` on the long calls: the batches (``collision_times``,
-``path_collision_times``, ``path_geometry_times``) count the items of each chunk they finish,
-and a bar, a tqdm bar or a callable is moved on to that count while they run; the answers do
-not depend on it. (``simulate``'s bar: test_simulate_progress.py; Ctrl-C with a bar:
+``path_collision_times``, ``path_geometry_times``) and the calendar's construction
+(``CollisionSchedule``, ``CollisionSchedule.from_balls``: balls) count the items of each chunk
+they finish, and a bar, a tqdm bar or a callable is moved on to that count while they run; the
+answers do not depend on it. (``simulate``'s bar: test_simulate_progress.py; Ctrl-C with a bar:
 test_interrupt.py.)"""
 
 import sys
@@ -156,3 +157,69 @@ def test_a_bad_out_is_reported_before_the_bar_is_made():
     with pytest.raises(bc.InputError, match=r"^out"):
         bc.collision_times(pa, va, fa, pb, vb, fb, r, out=np.empty(3), progress=bar)
     assert bar.n == 0 and not bar.closed
+
+
+def friction_balls(n):
+    side = max(1, int(np.ceil(np.sqrt(n))))
+    grid = np.stack(np.meshgrid(np.arange(side), np.arange(side)), -1).reshape(-1, 2)[:n]
+    pos = (grid + 0.5) / side
+    return pos, RNG.normal(size=(n, 2)), 0.1, 0.25 / side
+
+
+def calendar_paths(n):
+    pos, vel, _friction, radius = friction_balls(n)
+    start = np.zeros((n, 1))
+    return start, pos[:, None, :], vel[:, None, :], np.zeros((n, 1, 2)), radius
+
+
+CALENDARS = {
+    "from_balls": (bc.CollisionSchedule.from_balls, friction_balls),
+    "CollisionSchedule": (bc.CollisionSchedule, calendar_paths),
+}
+BOX = ([0, 0], [1, 1])
+
+
+def first_events(schedule):
+    return schedule.next_event(), schedule.next_collision(), len(schedule)
+
+
+@pytest.mark.parametrize("name", list(CALENDARS))
+# Inline (a few balls), released, and watched.
+@pytest.mark.parametrize("n", [0, 5, 3000, 20_000])
+def test_a_calendar_counts_every_ball_once_and_is_the_same(name, n):
+    make, data = CALENDARS[name]
+    args = data(n)
+    shown = []
+    counted = make(*args, box=BOX, progress=shown.append)
+    assert first_events(counted) == first_events(make(*args, box=BOX))
+    assert sum(shown) == n
+    assert all(k > 0 for k in shown)
+
+
+@pytest.mark.parametrize("name", list(CALENDARS))
+def test_a_calendars_bar_is_moved_on_to_the_end_and_closed(name, capsys):
+    make, data = CALENDARS[name]
+    bar = Bar()
+    make(*data(5000), box=BOX, progress=bar)
+    assert bar.closed and bar.n == 5000 and bar.updates >= 1
+    make(*data(3000), box=BOX, progress=True)  # tqdm: a development tool, no skip
+    assert "3000/3000" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("name", list(CALENDARS))
+@pytest.mark.parametrize("progress", [3, "yes", np.bool_(True), NoClose()])
+def test_a_calendars_progress_that_is_not_a_bar_is_refused_naming_it(name, progress):
+    make, data = CALENDARS[name]
+    with pytest.raises(TypeError, match=r"^progress: "):
+        make(*data(10), progress=progress)
+
+
+@pytest.mark.parametrize("name", list(CALENDARS))
+def test_an_error_of_the_callable_stops_the_calendar_and_is_raised(name):
+    make, data = CALENDARS[name]
+
+    def fails(n):
+        raise RuntimeError("no more")
+
+    with pytest.raises(RuntimeError, match="no more"):
+        make(*data(20_000), progress=fails)
