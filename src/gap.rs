@@ -7,7 +7,7 @@ use crate::motion::Ball;
 /// The relative motion of two balls on a time window in which both move without stopping
 /// (or rest): with `s` the time since the window's start,
 /// `d(s) = offset + velocity·s + ½·acceleration·s²` is the vector from B's centre to A's,
-/// and the **gap** `g(s) = |d(s)|² − radius²` is negative exactly when the balls overlap.
+/// and the **gap** `g(s) = |d(s)|² − contact_distance²` is negative exactly when the balls overlap.
 ///
 /// `g` is the quartic `a·s⁴ + b·s³ + c·s² + d·s + e` of [`Gap::quartic`]; the collision
 /// search, however, evaluates `g` and its derivatives through `d(s)`, which stays accurate
@@ -36,8 +36,8 @@ pub struct Gap<const D: usize = 2> {
     pub velocity: SVector<f64, D>,
     /// `d″`: relative acceleration, constant on the window.
     pub acceleration: SVector<f64, D>,
-    /// The distance between centres at contact (the sum of the radii).
-    pub radius: f64,
+    /// The distance between centres at contact: the contact distance, the sum of the radii.
+    pub contact_distance: f64,
 }
 
 impl Gap<2> {
@@ -57,12 +57,12 @@ impl Gap<2> {
     /// assert_eq!(after_stop.acceleration, Vector2::zeros());
     /// # Ok::<(), ballcollide::InputError>(())
     /// ```
-    pub fn between(a: &Ball, b: &Ball, radius: f64, t0: f64) -> Self {
+    pub fn between(a: &Ball, b: &Ball, contact_distance: f64, t0: f64) -> Self {
         Self {
             offset: a.position_at(t0) - b.position_at(t0),
             velocity: a.velocity_at(t0) - b.velocity_at(t0),
             acceleration: moving_friction(a, t0) - moving_friction(b, t0),
-            radius,
+            contact_distance,
         }
     }
 }
@@ -78,7 +78,7 @@ impl<const D: usize> Gap<D> {
     ///     offset: Vector2::new(1.0, 0.0),
     ///     velocity: Vector2::new(-1.0, 0.0),
     ///     acceleration: Vector2::new(0.5, 0.0),
-    ///     radius: 0.25,
+    ///     contact_distance: 0.25,
     /// };
     /// assert_eq!(gap.time_scaled(4.0).value(0.25), gap.value(1.0));
     /// ```
@@ -88,7 +88,7 @@ impl<const D: usize> Gap<D> {
             offset: self.offset,
             velocity: self.velocity * h,
             acceleration: self.acceleration * (h * h),
-            radius: self.radius,
+            contact_distance: self.contact_distance,
         }
     }
 
@@ -102,7 +102,7 @@ impl<const D: usize> Gap<D> {
     ///     offset: Vector2::new(3.0, 1.0),
     ///     velocity: Vector2::new(-2.0, 0.0),
     ///     acceleration: Vector2::new(1.0, 0.0),
-    ///     radius: 1.0,
+    ///     contact_distance: 1.0,
     /// };
     /// let later = gap.shifted(2.0);
     /// assert_eq!(later.offset, Vector2::new(1.0, 1.0));
@@ -114,7 +114,7 @@ impl<const D: usize> Gap<D> {
             offset: self.separation(s),
             velocity: self.relative_velocity(s),
             acceleration: self.acceleration,
-            radius: self.radius,
+            contact_distance: self.contact_distance,
         }
     }
 
@@ -133,7 +133,7 @@ impl<const D: usize> Gap<D> {
     ///     offset: Vector2::new(3.0, 0.0),
     ///     velocity: Vector2::new(-2.0, 0.0),
     ///     acceleration: Vector2::new(1.0, 0.0),
-    ///     radius: 1.5,
+    ///     contact_distance: 1.5,
     /// };
     /// let [a, b, c, d, e] = gap.quartic();
     /// let roots = solve_quartic(a, b, c, d, e);
@@ -148,7 +148,7 @@ impl<const D: usize> Gap<D> {
             v.dot(&f),
             v.norm_squared() + p.dot(&f),
             2.0 * p.dot(&v),
-            p.norm_squared() - self.radius * self.radius,
+            p.norm_squared() - self.contact_distance * self.contact_distance,
         ]
     }
 
@@ -161,7 +161,7 @@ impl<const D: usize> Gap<D> {
     ///     offset: Vector2::new(3.0, 1.0),
     ///     velocity: Vector2::new(-2.0, 0.0),
     ///     acceleration: Vector2::new(1.0, 0.0),
-    ///     radius: 1.0,
+    ///     contact_distance: 1.0,
     /// };
     /// assert_eq!(gap.separation(2.0), Vector2::new(1.0, 1.0)); // 3 − 4 + 2
     /// assert_eq!(gap.relative_velocity(2.0), Vector2::new(0.0, 0.0));
@@ -180,15 +180,15 @@ impl<const D: usize> Gap<D> {
         self.velocity + self.acceleration * s
     }
 
-    /// `g(s) = |d(s)|² − radius²`, with the subtraction done inside fused multiply-adds so
-    /// that its sign is right when the distance is within rounding of the radius.
+    /// `g(s) = |d(s)|² − contact_distance²`, with the subtraction done inside fused multiply-adds so
+    /// that its sign is right when the distance is within rounding of the contact distance.
     ///
     /// The larger component goes last whatever the axes, so that rotating or reflecting the
     /// whole configuration by quarter turns changes nothing, bit for bit. Example:
     /// [`Gap::separation`].
     #[inline(always)]
     pub fn value(&self, s: f64) -> f64 {
-        gap_value_of(&self.separation(s), self.radius)
+        gap_value_of(&self.separation(s), self.contact_distance)
     }
 
     /// `½·g′(s) = d(s)·d′(s)`: negative while the balls approach (example:
@@ -224,7 +224,7 @@ impl<const D: usize> Gap<D> {
     pub(crate) fn value_noise(&self) -> f64 {
         let size =
             self.offset.abs().sum() + self.velocity.abs().sum() + self.acceleration.abs().sum();
-        2.0 * f64::EPSILON * self.radius * (2.0 * size + self.radius)
+        2.0 * f64::EPSILON * self.contact_distance * (2.0 * size + self.contact_distance)
     }
 }
 

@@ -71,7 +71,7 @@ impl FirstWindow {
             offset: Vector2::new(pair.pos_a[0] - pair.pos_b[0], pair.pos_a[1] - pair.pos_b[1]),
             velocity: Vector2::new(vax - vbx, vay - vby),
             acceleration: Vector2::new(-vax / tau_a - -vbx / tau_b, -vay / tau_a - -vby / tau_b),
-            radius,
+            contact_distance: radius,
         };
         // A long window is searched in pieces, which the lanes leave to the search.
         let qualifies = qualifies & !long_window(&initial, length);

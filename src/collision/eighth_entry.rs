@@ -149,7 +149,7 @@ pub(crate) fn window_eighth<const D: usize, const ONE_PAIR: bool>(
     let scaled = in_own_unit(&gap.time_scaled(h));
     let end = length / h;
     let eighth = first_open_eighth(&scaled, end);
-    let qualifies = short & before & (scaled.radius >= RADIUS_FLOOR);
+    let qualifies = short & before & (scaled.contact_distance >= RADIUS_FLOOR);
     // Every eighth proven positive: no entry, the gap positive at the end (the search would
     // prove it piece by piece).
     let proven = qualifies & (eighth.index == 8.0);

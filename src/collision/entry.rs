@@ -244,7 +244,7 @@ mod tests {
             offset: Vector2::from(offset),
             velocity: Vector2::from(velocity),
             acceleration: Vector2::zeros(),
-            radius: 1.0,
+            contact_distance: 1.0,
         }
     }
 

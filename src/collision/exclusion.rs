@@ -242,7 +242,7 @@ fn bernstein<const D: usize>(gap: &Gap<D>, end: f64) -> ([f64; 5], f64) {
         a0 + a1 + a2 + a3 + a4,
     ];
     let l1 = |v: &nalgebra::SVector<f64, D>| v.iter().fold(0.0, |sum, x| sum + x.abs());
-    let m = l1(&gap.offset) + l1(&gap.velocity) + l1(&gap.acceleration) + gap.radius;
+    let m = l1(&gap.offset) + l1(&gap.velocity) + l1(&gap.acceleration) + gap.contact_distance;
     let margin = (16.0 + 4.0 * ISOLATING_SPLITS as f64) * f64::EPSILON * (m * m);
     (b, margin)
 }
@@ -300,7 +300,7 @@ mod tests {
             offset: Vector2::from(offset),
             velocity: Vector2::from(velocity),
             acceleration: Vector2::from(acceleration),
-            radius: 1.0,
+            contact_distance: 1.0,
         }
     }
 

@@ -73,7 +73,7 @@ impl<const D: usize> Gap<D> {
             offset: u(self.offset),
             velocity: u(self.velocity),
             acceleration: u(self.acceleration),
-            radius: unit.apply(self.radius),
+            contact_distance: unit.apply(self.contact_distance),
         }
     }
 }

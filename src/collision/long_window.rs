@@ -32,7 +32,7 @@ pub(crate) const LONG: f64 = (1u64 << 40) as f64;
 #[inline(always)]
 pub(crate) fn long_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool {
     const LONG2: f64 = LONG * LONG;
-    let size2 = gap.offset.norm_squared() + gap.radius * gap.radius;
+    let size2 = gap.offset.norm_squared() + gap.contact_distance * gap.contact_distance;
     let length2 = length * length;
     let run2 = length2 * gap.velocity.norm_squared();
     let bend2 = length2 * (length2 * gap.acceleration.norm_squared());
@@ -48,13 +48,14 @@ pub(crate) fn long_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool {
 pub(crate) fn short_piece<const D: usize>(gap: &Gap<D>, length: f64) -> bool {
     let a = gap.acceleration.norm();
     let speed = gap.velocity.norm() + a * length;
-    (length * speed <= LONG * gap.radius) & (length * (length * a) <= LONG * (LONG * gap.radius))
+    (length * speed <= LONG * gap.contact_distance)
+        & (length * (length * a) <= LONG * (LONG * gap.contact_distance))
 }
 
 /// The gap's own time scale: `min(L/|v|, √(L/|a|))`, `L² = |d|² + r²` (`∞` for a motion at
 /// rest).
 pub(crate) fn natural_time<const D: usize>(gap: &Gap<D>) -> f64 {
-    let size = (gap.offset.norm_squared() + gap.radius * gap.radius).sqrt();
+    let size = (gap.offset.norm_squared() + gap.contact_distance * gap.contact_distance).sqrt();
     let by_speed = size / gap.velocity.norm();
     let by_acceleration = (size / gap.acceleration.norm()).sqrt();
     by_speed.min(by_acceleration)
@@ -90,7 +91,7 @@ mod tests {
             offset: Vector2::from(offset),
             velocity: Vector2::from(velocity),
             acceleration: Vector2::from(acceleration),
-            radius: 0.5,
+            contact_distance: 0.5,
         }
     }
 

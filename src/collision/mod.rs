@@ -291,8 +291,11 @@ fn first_contact_in_unit(
 /// the searches that call it form its fused products in hardware, not by a library call.
 #[inline(always)]
 pub(crate) fn apart_at_start<const D: usize>(gap: &Gap<D>) -> bool {
-    let unit = LengthUnit::of(largest([largest(gap.offset.into()), gap.radius]));
-    gap_value_of(&gap.offset.map(|x| unit.apply(x)), unit.apply(gap.radius)) > 0.0
+    let unit = LengthUnit::of(largest([largest(gap.offset.into()), gap.contact_distance]));
+    gap_value_of(
+        &gap.offset.map(|x| unit.apply(x)),
+        unit.apply(gap.contact_distance),
+    ) > 0.0
 }
 
 /// A window's motion in time units of the window (every field a length: the offset, the
@@ -304,7 +307,7 @@ fn in_own_unit<const D: usize>(gap: &Gap<D>) -> Gap<D> {
         largest(gap.offset.into()),
         largest(gap.velocity.into()),
         largest(gap.acceleration.into()),
-        gap.radius,
+        gap.contact_distance,
     ])))
 }
 
@@ -529,7 +532,7 @@ fn unbounded_length<const D: usize>(gap: &Gap<D>) -> f64 {
         // above the radius beyond the larger root of that quadratic; a margin of 2⁻²⁰ covers
         // the rounding of the bound (the window's end needs no precision).
         let (a, v) = (gap.acceleration.norm(), gap.velocity.norm());
-        let reach = gap.offset.norm() + gap.radius;
+        let reach = gap.offset.norm() + gap.contact_distance;
         let bound = (v + (v * v + 2.0 * a * reach).sqrt()) / a;
         bound * (1.0 + 1.0 / f64::from(1u32 << 20))
     } else {

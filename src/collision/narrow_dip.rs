@@ -53,7 +53,7 @@ fn size<const D: usize>(gap: &Gap<D>) -> f64 {
 /// [`narrow`] for a window of that [`size`].
 #[inline(always)]
 fn narrow_beside<const D: usize>(gap: &Gap<D>, size: f64) -> bool {
-    gap.radius <= NARROW * size
+    gap.contact_distance <= NARROW * size
 }
 
 /// At a dip of a [`narrow`] gap whose float samples are all `≥ 0`: `lowest` the float time
@@ -89,7 +89,7 @@ pub(crate) fn narrow_entry<const D: usize>(gap: &Gap<D>, left: f64, lowest: f64)
     // [2, 4): the comparison |C|² < r²|d′|² then neither underflows nor overflows for any
     // motion the contract covers (a speed so small that |d′|² underflows has a band of time
     // far wider than the grid: no narrow dip there, and the comparison says no).
-    let unit = LengthUnit::of(gap.radius);
+    let unit = LengthUnit::of(gap.contact_distance);
     let mut cross2 = 0.0;
     for i in 0..D {
         for j in i + 1..D {
@@ -100,7 +100,7 @@ pub(crate) fn narrow_entry<const D: usize>(gap: &Gap<D>, left: f64, lowest: f64)
             cross2 += c * c;
         }
     }
-    let r = unit.apply(gap.radius);
+    let r = unit.apply(gap.contact_distance);
     let reach2 = r * r * speed2;
     let within = cross2 < reach2;
     if !within {
@@ -127,7 +127,7 @@ mod tests {
             offset: Vector2::new(1.0, 0.0),
             velocity: Vector2::new(-3.0, 0.0),
             acceleration: Vector2::zeros(),
-            radius: r,
+            contact_distance: r,
         };
         let third = 1.0f64 / 3.0;
         assert!(narrow(&gap));
@@ -152,7 +152,7 @@ mod tests {
                 offset: Vector3::new(0.5, 0.0, 0.0),
                 velocity: Vector3::new(-1.0, 0.0, 0.0),
                 acceleration: Vector3::new(0.0, 0.0, a),
-                radius: r,
+                contact_distance: r,
             };
             assert_eq!(narrow_entry(&gap, 0.0, 0.5).is_some(), hit, "{a}");
         }
@@ -167,7 +167,7 @@ mod tests {
             offset: Vector2::new(1.0, 0.0),
             velocity: Vector2::new(-1.0, 0.0),
             acceleration: Vector2::new(2.0, 0.0),
-            radius: 1e-100,
+            contact_distance: 1e-100,
         };
         assert!(narrow(&gap));
         assert_eq!(narrow_entry(&gap, 0.0, 0.5), None);
@@ -191,7 +191,7 @@ mod tests {
             offset: Vector2::new(1.0, 0.0),
             velocity: Vector2::new(-2.0, 0.0),
             acceleration: Vector2::zeros(),
-            radius: 1e-6,
+            contact_distance: 1e-6,
         };
         assert!(!narrow(&gap));
         assert_eq!(narrow_entry(&gap, 0.0, 0.5), None);

@@ -551,7 +551,7 @@ fn window_gap<const D: usize>(a: &Segment<D>, b: &Segment<D>, start: f64, radius
         offset: a.position_at(start) - b.position_at(start),
         velocity: a.velocity_at(start) - b.velocity_at(start),
         acceleration: a.acceleration - b.acceleration,
-        radius,
+        contact_distance: radius,
     }
 }
 

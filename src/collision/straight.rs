@@ -112,7 +112,7 @@ pub(crate) fn straight_window<const D: usize>(
     if gap.acceleration.iter().any(|&a| a != 0.0) || length.is_nan() || length <= 0.0 {
         return None;
     }
-    let (d, v, radius) = (&gap.offset, &gap.velocity, gap.radius);
+    let (d, v, radius) = (&gap.offset, &gap.velocity, gap.contact_distance);
     let speed2 = v.norm_squared();
     let size2 = d.norm_squared() + radius * radius;
     let in_range =
@@ -209,7 +209,7 @@ mod tests {
             offset: Vector2::from(d),
             velocity: Vector2::from(v),
             acceleration: Vector2::zeros(),
-            radius,
+            contact_distance: radius,
         };
         straight_window(&gap, length, true)
     }
@@ -237,7 +237,7 @@ mod tests {
             offset: Vector2::new(2.0, 0.0),
             velocity: Vector2::new(-1.0, 0.0),
             acceleration: Vector2::new(0.1, 0.0),
-            radius: 0.5,
+            contact_distance: 0.5,
         };
         assert_eq!(straight_window(&accelerating, 1.0, true), None);
     }
@@ -248,7 +248,7 @@ mod tests {
             offset: Vector2::from(d),
             velocity: Vector2::from(v),
             acceleration: Vector2::zeros(),
-            radius: 0.5,
+            contact_distance: 0.5,
         };
         let apart = Some(WindowSearch::NoEntry {
             ends_positive: true,

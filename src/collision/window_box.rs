@@ -94,7 +94,7 @@ fn axis_range(p: f64, v: f64, a: f64, length: f64) -> (f64, f64, f64, f64) {
 #[inline(always)]
 pub(crate) fn apart_on_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool {
     let mut nearest2 = 0.0;
-    let (mut size, mut spread) = (gap.radius, 0.0);
+    let (mut size, mut spread) = (gap.contact_distance, 0.0);
     for i in 0..D {
         let (p, v, a) = (gap.offset[i], gap.velocity[i], gap.acceleration[i]);
         let (lo, hi, magnitude, axis_spread) = axis_range(p, v, a, length);
@@ -106,7 +106,7 @@ pub(crate) fn apart_on_window<const D: usize>(gap: &Gap<D>, length: f64) -> bool
         nearest2 += nearest * nearest;
         size += magnitude;
     }
-    let reach = with_underflow(gap.radius + MARGIN * size, spread);
+    let reach = with_underflow(gap.contact_distance + MARGIN * size, spread);
     // The squares too may have lost a few `2⁻¹⁰⁷⁵` to underflow: kept that far apart where they
     // are that small. NaN (an overflowing window) fails the comparisons: not proven.
     let (near, far) = (nearest2, reach * reach);
@@ -127,7 +127,7 @@ mod tests {
             offset: Vector2::from(offset),
             velocity: Vector2::from(velocity),
             acceleration: Vector2::from(acceleration),
-            radius: 0.5,
+            contact_distance: 0.5,
         }
     }
 

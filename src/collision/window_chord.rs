@@ -50,7 +50,7 @@ pub(crate) fn apart_across_window_chord<const D: usize>(gap: &Gap<D>, length: f6
     // (A NaN or infinite largest component, or none, proves nothing: caught by `nn ≥ 1`.)
     let scale = 1.0 / largest;
     let (mut at_start, mut slope, mut bend, mut nn) = (0.0, 0.0, 0.0, 0.0);
-    let (mut size, mut spread) = (gap.radius, 0.0);
+    let (mut size, mut spread) = (gap.contact_distance, 0.0);
     for i in 0..D {
         let n = normal[i] * scale;
         nn += n * n;
@@ -69,7 +69,7 @@ pub(crate) fn apart_across_window_chord<const D: usize>(gap: &Gap<D>, length: f6
     let nearest = lo.max(0.0) + (-hi).max(0.0);
     // The margin of the box, for its magnitudes (each projected term is at most the box's,
     // `|nᵢ| ≤ 1`), and `D` times its underflow (the projections add `D` products per value).
-    let mut reach = gap.radius + MARGIN * size;
+    let mut reach = gap.contact_distance + MARGIN * size;
     if reach < NORMAL_FLOOR * spread {
         reach += D as f64 * UNDERFLOW * spread;
     }
@@ -97,7 +97,7 @@ mod tests {
             offset: Vector2::from(offset),
             velocity: Vector2::from(velocity),
             acceleration: Vector2::from(acceleration),
-            radius,
+            contact_distance: radius,
         }
     }
 
@@ -164,7 +164,7 @@ mod tests {
                     offset: Vector3::new(v(), v(), v()),
                     velocity: Vector3::new(v(), v(), v()),
                     acceleration: Vector3::new(v(), v(), v()),
-                    radius: r,
+                    contact_distance: r,
                 };
                 (
                     apart_across_window_chord(&g, length),
