@@ -250,7 +250,7 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
     "CollisionSchedule": (
         bc.CollisionSchedule,
         TWO_PATHS
-        | {"radius": 0.25, "box": BOX, "t_max": math.inf, "transitions": False}
+        | {"radius": 0.25, "box": BOX, "t_max": math.inf, "transitions": False, "progress": None}
         | OBJECTS_2D,
         {
             **dict.fromkeys(TWO_PATHS, NOTHING),
@@ -258,12 +258,15 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
             "box": OPTIONAL,
             "t_max": NUMBER,
             "transitions": TRANSITIONS,
+            "progress": FLAG,
             **TABLE_ACCEPTS,
         },
     ),
     "CollisionSchedule.from_balls": (
         bc.CollisionSchedule.from_balls,
-        SCENE | {"t": 0.0, "box": BOX, "t_max": math.inf, "transitions": False} | OBJECTS_2D,
+        SCENE
+        | {"t": 0.0, "box": BOX, "t_max": math.inf, "transitions": False, "progress": None}
+        | OBJECTS_2D,
         {
             "pos": NOTHING,
             "vel": NOTHING,
@@ -273,6 +276,7 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
             "box": OPTIONAL,
             "t_max": NUMBER,
             "transitions": TRANSITIONS,
+            "progress": FLAG,
             **TABLE_ACCEPTS,
         },
     ),
