@@ -30,6 +30,22 @@ def test_a_resting_contact_ends_without_overlap(restitution, vel):
         assert overlap(state[3], 0.125) <= 1e-9, t
 
 
+@pytest.mark.parametrize("k", [10, 30])
+@pytest.mark.parametrize("axis", [0, 1])
+def test_a_touching_train_into_a_resting_ball_is_a_newtons_cradle(k, axis):
+    # Ten touching balls into a resting one were refused ("keep colliding", 1,705 events at
+    # one instant): now each ball passes the motion on once.
+    pos = np.zeros((k + 1, 2))
+    pos[:k, axis] = 0.25 * np.arange(k)
+    pos[k, axis] = 0.25 * (k - 1) + 0.75
+    vel = np.zeros((k + 1, 2))
+    vel[:k, axis] = 1.0
+    box = ([-40, -40], [40, 40])
+    run = bc.simulate(pos, vel, 0.0, 0.125, box=box, t_end=3.0)
+    assert len(run.times) == k and np.all(run.times == 0.5)
+    assert run.vel[0, axis] == 0.0 and np.all(run.vel[1:, axis] == 1.0)
+
+
 def test_impossible_starts_are_refused_naming_the_balls():
     with pytest.raises(bc.InputError, match=r"^radius\[0\]: the ball must be narrower"):
         bc.simulate([[0.5, 0.5]], [[1, 0.3]], 0.0, 0.5, box=([0, 0], [1, 2]), t_end=1.0)
