@@ -139,6 +139,15 @@ pub enum InputErrorKind {
         /// When the contact came.
         time: f64,
     },
+    /// A friction ball whose inputs are finite but whose path is not: `part` of it (its
+    /// deceleration `−v/τ`, its resting point `p + ½·v·τ`, or its stop time) overflows to
+    /// `value`.
+    PathOverflow {
+        /// Which part of the path.
+        part: &'static str,
+        /// What it came to.
+        value: f64,
+    },
 }
 
 impl InputErrorKind {
@@ -184,6 +193,7 @@ impl InputErrorKind {
             Self::NonPositiveGravity(_) => "non_positive_gravity",
             Self::ContactOffBall(_) => "contact_off_ball",
             Self::UnresolvedContact { .. } => "unresolved_contact",
+            Self::PathOverflow { .. } => "path_overflow",
         }
     }
 
@@ -212,6 +222,7 @@ impl InputErrorKind {
             Self::TableDimension { value, .. } => Some(value),
             Self::DecreasingStart { start, .. } | Self::StartsDiffer { start, .. } => Some(start),
             Self::BeforeCurrentTime { time, .. } | Self::UnresolvedContact { time } => Some(time),
+            Self::PathOverflow { value, .. } => Some(value),
             Self::IndexOutOfRange { index, .. } => Some(index as f64),
             Self::RepeatedIndex(i) => Some(i as f64),
             Self::EmptyBox { lo, .. } => Some(lo),
@@ -489,6 +500,12 @@ impl fmt::Display for InputErrorKind {
                 f,
                 "the contact at t = {} could not be resolved by its model",
                 Brief(time)
+            ),
+            Self::PathOverflow { part, value } => write!(
+                f,
+                "the ball's {part} is beyond the range of float64 ({}), so its path cannot be \
+                 represented",
+                Brief(value)
             ),
         }
     }

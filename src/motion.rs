@@ -34,6 +34,17 @@ pub struct Ball {
     stop_time: f64,
 }
 
+/// The name, in the calls that take balls as rows (`pos`, `vel`, `friction`: the scene, the
+/// calendar's friction balls, `simulate`), of the [`Ball`] input an error names (`position`,
+/// `velocity`, `friction`).
+pub(crate) fn row_name(argument: &'static str) -> &'static str {
+    match argument {
+        "position" => "pos",
+        "velocity" => "vel",
+        other => other,
+    }
+}
+
 impl Ball {
     /// A ball at `position` with `velocity` and friction deceleration `friction` (≥ 0).
     ///

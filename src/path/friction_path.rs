@@ -1,6 +1,7 @@
 //! [`FrictionPath`]: a friction ball as a path from a given time, in the dimension of a
 //! calendar (re-exported by [`schedule`](crate::schedule), which uses it).
 
+use super::from_ball::check_ball_path;
 use super::{Path, Segment};
 use crate::error::InputError;
 use crate::motion::Ball;
@@ -63,8 +64,8 @@ impl FrictionPath<2> for Ball {
             return Ok(());
         }
         self.write_segments(out);
-        Path::check(out)?;
+        check_ball_path(out)?;
         shift(out);
-        Path::check(out)
+        check_ball_path(out)
     }
 }

@@ -1,7 +1,7 @@
 //! [`Ball::path`]: the seed's friction ball as a path.
 
 use super::{Path, Path2, Segment};
-use crate::error::InputError;
+use crate::error::{InputError, InputErrorKind};
 use crate::motion::Ball;
 
 impl Ball {
@@ -13,9 +13,10 @@ impl Ball {
     /// and from the stop on.
     ///
     /// # Errors
-    /// An [`InputError`] when the path's values overflow although the ball's inputs are finite:
-    /// a resting point beyond the range of `f64` (`|v|²/2μ` overflows; `position` at segment
-    /// 1), or a deceleration `−v/τ` that does (`acceleration` at segment 0).
+    /// An [`InputError`] of kind [`PathOverflow`](crate::InputErrorKind::PathOverflow) when
+    /// the path's values overflow although the ball's inputs are finite: a resting point
+    /// beyond the range of `f64` (`|v|²/2μ` overflows; named `velocity`), or a deceleration
+    /// `−v/τ` that does (`τ = |v|/μ` rounded into the subnormals; named `friction`).
     ///
     /// ```
     /// use ballcollide::Ball;
@@ -33,6 +34,7 @@ impl Ball {
     pub fn path(&self) -> Result<Path2, InputError> {
         let mut segments = Vec::new();
         self.write_segments(&mut segments);
+        check_ball_path(&segments)?;
         Path::new(segments)
     }
 
@@ -65,6 +67,22 @@ impl Ball {
             }
         }
     }
+}
+
+/// [`Path::check`] on a friction ball's segments, its errors named after the ball's inputs:
+/// a ball's finite inputs give a path that fails the check only where a value overflows (its
+/// deceleration, its resting point, or its stop time moved on by the calendar's time).
+pub(crate) fn check_ball_path<const D: usize>(segments: &[Segment<D>]) -> Result<(), InputError> {
+    Path::check(segments).map_err(|e| {
+        let value = e.kind().value().unwrap_or(f64::NAN);
+        let (argument, part) = match e.argument() {
+            "acceleration" => ("friction", "deceleration −v/τ"),
+            "position" => ("velocity", "resting point p + ½·v·τ"),
+            "start" => ("t", "stop time"),
+            _ => return e,
+        };
+        InputError::new(argument, InputErrorKind::PathOverflow { part, value })
+    })
 }
 
 #[cfg(test)]
@@ -162,7 +180,9 @@ mod tests {
         // τ = 1e-15/1.5e308 rounds down to the smallest subnormal, and −v/τ overflows.
         let b = ball([0.0, 0.0], [1e-15, 0.0], 1.5e308);
         let err = b.path().expect_err("the path has an infinite acceleration");
-        assert_eq!((err.argument(), err.index()), ("acceleration", Some(0)));
+        assert_eq!((err.argument(), err.index()), ("friction", None));
+        assert_eq!(err.kind().code(), "path_overflow");
+        assert_eq!(err.kind().value(), Some(f64::NEG_INFINITY));
     }
 
     #[test]
@@ -170,8 +190,13 @@ mod tests {
         // |v|²/2μ = 1e10/2e-300 overflows, though τ = 5e304 does not.
         let b = ball([0.0, 0.0], [1e5, 0.0], 2e-300);
         let err = b.path().expect_err("the path has an infinite position");
-        assert_eq!((err.argument(), err.index()), ("position", Some(1)));
-        assert_eq!(err.kind(), InputErrorKind::NotFinite(f64::INFINITY));
+        assert_eq!((err.argument(), err.index()), ("velocity", None));
+        let part = "resting point p + ½·v·τ";
+        let kind = InputErrorKind::PathOverflow {
+            part,
+            value: f64::INFINITY,
+        };
+        assert_eq!(err.kind(), kind);
     }
 
     proptest! {

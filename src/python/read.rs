@@ -216,6 +216,13 @@ fn asarray<'py>(name: &str, obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyUn
     if let Some(array) = nested_numbers(obj) {
         return Ok(array);
     }
+    // numpy would read `[True, 0.5]` as the numbers `[1, 0.5]`; a bool is no real number
+    // (as for a scalar argument).
+    if holds_bool(obj, 0) {
+        return Err(PyTypeError::new_err(format!(
+            "{name}: expected real numbers, got bool"
+        )));
+    }
     // SAFETY: `obj` is a live object; `PyArray_FromAny` returns a new reference or NULL with
     // an exception set, and with no dtype asked for it returns an ndarray.
     let made = unsafe {
@@ -268,6 +275,25 @@ fn nested_numbers<'py>(obj: &Bound<'py, PyAny>) -> Option<Bound<'py, PyUntypedAr
     read_nested(obj, &shape, &mut values)?;
     let array = PyArray::from_vec(obj.py(), values).reshape(shape).ok()?;
     array.into_any().cast_into::<PyUntypedArray>().ok()
+}
+
+/// Whether `obj`, nested lists or tuples (`depth` levels in), holds a bool (Python's or
+/// numpy's) among its items.
+fn holds_bool(obj: &Bound<'_, PyAny>, depth: usize) -> bool {
+    let is_bool = |item: &Bound<'_, PyAny>| {
+        item.is_instance_of::<PyBool>() || is_numpy_type(item, NpyTypes::PyBoolArrType_Type)
+    };
+    if depth > 32 {
+        return false;
+    }
+    let nested = |item: Bound<'_, PyAny>| is_bool(&item) || holds_bool(&item, depth + 1);
+    if let Ok(list) = obj.cast::<PyList>() {
+        list.iter().any(nested)
+    } else if let Ok(tuple) = obj.cast::<PyTuple>() {
+        tuple.iter().any(nested)
+    } else {
+        false
+    }
 }
 
 /// Appends the numbers of `obj`, nested lists or tuples of `shape`, in C order.

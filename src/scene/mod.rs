@@ -63,7 +63,7 @@ use crate::interrupt::Interrupt;
 use crate::batch::{PerPair, Threads};
 use crate::collision::first_contact_screened;
 use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon};
-use crate::motion::Ball;
+use crate::motion::{Ball, row_name};
 use broad_phase::Sweep;
 
 /// Options of a scene query.
@@ -141,14 +141,7 @@ pub fn balls(
                 Vector2::from(vel[i]),
                 friction.get(i),
             )
-            .map_err(|e| {
-                let name = match e.argument() {
-                    "position" => "pos",
-                    "velocity" => "vel",
-                    _ => "friction",
-                };
-                e.renamed(name).at(i)
-            })
+            .map_err(|e| e.renamed(row_name(e.argument())).at(i))
         })
         .collect()
 }

@@ -12,7 +12,7 @@ use crate::collision::path_contact::{first_contact_bounded_fma, first_contact_of
 use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon, finite};
 use crate::geometry::{ObjectKind, Table};
 use crate::interrupt::Interrupt;
-use crate::motion::Ball;
+use crate::motion::{Ball, row_name};
 use crate::path::{FrictionPath, Path, Segment};
 
 /// Options of a [`CollisionSchedule`].
@@ -910,7 +910,10 @@ impl<const D: usize> CollisionSchedule<D> {
             .iter()
             .zip(&mut spare)
             .enumerate()
-            .try_for_each(|(m, (ball, out))| ball.write_path_from(t, out).map_err(|e| e.at(m)))
+            .try_for_each(|(m, (ball, out))| {
+                ball.write_path_from(t, out)
+                    .map_err(|e| e.renamed(row_name(e.argument())).at(m))
+            })
             .and_then(|()| self.check_indices(indices, balls.len()));
         let result = written.and_then(|()| {
             if balls.is_empty() {
@@ -1395,7 +1398,10 @@ where
     balls
         .iter()
         .enumerate()
-        .map(|(i, b)| b.path_from(t).map_err(|e| e.at(i)))
+        .map(|(i, b)| {
+            b.path_from(t)
+                .map_err(|e| e.renamed(row_name(e.argument())).at(i))
+        })
         .collect()
 }
 

@@ -376,7 +376,11 @@ fn friction_ball_updates_are_path_updates_and_refused_ones_change_nothing() {
             (vec![i, i], new.clone(), "indices[1]"),
             (vec![i, 12], new.clone(), "indices[1]"),
             (vec![i], new.clone(), "paths"),
-            (vec![i, j], vec![new[0], overflows], "position[1]"),
+            (
+                vec![i, j],
+                vec![new[0], overflows],
+                "vel[1]: the ball's resting point",
+            ),
         ];
         for (indices, balls, argument) in refusals {
             let err = by_balls

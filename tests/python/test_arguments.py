@@ -472,17 +472,6 @@ SCALARS = st.one_of(
 VALUES = st.one_of(SCALARS, st.lists(SCALARS, max_size=3))
 
 
-def overflow(error: BaseException) -> bool:
-    """A friction ball whose path is beyond the float range, though its inputs are finite.
-
-    Its deceleration vector ``−v/τ`` (``τ = |v|/μ`` subnormal: a friction near 1.8e308) or its
-    resting point ``p + ½·v·τ`` overflows: the core refuses such a path, naming the path's
-    ``acceleration`` or ``position`` (src/path/from_ball.rs), not the caller's argument. A
-    known gap, left to the motion model's owner (see the report of issue 39's inputs).
-    """
-    return isinstance(error, bc.InputError) and error.argument in {"acceleration", "position"}
-
-
 # Rules that relate arguments: a value of one can break the rule, and the error names the
 # argument that the rule is stated on (a mouth too wide for the table names the mouth). Each
 # rule with the arguments it links: the argument varied and the one named must both be among
@@ -496,6 +485,9 @@ RELATIONS: dict[str, set[str]] = {
     "the ball overlaps ball": {"pos", "radius"},
     "overlaps a wall of the box": {"pos", "radius", "box"},
     "expected shape (N,)": {"shot_table", "ball_start", "strike", "cue"},
+    # A friction ball's path beyond the float range (path_overflow): its deceleration −v/τ
+    # (named friction), its resting point p + ½·v·τ (vel), its stop time moved on by t (t).
+    "so its path cannot be represented": {"pos", "vel", "friction", "t"},
 }  # fmt: skip
 
 
@@ -525,10 +517,52 @@ def test_any_value_of_any_argument_answers_or_is_named(
             r"has \d+ rows, expected \d+", error.reason
         )
         named = names_argument(error, argument) or relates(error, argument)
-        assert mismatch or overflow(error) or named, repr(error)
+        assert mismatch or named, repr(error)
 
 
 # The reproducers of issue 39.
+
+
+@pytest.mark.parametrize("flag", [True, np.bool_(False)])
+def test_a_bool_inside_an_array_argument_is_a_type_error_naming_it(flag: object) -> None:
+    # numpy reads [True, 0.0] as numbers; a bool is no real number, in a list as alone.
+    calls = {
+        "radius": lambda: bc.simulate(
+            [[0, 0], [1, 0]], [[1, 0], [0, 0]], 0.0, [flag, 0.1], box=([-2, -2], [2, 2])
+        ),
+        "pos": lambda: bc.earliest_collision([[flag, 0.0], [0.5, 0]], [[1, 0], [0, 0]], 0.0, 0.1),
+        "box": lambda: bc.CollisionSchedule.from_balls(
+            [[0.5, 0.5]], [[1, 0]], 0.0, 0.1, box=([flag, 0.0], [1, 1])
+        ),
+        "vel_a": lambda: bc.collision_times(
+            [[0, 0]], [[flag, 0.5]], 0.0, [[1, 0]], [[0, 0]], 0.0, 0.5
+        ),
+    }
+    for argument, call in calls.items():
+        with pytest.raises(TypeError, match=rf"^{argument}: expected real numbers, got bool"):
+            call()
+
+
+def test_a_friction_balls_path_beyond_the_float_range_names_the_balls_inputs() -> None:
+    # Finite inputs whose path is not: the deceleration −v/τ (τ = |v|/μ subnormal) named
+    # `friction`, the resting point p + ½·v·τ named `vel`, never the path's own fields.
+    box = ([-1.5e308, -4], [1.5e308, 4])
+    calls = {
+        "friction": lambda: bc.simulate(
+            [[0, 0], [1, 0]], [[1, 0], [0, 0]], 1.7976931348623157e308, 0.25, box=box
+        ),
+        "vel": lambda: bc.simulate(
+            [[1e308, 0], [-1e308, 0]], [[1e308, 0], [0, 0]], 1.0, 0.25, box=box
+        ),
+    }
+    for argument, call in calls.items():
+        with pytest.raises(bc.InputError) as error:
+            call()
+        got = (error.value.argument, error.value.index, error.value.kind)
+        assert got == (argument, 0, "path_overflow")
+        assert "beyond the range of float64" in error.value.reason
+    with pytest.raises(bc.InputError, match=r"^friction\[0\]: the ball's deceleration"):
+        bc.CollisionSchedule.from_balls([[0, 0]], [[1, 0]], 1.7976931348623157e308, 0.25)
 
 
 def test_huge_and_tiny_masses_are_valid_and_bounce() -> None:

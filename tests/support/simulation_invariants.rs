@@ -135,6 +135,7 @@ fn refused_start(
         InputErrorKind::OutsideBox { .. }
         | InputErrorKind::WiderThanBox { .. }
         | InputErrorKind::NotFinite(_)
+        | InputErrorKind::PathOverflow { .. }
         | InputErrorKind::NonPositiveRadius(_)
         | InputErrorKind::NonPositiveMass(_)
         | InputErrorKind::NotInUnitInterval(_)
