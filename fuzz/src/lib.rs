@@ -550,7 +550,9 @@ pub fn geometry_case(u: &mut Unstructured) -> Result<(GeometryCase, i32, i32)> {
 /// A simulation: 1 to 8 balls of radius `2^s·(1/64 … 1/4)` in a box `2^s·[0, 2]²`, each
 /// anywhere in it (overlapping starts are common: refused, and checked to be so), at velocities
 /// and frictions over the whole float range sometimes; one mass or one each (any positive
-/// float); a restitution of 0, 1 or between; an end time from 1/256 to 64.
+/// float); a restitution of 0, 1 or between; an end time from 1/256 to 64. One case in four
+/// (decided by a byte after all the others, so that the inputs of the regression corpus,
+/// which end before it, keep their cases) is a touching train instead ([`as_train`]).
 pub fn simulation_case(u: &mut Unstructured) -> Result<simulation_invariants::SimulationCase> {
     let s = if u.arbitrary::<bool>()? {
         0
@@ -580,13 +582,54 @@ pub fn simulation_case(u: &mut Unstructured) -> Result<simulation_invariants::Si
         _ => f64::from(u.arbitrary::<u8>()?) / 255.0,
     };
     let t_end = f64::from(u.int_in_range(1..=16384u16)?) / 256.0;
-    Ok(simulation_invariants::SimulationCase::in_square(
-        side,
-        &balls,
-        mass,
-        restitution,
-        t_end,
-    ))
+    let case =
+        simulation_invariants::SimulationCase::in_square(side, &balls, mass, restitution, t_end);
+    // An input that ends here reads 0: no train.
+    Ok(match u.arbitrary::<u8>()? % 4 {
+        3 => as_train(case, u.arbitrary::<bool>()?),
+        _ => case,
+    })
+}
+
+/// `case`'s balls made a touching train: the first ball's radius, velocity and friction for
+/// all, each centre two radii on from the last along the first ball's velocity (or along x if
+/// it rests), as many as fit in the box; with `obstacle`, the last ball at rest (the train runs
+/// into it: a Newton's cradle), else the train runs into a wall. Trains of touching balls
+/// moving as one body are where a collision sets off the most events at one instant.
+fn as_train(
+    mut case: simulation_invariants::SimulationCase,
+    obstacle: bool,
+) -> simulation_invariants::SimulationCase {
+    let Some(&[x, y, vx, vy, f]) = case.balls.first() else {
+        return case;
+    };
+    let r = case.radii[0];
+    let speed = vx.hypot(vy);
+    let d = if speed > 0.0 && speed.is_finite() {
+        [vx / speed, vy / speed]
+    } else {
+        [1.0, 0.0]
+    };
+    let fits = |p: [f64; 2]| (0..2).all(|k| p[k] >= case.lo[k] + r && p[k] <= case.hi[k] - r);
+    let mut balls = Vec::new();
+    for i in 0..16u32 {
+        let step = 2.0 * r * f64::from(i);
+        let p = [x + d[0] * step, y + d[1] * step];
+        if !fits(p) {
+            break;
+        }
+        balls.push([p[0], p[1], vx, vy, f]);
+    }
+    if obstacle
+        && balls.len() > 1
+        && let Some(last) = balls.last_mut()
+    {
+        last[2..4].copy_from_slice(&[0.0, 0.0]);
+    }
+    case.radii = vec![r; balls.len()];
+    case.mass = vec![1.0];
+    case.balls = balls;
+    case
 }
 
 /// A simulation on a table: [`simulation_case`]'s balls and box, with 0 to 3 segments (each
