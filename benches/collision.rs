@@ -3,7 +3,7 @@
 //! and, for scale, the floor under any batch kernel on this machine: reading every input of a
 //! batch once and writing one number per pair.
 //!
-//! `cargo bench --bench collision`; criterion prints the median time per iteration, and the
+//! `cargo bench --bench collision` in `benches/`; criterion prints the median time per iteration, and the
 //! throughput in pairs per second (elements/s). `-- kernel`, `-- batch` or `-- floor` selects
 //! a group.
 //! The one-thread kernel groups time the thread's CPU time (see [`ThreadCpuTime`]), the batch

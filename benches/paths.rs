@@ -14,7 +14,7 @@
 //!   fewer than a batch task's chunk, so `Threads::All` runs them on the calling thread too:
 //!   `ball_against_all_all_threads` is the same work as on one thread, in wall time.
 //!
-//! `cargo bench --bench paths` (under 2 minutes: few samples, short runs); `-- pool_table` etc.
+//! `cargo bench --bench paths` in `benches/` (under 2 minutes: few samples, short runs); `-- pool_table` etc.
 //! selects a group. One-thread groups (`…_1_thread`) time the thread's CPU time
 //! ([`ThreadCpuTime`]), the others wall time. First, for each set, the hits and how the pairs
 //! divide are printed (see [`describe`]); with `--features stage-counts`, also how many pairs

@@ -1,7 +1,7 @@
 //! Criterion benchmark of `poly::solve_quartic` on random ball–ball gap quartics, against the
 //! `roots` crate's `find_roots_quartic` on the very same quartics.
 //!
-//! Run: `cargo bench --bench poly`. Besides the timings it prints, once, how many real roots
+//! Run: `cargo bench --bench poly` in `benches/`. Besides the timings it prints, once, how many real roots
 //! `roots` misses (or reports that are not roots) compared with `solve_quartic`, whose roots
 //! are checked against high-precision references in `tests/reference/poly.rs`.
 

@@ -5,7 +5,7 @@
 //! 10,000 and 100,000 are balls on a table scaled to keep the density of 16 balls per
 //! 2.54 × 1.27 m table, half of them rolling at up to 1 m/s, friction 0.1–0.3 m/s².
 //!
-//! `cargo bench --bench scene`; the broad phase on all cores and on one thread, all pairs
+//! `cargo bench --bench scene` in `benches/`; the broad phase on all cores and on one thread, all pairs
 //! (all cores) up to N = 10,000 (at 100,000 it would take minutes per iteration). The number of
 //! pairs the broad phase keeps is printed first.
 

@@ -7,7 +7,8 @@ use crate::motion::Ball;
 /// The relative motion of two balls on a time window in which both move without stopping
 /// (or rest): with `s` the time since the window's start,
 /// `d(s) = offset + velocity·s + ½·acceleration·s²` is the vector from B's centre to A's,
-/// and the **gap** `g(s) = |d(s)|² − contact_distance²` is negative exactly when the balls overlap.
+/// and the **gap** `g(s) = |d(s)|² − contact_distance²` is negative exactly when the balls
+/// overlap.
 ///
 /// `g` is the quartic `a·s⁴ + b·s³ + c·s² + d·s + e` of [`Gap::quartic`]; the collision
 /// search, however, evaluates `g` and its derivatives through `d(s)`, which stays accurate
@@ -180,8 +181,9 @@ impl<const D: usize> Gap<D> {
         self.velocity + self.acceleration * s
     }
 
-    /// `g(s) = |d(s)|² − contact_distance²`, with the subtraction done inside fused multiply-adds so
-    /// that its sign is right when the distance is within rounding of the contact distance.
+    /// `g(s) = |d(s)|² − contact_distance²`, with the subtraction done inside fused
+    /// multiply-adds so that its sign is right when the distance is within rounding of the
+    /// contact distance.
     ///
     /// The larger component goes last whatever the axes, so that rotating or reflecting the
     /// whole configuration by quarter turns changes nothing, bit for bit. Example:

@@ -72,8 +72,9 @@ pub fn interruptible<T>(stop: Arc<AtomicBool>, call: impl FnOnce() -> T) -> T {
 
 /// Runs `call` on this thread with `done` as its counter: the batch calls made inside it
 /// ([`collision_times`](crate::batch::collision_times), the path and table batches) and the
-/// calendar's construction ([`CollisionSchedule::new`](crate::schedule::CollisionSchedule::new),
-/// counting balls) add the items of each chunk they finish to `done` (relaxed: read it from another thread for a
+/// calendar's construction
+/// ([`CollisionSchedule::new`](crate::schedule::CollisionSchedule::new), counting balls) add
+/// the items of each chunk they finish to `done` (relaxed: read it from another thread for a
 /// progress bar; it reaches the number of items when the call succeeds). Calls nest: the
 /// innermost counter counts.
 ///
@@ -98,6 +99,17 @@ pub fn interruptible<T>(stop: Arc<AtomicBool>, call: impl FnOnce() -> T) -> T {
 /// # Ok::<(), ballcollide::InputError>(())
 /// ```
 pub fn counted<T>(done: Arc<AtomicUsize>, call: impl FnOnce() -> T) -> T {
+    with_counter(Some(done), call)
+}
+
+/// Runs `call` on this thread with no counter: what a chunk of a counted call runs (a shot's
+/// calendar, say) adds nothing to the caller's count, which is of the chunk's own items.
+pub(crate) fn uncounted<T>(call: impl FnOnce() -> T) -> T {
+    with_counter(None, call)
+}
+
+/// Runs `call` with `done` as this thread's counter, the outer one put back after it.
+fn with_counter<T>(done: Option<Arc<AtomicUsize>>, call: impl FnOnce() -> T) -> T {
     /// Puts the outer counter back, also when `call` panics.
     struct Restore(Option<Arc<AtomicUsize>>);
     impl Drop for Restore {
@@ -106,7 +118,7 @@ pub fn counted<T>(done: Arc<AtomicUsize>, call: impl FnOnce() -> T) -> T {
             DONE.with(|done| *done.borrow_mut() = outer);
         }
     }
-    let _restore = Restore(DONE.with(|outer| outer.replace(Some(done))));
+    let _restore = Restore(DONE.with(|outer| outer.replace(done)));
     call()
 }
 
@@ -178,6 +190,56 @@ mod tests {
         Interrupt::current().done(5);
         assert_eq!(outer.load(Ordering::Relaxed), 6);
         assert_eq!(inner.load(Ordering::Relaxed), 3);
+    }
+
+    #[test]
+    fn nothing_is_counted_inside_uncounted_and_the_counter_comes_back() {
+        let done = Arc::new(AtomicUsize::new(0));
+        counted(Arc::clone(&done), || {
+            uncounted(|| Interrupt::current().done(7));
+            Interrupt::current().done(2);
+        });
+        assert_eq!(done.load(Ordering::Relaxed), 2);
+    }
+
+    #[test]
+    fn a_batch_of_shots_counts_its_shots_not_their_calendars_balls() {
+        // Each shot builds a calendar, which counts its balls when built under a counter.
+        use crate::batch::Threads;
+        use crate::billiards::{
+            BallParams, BallState, BilliardTable, Cue, ShotOptions, ShotSetup, simulate_shots,
+        };
+        use nalgebra::Vector2;
+        let table = BilliardTable::default();
+        let params = [BallParams::default(); 2];
+        let balls = [
+            BallState::at_rest(Vector2::new(0.0, 0.0)),
+            BallState::at_rest(Vector2::new(0.5, 0.0)),
+        ];
+        let shots: Vec<ShotSetup> = (0..8)
+            .map(|k| ShotSetup {
+                table: &table,
+                balls: &balls,
+                params: &params,
+                strike: Some((
+                    0,
+                    Cue {
+                        v0: 1.0 + 0.1 * f64::from(k),
+                        ..Cue::default()
+                    },
+                )),
+            })
+            .collect();
+        let one = Threads::AtMost(std::num::NonZeroUsize::MIN);
+        for threads in [one, Threads::All] {
+            let done = Arc::new(AtomicUsize::new(0));
+            let options = ShotOptions::default();
+            let all = counted(Arc::clone(&done), || {
+                simulate_shots(&shots, &options, threads)
+            });
+            assert!(all.is_ok_and(|all| all.iter().all(Result::is_ok)));
+            assert_eq!(done.load(Ordering::Relaxed), shots.len(), "{threads:?}");
+        }
     }
 
     #[test]

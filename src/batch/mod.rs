@@ -42,7 +42,7 @@ use crate::error::{
     InputError, InputErrorKind, check_contact_distance, check_friction, check_horizon, finite,
 };
 use crate::gap::gap_value;
-use crate::interrupt::Interrupt;
+use crate::interrupt::{Interrupt, uncounted};
 use crate::motion::Ball;
 use crate::simd::{self, LANES};
 use block_queue::BlockQueue;
@@ -745,7 +745,9 @@ pub(crate) fn run_chunks_of<T: Send>(
     let interrupt = Interrupt::current();
     let work = |offset: usize, out: &mut [T]| {
         interrupt.check()?;
-        work(offset, out)?;
+        // The chunk's items are counted here, once: not what the work itself counts (the
+        // calendar a shot builds counts its balls), on this thread or a pool's.
+        uncounted(|| work(offset, out))?;
         interrupt.done(queries(out));
         Ok(())
     };

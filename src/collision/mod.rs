@@ -42,9 +42,9 @@
 //! vectors hold four or more lanes (AVX2 with FMA, AVX-512: `Simd::RUNS_LANE_STAGES`); at the
 //! portable and NEON levels those pairs go one by one, to the same bits.
 //!
-//! The gap `g(t) = |x_A(t) − x_B(t)|² − radius²` (see [`Gap`]) is a quartic on each window;
-//! it is never divided by its leading coefficient, so equal or nearly equal friction vectors
-//! (where it vanishes or nearly so) need no special case.
+//! The gap `g(t) = |x_A(t) − x_B(t)|² − σ²` (`σ` the contact distance; see [`Gap`]) is a
+//! quartic on each window; it is never divided by its leading coefficient, so equal or nearly
+//! equal friction vectors (where it vanishes or nearly so) need no special case.
 //!
 //! ## Semantics (SPEC)
 //! - touching or overlapping at `t = 0` is a collision at `0` only if the balls approach

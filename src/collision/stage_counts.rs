@@ -1,7 +1,7 @@
 //! How many pairs and windows each stage of the path search settles: counters compiled in
 //! only with the cargo feature `stage-counts` (off by default, so that the search pays
-//! nothing for them), read by the benchmarks (`cargo bench --bench paths --features
-//! stage-counts`).
+//! nothing for them), read by the benchmarks (in `benches/`, `cargo bench --bench paths
+//! --features stage-counts`).
 //!
 //! See [`take`] for an example.
 

@@ -78,7 +78,8 @@ pub(crate) fn check_ball_path<const D: usize>(segments: &[Segment<D>]) -> Result
         let (argument, part) = match e.argument() {
             "acceleration" => ("friction", "deceleration −v/τ"),
             "position" => ("velocity", "resting point p + ½·v·τ"),
-            "start" => ("t", "stop time"),
+            // τ = |v|/μ moved on by the calendar's time: a friction too small for it.
+            "start" => ("friction", "stop time t + τ"),
             _ => return e,
         };
         InputError::new(argument, InputErrorKind::PathOverflow { part, value })

@@ -278,10 +278,14 @@ fn nested_numbers<'py>(obj: &Bound<'py, PyAny>) -> Option<Bound<'py, PyUntypedAr
 }
 
 /// Whether `obj`, nested lists or tuples (`depth` levels in), holds a bool (Python's or
-/// numpy's) among its items.
+/// numpy's, or an array of them) among its items.
 fn holds_bool(obj: &Bound<'_, PyAny>, depth: usize) -> bool {
     let is_bool = |item: &Bound<'_, PyAny>| {
-        item.is_instance_of::<PyBool>() || is_numpy_type(item, NpyTypes::PyBoolArrType_Type)
+        item.is_instance_of::<PyBool>()
+            || is_numpy_type(item, NpyTypes::PyBoolArrType_Type)
+            || item
+                .cast::<PyUntypedArray>()
+                .is_ok_and(|array| array.dtype().kind() == b'b')
     };
     if depth > 32 {
         return false;

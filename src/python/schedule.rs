@@ -444,14 +444,20 @@ impl CollisionSchedule {
         transitions: Option<&Bound<'_, PyAny>>,
         progress: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
-        let balls = balls(py, pos, vel, friction)?;
-        let radii = radii(py, radius, balls.len())?;
+        let (pos, vel) = (rows("pos", pos)?, rows("vel", vel)?);
+        let friction = param("friction", friction)?;
+        let n = pos.rows::<2>().len();
+        let radii = radii(py, radius, n)?;
         let t = t.number_or("t", 0.0)?;
         let t_max = t_max.number_or("t_max", f64::INFINITY)?;
         let objects = [segments, segment_sides, circles, targets, planes];
         let options = options_of::<2>(py, r#box, t_max, objects, transitions)?;
-        let progress = Progress::of(py, progress, Some(balls.len()), "ball")?;
-        let core = run_shown(py, calendar_kernel(balls.len()), progress, || {
+        let progress = Progress::of(py, progress, Some(n), "ball")?;
+        // The balls made inside the kernel, watched for Ctrl-C as the rest of the build is
+        // (millions take a good part of a second).
+        let (pos, vel, friction) = (pos.rows::<2>(), vel.rows::<2>(), friction.per_pair());
+        let core = run_shown(py, calendar_kernel(n), progress, || {
+            let balls = scene::balls(pos, vel, friction)?;
             Core::from_balls(&balls, &radii, t, options)
         })?;
         Ok(Self {

@@ -1395,10 +1395,15 @@ where
     Ball: FrictionPath<D>,
 {
     let t = finite("t", t)? + 0.0;
+    // The caller's flag (see `interrupt`) looked at every 1,024 balls, as in the build.
+    let interrupt = Interrupt::current();
     balls
         .iter()
         .enumerate()
         .map(|(i, b)| {
+            if i % 1024 == 0 {
+                interrupt.check()?;
+            }
             b.path_from(t)
                 .map_err(|e| e.renamed(row_name(e.argument())).at(i))
         })
@@ -1408,9 +1413,13 @@ where
 /// The grid's cell size: about twice the spacing of the balls (the region's volume per
 /// ball), and at least eight typical radii.
 fn cell_size<const D: usize>(paths: &[Path<D>], radii: &[f64], walls: Option<&Walls<D>>) -> f64 {
-    let mut sorted = radii.to_vec();
-    sorted.sort_unstable_by(f64::total_cmp);
-    let typical = sorted.get(sorted.len() / 2).copied().unwrap_or(1.0);
+    // The median radius (selected, not sorted: linear in the balls).
+    let mut radii = radii.to_vec();
+    let middle = radii.len() / 2;
+    let typical = match radii.is_empty() {
+        true => 1.0,
+        false => *radii.select_nth_unstable_by(middle, f64::total_cmp).1,
+    };
     let (lo, hi) = match walls {
         Some(w) => (w.lo(), w.hi()),
         None => first_positions_box(paths),

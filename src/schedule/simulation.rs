@@ -403,20 +403,31 @@ impl Run<'_> {
     ) -> Result<bool, InputError> {
         let (a, b) = (at(calendar, i, t), at(calendar, j, t));
         let frictions = [self.balls[i].friction(), self.balls[j].friction()];
-        // A pair left moving as one body (the same velocity and friction: every derivative of
-        // its gap is 0) neither parts nor presses together, whatever the rounding of its
-        // centres; if a later update makes it approach, the calendar sees that at once
-        // (touching or overlapping balls that approach collide). Nudging it apart would
-        // change both velocities by the least parting speed, and each such change follows
-        // up the balls' other pairs of the instant: along a touching train of k balls (a
-        // Newton's cradle) that ran to O(k³) events at one instant.
-        if follow_up && a.1 == b.1 && frictions[0] == frictions[1] {
-            return Ok(false);
-        }
-        let contact = self.radii[i] + self.radii[j];
         let masses = [self.masses.get(i), self.masses.get(j)];
-        let e = restitution_at(self.restitution, t, [last_event[i], last_event[j]]);
-        let (va, vb) = collide(a, b, masses, frictions, contact, e);
+        // A pair moving as one body (the same friction, and velocities the same to within
+        // rounding, `AS_ONE`) neither parts nor presses together but at rounding level. Its
+        // follow-up leaves it so; reported (it approached at rounding level), it takes one
+        // velocity, their momentum's, exactly the same for both, so that every derivative of
+        // its gap is 0 and the calendar never reports it again until a later update makes it
+        // approach (touching or overlapping balls that approach collide at once). Nudging it
+        // apart at the least parting speed instead changed both velocities by far more than
+        // their difference, and each change followed up the balls' other pairs of the instant:
+        // along a touching train of k balls (a Newton's cradle) that ran to O(k³) events at
+        // one instant.
+        let as_one = frictions[0] == frictions[1]
+            && (a.1 - b.1).norm() <= AS_ONE * (a.1.norm() + b.1.norm());
+        let (va, vb) = match (as_one, follow_up) {
+            (true, true) => return Ok(false),
+            (true, false) => {
+                let v = one_velocity(a.1, b.1, masses);
+                (v, v)
+            }
+            (false, _) => {
+                let contact = self.radii[i] + self.radii[j];
+                let e = restitution_at(self.restitution, t, [last_event[i], last_event[j]]);
+                collide(a, b, masses, frictions, contact, e)
+            }
+        };
         let changed = (va, vb) != (a.1, b.1);
         if follow_up && !changed {
             return Ok(false);
@@ -463,6 +474,15 @@ fn reflected(v: Vector2<f64>, n: Vector2<f64>, e: f64) -> Vector2<f64> {
     } else {
         v + n * (target - normal)
     }
+}
+
+/// The one velocity of two balls moving as one body (see [`Run::collide`]): their momentum's,
+/// `(m_a·v_a + m_b·v_b)/(m_a + m_b)`, from the mass ratio as in [`collide`] (no overflow for
+/// any masses).
+fn one_velocity(va: Vector2<f64>, vb: Vector2<f64>, [ma, mb]: [f64; 2]) -> Vector2<f64> {
+    let share_a = 1.0 / (1.0 + mb / ma);
+    let share_b = 1.0 / (1.0 + ma / mb);
+    va * share_a + vb * share_b
 }
 
 /// The restitution of a collision at `t` of two balls whose last events came at `last`:
@@ -592,6 +612,10 @@ fn parting_speed(
 const SLACK: f64 = 1.0 / 256.0;
 /// See [`parting_speed`].
 const ROUNDING: f64 = 1.0 / (1u64 << 40) as f64;
+/// A pair whose velocities differ by at most this part of their speeds moves as one body
+/// ([`Run::collide`]): the rounding of an exchange along a line of centres off the axes (a
+/// few ulps), far below the least parting speed ([`ROUNDING`]) a collision gives.
+const AS_ONE: f64 = 1.0 / (1u64 << 46) as f64;
 /// See [`parting_speed`]: twice the rise of a resting contact's bounces, relative to the
 /// contact distance.
 const RESTING_RISE: f64 = 1.0 / (1u64 << 20) as f64;

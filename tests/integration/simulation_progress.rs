@@ -229,29 +229,39 @@ fn touching_trains_settle_as_a_cradle_does() {
 }
 
 #[test]
-fn diagonal_touching_trains_move_on_without_overlap() {
-    // The same trains along a diagonal, whose exchanges leave the balls' velocities a few
-    // ulps apart (the line of centres is rounded): they still end, clear of each other.
+fn touching_trains_off_the_axes_move_on_without_overlap() {
+    // The same trains at angles off the axes, whose exchanges leave the balls' velocities a
+    // few ulps apart (the line of centres is rounded): pairs left so move as one body. An
+    // elastic train of 80 at π/4 was refused after 6,185 events at one instant when only
+    // equal velocities counted as one.
     let r = 0.125;
-    let d = Vector2::new(1.0, 1.0).normalize();
-    for k in [2usize, 5, 10, 20] {
-        for restitution in [0.0, 1.0] {
-            let mut balls: Vec<Ball> = (0..k)
-                .map(|m| {
-                    let p = Vector2::new(0.1, 0.2) + d * (2.0 * r * m as f64);
-                    ball(p.into(), d.into(), 0.0)
-                })
-                .collect();
-            let front = Vector2::new(0.1, 0.2) + d * (2.0 * r * (k - 1) as f64 + 3.0);
-            balls.push(ball(front.into(), [0.0; 2], 0.0));
-            let walls = Walls::new([-40.0, -40.0], [40.0, 40.0]).expect("a box");
-            let radii = vec![r; balls.len()];
-            let run = run(&balls, &radii, walls, restitution, vec![1.0], 8.0);
-            let deepest = deepest_overlap(&run, &radii, &walls);
-            assert!(
-                deepest <= 1e-9,
-                "k {k}, e {restitution}: overlap {deepest:e}"
-            );
+    for angle in [std::f64::consts::FRAC_PI_4, 0.0477, 0.3, 1.0] {
+        let d = Vector2::new(angle.cos(), angle.sin());
+        for (k, restitutions) in [
+            (5usize, &[0.0, 0.5, 1.0][..]),
+            (20, &[0.0, 1.0]),
+            (80, &[1.0]),
+        ] {
+            for &restitution in restitutions {
+                let mut balls: Vec<Ball> = (0..k)
+                    .map(|m| {
+                        let p = Vector2::new(0.1, 0.2) + d * (2.0 * r * m as f64);
+                        ball(p.into(), d.into(), 0.0)
+                    })
+                    .collect();
+                let front = Vector2::new(0.1, 0.2) + d * (2.0 * r * (k - 1) as f64 + 0.75);
+                balls.push(ball(front.into(), [0.0; 2], 0.0));
+                let walls = Walls::new([-60.0, -60.0], [60.0, 60.0]).expect("a box");
+                let radii = vec![r; balls.len()];
+                let run = run(&balls, &radii, walls, restitution, vec![1.0], 3.0);
+                let case = format!("k {k}, angle {angle}, e {restitution}");
+                if restitution == 1.0 {
+                    let most = most_at_one_instant(&run);
+                    assert!(most <= 2 * k, "{case}: {most} events at one instant");
+                }
+                let deepest = deepest_overlap(&run, &radii, &walls);
+                assert!(deepest <= 1e-9, "{case}: overlap {deepest:e}");
+            }
         }
     }
 }

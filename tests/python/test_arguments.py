@@ -523,7 +523,7 @@ def test_any_value_of_any_argument_answers_or_is_named(
 # The reproducers of issue 39.
 
 
-@pytest.mark.parametrize("flag", [True, np.bool_(False)])
+@pytest.mark.parametrize("flag", [True, np.bool_(False), np.array(True)])
 def test_a_bool_inside_an_array_argument_is_a_type_error_naming_it(flag: object) -> None:
     # numpy reads [True, 0.0] as numbers; a bool is no real number, in a list as alone.
     calls = {
@@ -538,8 +538,11 @@ def test_a_bool_inside_an_array_argument_is_a_type_error_naming_it(flag: object)
             [[0, 0]], [[flag, 0.5]], 0.0, [[1, 0]], [[0, 0]], 0.0, 0.5
         ),
     }
+    calls["pos "] = lambda: bc.earliest_collision(
+        [np.array([True, False]), [0.5, 0]], [[1, 0], [0, 0]], 0.0, 0.1
+    )
     for argument, call in calls.items():
-        with pytest.raises(TypeError, match=rf"^{argument}: expected real numbers, got bool"):
+        with pytest.raises(TypeError, match=rf"^{argument.strip()}: expected real numbers"):
             call()
 
 
