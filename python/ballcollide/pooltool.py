@@ -535,13 +535,6 @@ def _pooltool_types() -> dict[str, Any]:
     }
 
 
-@functools.lru_cache(maxsize=4)
-def _event_types(names: tuple[str, ...]) -> tuple[Any, ...]:
-    """pooltool's ``EventType`` of each of ``_core.simulate_shots``' type codes."""
-    event_type = _pooltool_types()["EventType"]
-    return tuple(event_type(name) for name in names)
-
-
 def _check_supported(
     engine: Any,
     continuous: bool,
@@ -797,167 +790,31 @@ def simulate(
     return _build(shot if inplace else shot.copy(), arrays, 0)
 
 
-@functools.lru_cache(maxsize=1)
-def _makers() -> Any:
-    """Constructors of pooltool's ``BallState``, ``BallHistory``, ``Ball`` (a history-free
-    copy), ``Agent`` and ``Event`` that set their slots directly: pooltool's attrs
-    constructors (converters, validators, factories) cost about a microsecond an object, and
-    a break's ``System`` holds thousands; these cost a third of that. The values are pooltool's
-    own types, so nothing needs converting."""
-    pt = _pooltool_types()
-    BallState, BallHistory, Ball = pt["BallState"], pt["BallHistory"], pt["Ball"]
-    Agent, Event = pt["Agent"], pt["Event"]
-    new = object.__new__
-    set_rvw, set_s, set_t = BallState.rvw.__set__, BallState.s.__set__, BallState.t.__set__
-    set_states = BallHistory.states.__set__
-    ball_slots = [
-        getattr(Ball, name).__set__ for name in ("id", "params", "ballset", "initial_orientation")
-    ]
-    set_state, set_history, set_cts = (
-        Ball.state.__set__,
-        Ball.history.__set__,
-        Ball.history_cts.__set__,
-    )
-    agent_slots = [getattr(Agent, n).__set__ for n in ("id", "agent_type", "initial", "final")]
-    event_slots = [getattr(Event, n).__set__ for n in ("event_type", "agents", "time")]
-
-    def state(rvw: Any, s: int, t: float) -> Any:
-        o = new(BallState)
-        set_rvw(o, rvw)
-        set_s(o, s)
-        set_t(o, t)
-        return o
-
-    def history(states: list[Any]) -> Any:
-        o = new(BallHistory)
-        set_states(o, states)
-        return o
-
-    set_id, set_params, set_ballset, set_orientation = ball_slots
-    agent_id, agent_type_, agent_initial, agent_final = agent_slots
-    event_type_, event_agents, event_time = event_slots
-
-    def ball_copy(ball: Any, st: Any) -> Any:
-        """``ball.copy(drop_history=True)`` with state ``st``."""
-        o = new(Ball)
-        set_id(o, ball.id)
-        set_params(o, ball.params)
-        set_ballset(o, ball.ballset)
-        set_orientation(o, ball.initial_orientation)
-        set_state(o, st)
-        h = new(BallHistory)
-        set_states(h, [])
-        set_history(o, h)
-        h = new(BallHistory)
-        set_states(h, [])
-        set_cts(o, h)
-        return o
-
-    def agent(id: str, agent_type: Any, initial: Any, final: Any) -> Any:
-        o = new(Agent)
-        agent_id(o, id)
-        agent_type_(o, agent_type)
-        agent_initial(o, initial)
-        agent_final(o, final)
-        return o
-
-    def event(event_type: Any, agents: tuple[Any, ...], time: float) -> Any:
-        o = new(Event)
-        event_type_(o, event_type)
-        event_agents(o, agents)
-        event_time(o, time)
-        return o
-
-    return state, history, ball_copy, agent, event
-
-
 def _build(system: Any, r: dict[str, Any], k: int) -> Any:
     """Writes shot ``k`` of ``_core.simulate_shots``' results (with history) into
-    ``system``, as pooltool's ``simulate`` leaves it.
+    ``system``, as pooltool's ``simulate`` leaves it, and returns it.
 
-    Python's cyclic garbage collector is paused meanwhile: the thousands of objects of a
-    break would otherwise set off several collections, and with pooltool and numba loaded
-    each full one walks millions of objects (measured: 10 ms of a 13 ms build). None of the
-    objects made here forms a cycle; the collector runs again as usual afterwards.
+    The objects are made in Rust (``_core._PooltoolBuilder``: each as ``object.__new__``
+    with its slots filled directly; pooltool's attrs constructors cost about a microsecond
+    an object, and a break's ``System`` holds thousands). Python's cyclic garbage collector
+    is paused meanwhile, as before this builder moved to Rust (where pausing it saved most of
+    a break's build): the thousands of new objects would set off collections in the middle.
+    None of the objects made here forms a cycle; the collector runs again as usual
+    afterwards.
     """
     paused = gc.isenabled()
     gc.disable()
     try:
-        return _build_into(system, r, k)
+        _builder().build(system, r, k)
     finally:
         if paused:
             gc.enable()
-
-
-def _build_into(system: Any, r: dict[str, Any], k: int) -> Any:
-    """:func:`_build`'s work."""
-    pt = _pooltool_types()
-    AgentType = pt["AgentType"]
-    event_types = _event_types(tuple(r["type_names"]))
-    state, history, copy_of, agent_of, event_of = _makers()
-    ball_type = AgentType.BALL
-
-    balls = list(system.balls.values())
-    n = len(balls)
-    e0, e1 = int(r["event_start"][k]), int(r["event_start"][k + 1])
-    n_events = e1 - e0
-    times = [0.0, *r["time"][e0:e1].tolist()]
-    end = times[-1]
-    h0 = int(r["history_start"][k])
-    rows = n * (n_events + 1)
-    # Each ball's history: its state at time 0 and after each event, then the last again
-    # (pooltool adds the same state object at the closing null event).
-    h_rvw = r["history_rvw"][h0 : h0 + rows].copy().reshape(n_events + 1, n, 3, 3)
-    h_s = r["history_s"][h0 : h0 + rows].reshape(n_events + 1, n).T.tolist()
-    for b, ball in enumerate(balls):
-        own = list(map(state, h_rvw[:, b], h_s[b], times))
-        own.append(own[-1])
-        ball.history = history(own)
-        ball.history_cts = history([])
-        ball.state = own[-1]
-
-    names = r["type_names"]
-    types = r["type"][e0:e1].tolist()
-    who = r["ball"][e0:e1].tolist()
-    objects = r["object"][e0:e1].tolist()
-    # Each event's two slots, flat: slot `2 e + k` is ball `k` of event `e`.
-    after_rvw = list(r["rvw"][e0:e1].reshape(-1, 3, 3).copy())
-    after_s = r["s"][e0:e1].reshape(-1).tolist()
-    before_rvw = list(r["before_rvw"][e0:e1].reshape(-1, 3, 3).copy())
-    before_s = r["before_s"][e0:e1].reshape(-1).tolist()
-    table = system.table
-    linear = list(table.cushion_segments.linear.values())
-    circular = list(table.cushion_segments.circular.values())
-    pockets = list(table.pockets.values())
-    events = [pt["null_event"](0)]  # pooltool starts with null_event(time=0), an int
-    for e in range(n_events):
-        code = types[e]
-        name = names[code]
-        t = times[e + 1]
-        agents = []
-        for slot, b in enumerate(who[e], 2 * e):
-            if b < 0:
-                continue
-            ball = balls[b]
-            initial = copy_of(ball, state(before_rvw[slot], before_s[slot], t))
-            final = copy_of(ball, state(after_rvw[slot], after_s[slot], t))
-            agents.append(agent_of(ball.id, ball_type, initial, final))
-        if name == "stick_ball":
-            cue = system.cue
-            agents.insert(0, agent_of(cue.id, AgentType.CUE, cue.copy(), None))
-        elif name == "ball_linear_cushion":
-            c = linear[objects[e]]
-            agents.append(agent_of(c.id, AgentType.LINEAR_CUSHION_SEGMENT, c, None))
-        elif name == "ball_circular_cushion":
-            c = circular[objects[e]]
-            agents.append(agent_of(c.id, AgentType.CIRCULAR_CUSHION_SEGMENT, c, None))
-        elif name == "ball_pocket":
-            p = pockets[objects[e]]
-            initial = p.copy()
-            p.add(balls[who[e][0]].id)
-            agents.append(agent_of(p.id, AgentType.POCKET, initial, p.copy()))
-        events.append(event_of(event_types[code], tuple(agents), t))
-    events.append(pt["null_event"](end))
-    system.events = events
-    system.t = end
     return system
+
+
+@functools.lru_cache(maxsize=1)
+def _builder() -> Any:
+    """The builder of pooltool's objects, made once (it looks up how to fill each class)."""
+    from . import _core
+
+    return _core._PooltoolBuilder(_pooltool_types())

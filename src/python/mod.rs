@@ -20,6 +20,7 @@ mod geometry;
 mod input_error;
 mod long_call;
 mod paths;
+mod pooltool_system;
 mod read;
 mod schedule;
 mod shots;
@@ -788,6 +789,11 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.setattr(
         "_last_kernel_seconds",
         wrap_pyfunction!(_last_kernel_seconds, m)?,
+    )?;
+    // ballcollide.pooltool's builder of pooltool objects: an attribute, not an export.
+    m.setattr(
+        "_PooltoolBuilder",
+        py.get_type::<pooltool_system::PooltoolBuilder>(),
     )?;
     let public = [
         wrap_pyfunction!(collision_time, m)?,
