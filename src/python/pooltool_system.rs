@@ -88,23 +88,33 @@ impl PooltoolBuilder {
     }
 
     /// Writes shot ``k`` of ``results`` (``_core.simulate_shots``' dict, computed with
-    /// ``history=True``) into ``system``, a copy of that shot's pooltool ``System``, as
+    /// ``history=True``) into ``system`` (that shot's pooltool ``System``, or a copy), as
     /// pooltool's ``simulate`` leaves it: its balls' ``history``, ``history_cts`` and
-    /// ``state``, its pockets' ``contains``, ``events`` and ``t``.
+    /// ``state``, its pockets' ``contains``, ``events`` and ``t``. With ``new_balls``, each
+    /// ball in ``system.balls`` is replaced by a new one (a copy with these fields, sharing
+    /// the others, as ``Ball.copy`` does) rather than written into.
     fn build<'py>(
         &self,
         system: &Bound<'py, PyAny>,
         results: &Bound<'py, PyDict>,
         k: usize,
+        new_balls: bool,
     ) -> PyResult<()> {
         let py = system.py();
         let agent_types = &self.agent_types;
         let columns = Columns::read(results)?;
         let shot = columns.shot(k)?;
-        let balls: Vec<Bound<'py, PyAny>> = system
-            .getattr(intern!(py, "balls"))?
-            .call_method0(intern!(py, "values"))?
-            .try_iter()?
+        let ball_dict = system.getattr(intern!(py, "balls"))?;
+        let keys: Vec<Bound<'py, PyAny>> = ball_dict.try_iter()?.collect::<PyResult<_>>()?;
+        let balls: Vec<Bound<'py, PyAny>> = keys
+            .iter()
+            .map(|key| ball_dict.get_item(key))
+            .collect::<PyResult<_>>()?;
+        // What each ball's copies (the agents', and with `new_balls` the system's own) share
+        // with it.
+        let copies: Vec<BallCopy<'py>> = balls
+            .iter()
+            .map(|ball| self.ball_copy_of(ball))
             .collect::<PyResult<_>>()?;
         let n = balls.len();
         let n_events = shot.time.len();
@@ -135,7 +145,7 @@ impl PooltoolBuilder {
         // Each ball's history: its state at time 0 and after each event (rows `e * n + b`),
         // then the last again, the same object: pooltool adds the ball's state at the closing
         // null event without a copy. The ball's state is that last one.
-        for (b, ball) in balls.iter().enumerate() {
+        for (b, ((key, ball), copy)) in keys.iter().zip(&balls).zip(&copies).enumerate() {
             let mut own = Vec::with_capacity(n_events + 2);
             for (e, t) in times.iter().enumerate() {
                 let row = e * n + b;
@@ -146,17 +156,17 @@ impl PooltoolBuilder {
                 .cloned()
                 .ok_or_else(|| PyValueError::new_err("no states"))?;
             own.push(last.clone());
-            put(
-                ball,
-                intern!(py, "history"),
-                &self.history(PyList::new(py, own)?)?,
-            )?;
-            put(
-                ball,
-                intern!(py, "history_cts"),
-                &self.history(PyList::empty(py))?,
-            )?;
-            put(ball, intern!(py, "state"), &last)?;
+            let history = self.history(PyList::new(py, own)?)?;
+            let history_cts = self.history(PyList::empty(py))?;
+            if new_balls {
+                let own = [&last, &history, &history_cts];
+                let ball = self.ball.make(py, copy.fields.iter().chain(own))?;
+                ball_dict.set_item(key, ball)?;
+            } else {
+                put(ball, intern!(py, "history"), &history)?;
+                put(ball, intern!(py, "history_cts"), &history_cts)?;
+                put(ball, intern!(py, "state"), &last)?;
+            }
         }
 
         let table = system.getattr(intern!(py, "table"))?;
@@ -169,10 +179,6 @@ impl PooltoolBuilder {
         let linear = values(segments.getattr(intern!(py, "linear"))?)?;
         let circular = values(segments.getattr(intern!(py, "circular"))?)?;
         let pockets = values(table.getattr(intern!(py, "pockets"))?)?;
-        let copies: Vec<BallCopy<'py>> = balls
-            .iter()
-            .map(|ball| self.ball_copy_of(ball))
-            .collect::<PyResult<_>>()?;
         let id = intern!(py, "id");
         let object_at = |list: &[Bound<'py, PyAny>], e: usize| -> PyResult<Bound<'py, PyAny>> {
             usize::try_from(shot.object[e])
