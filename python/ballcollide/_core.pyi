@@ -314,6 +314,7 @@ def simulate_shots(
     history: bool | None = None,
     num_threads: SupportsIndex | None = None,
 ) -> dict[str, Any]: ...
+def _pooltool_inputs(shots: Sequence[Any]) -> dict[str, Any]: ...
 
 @final
 class _PooltoolBuilder:

@@ -507,8 +507,6 @@ class UnsupportedError(ValueError):
 #: only when they come into contact, approaching).
 CONTACT_RULES: tuple[str, ...] = ("pooltool", "approaching")
 
-_PARAM_FIELDS = ("m", "R", "u_s", "u_r", "u_sp_proportionality", "u_b", "e_b", "e_c", "f_c", "g")
-
 
 @functools.lru_cache(maxsize=1)
 def _pooltool_types() -> dict[str, Any]:
@@ -576,88 +574,12 @@ def _check_supported(
         )
 
 
-def _table_arrays(table: Any) -> tuple[_F64, _F64, _F64]:
-    """A pooltool table as ``_core.simulate_shots``' ``(linear, circular, pockets)``."""
-    segments = table.cushion_segments
-
-    def rows(points: list[Any], *columns: list[float], width: int) -> _F64:
-        # Whole point arrays, then their x and y columns: indexing each point's coordinates
-        # one by one makes a numpy scalar each (this runs once a shot, serially).
-        if not points[0]:
-            return np.empty((0, width))
-        xy = [np.asarray(p, dtype=np.float64)[:, :2] for p in points]
-        return np.column_stack([*xy, *columns]).astype(np.float64, copy=False)
-
-    linear_ = list(segments.linear.values())
-    linear = rows(
-        [[c.p1 for c in linear_], [c.p2 for c in linear_]],
-        [c.height for c in linear_],
-        [int(c.direction) for c in linear_],
-        width=6,
-    )
-
-    def discs(items: list[Any], last: str) -> _F64:
-        # Rows (cx, cy, radius, last): a circular cushion's height, a pocket's depth.
-        centres, radii = [c.center for c in items], [c.radius for c in items]
-        return rows([centres], radii, [getattr(c, last) for c in items], width=4)
-
-    circular = discs(list(segments.circular.values()), "height")
-    pockets = discs(list(table.pockets.values()), "depth")
-    return linear, circular, pockets
-
-
 def _inputs(shots: Sequence[Any]) -> dict[str, Any]:
-    """``_core.simulate_shots``' arguments for pooltool ``System`` s (tables shared by
-    identity)."""
-    tables: list[tuple[_F64, _F64, _F64]] = []
-    table_of: dict[int, int] = {}
-    shot_table, ball_start, rvws, ss, params, strike, cue = [], [0], [], [], [], [], []
-    # Each parameter set's row, read once (balls often share one: a rack's, a game's).
-    rows: dict[int, list[float]] = {}
-    for k, system in enumerate(shots):
-        key = id(system.table)
-        if key not in table_of:
-            table_of[key] = len(tables)
-            tables.append(_table_arrays(system.table))
-        shot_table.append(table_of[key])
-        balls = list(system.balls.values())
-        states = [b.state for b in balls]
-        # One array a shot: this loop is the serial part of simulate_many.
-        rvw = np.array([state.rvw for state in states], dtype=np.float64).reshape(-1, 3, 3)
-        rvws.append(rvw)
-        ss += [state.s for state in states]
-        for b in balls:
-            row = rows.get(id(b.params))
-            if row is None:
-                row = rows[id(b.params)] = [getattr(b.params, f) for f in _PARAM_FIELDS]
-            params.append(row)
-        ball_start.append(ball_start[-1] + len(balls))
-        c = system.cue
-        # pooltool's stick event: at t = 0, no ball moving or spinning, V0 > 0.
-        moving = bool(rvw[:, 1:].any())
-        if c.V0 > 0 and not moving:
-            ids = [b.id for b in balls]
-            if c.cue_ball_id not in ids:
-                # pooltool's own loop raises a KeyError here.
-                raise ValueError(
-                    f"shots[{k}]: the cue's ball {c.cue_ball_id!r} is not among the balls"
-                )
-            strike.append(ids.index(c.cue_ball_id))
-        else:
-            strike.append(-1)
-        s = c.specs
-        cue.append([c.V0, c.phi, c.theta, c.a, c.b, s.M, s.end_mass, s.tip_radius])
-    n = ball_start[-1]
-    return {
-        "tables": tables,
-        "shot_table": np.array(shot_table, dtype=np.float64),
-        "ball_start": np.array(ball_start, dtype=np.float64),
-        "rvw": np.concatenate(rvws) if rvws else np.empty((0, 3, 3)),
-        "s": np.array(ss, dtype=np.float64),
-        "params": np.array(params, dtype=np.float64).reshape(n, 10),
-        "strike": np.array(strike, dtype=np.float64),
-        "cue": np.array(cue, dtype=np.float64).reshape(len(shots), 8),
-    }
+    """``_core.simulate_shots``' arguments for pooltool ``System`` s (read in Rust:
+    ``_core._pooltool_inputs``; tables shared by identity are read once)."""
+    from . import _core
+
+    return _core._pooltool_inputs(shots)
 
 
 class ShotResults:

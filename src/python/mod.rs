@@ -20,6 +20,7 @@ mod geometry;
 mod input_error;
 mod long_call;
 mod paths;
+mod pooltool_inputs;
 mod pooltool_system;
 mod read;
 mod schedule;
@@ -790,7 +791,12 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
         "_last_kernel_seconds",
         wrap_pyfunction!(_last_kernel_seconds, m)?,
     )?;
-    // ballcollide.pooltool's builder of pooltool objects: an attribute, not an export.
+    // ballcollide.pooltool's reader and builder of pooltool objects: attributes, not
+    // exports.
+    m.setattr(
+        "_pooltool_inputs",
+        wrap_pyfunction!(pooltool_inputs::pooltool_inputs, m)?,
+    )?;
     m.setattr(
         "_PooltoolBuilder",
         py.get_type::<pooltool_system::PooltoolBuilder>(),
