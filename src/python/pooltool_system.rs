@@ -140,7 +140,8 @@ impl PooltoolBuilder {
         for &t in shot.time {
             times.push(t.into_pyobject(py)?.into_any());
         }
-        let end = times.last().cloned().unwrap_or_else(|| times[0].clone());
+        // The last event's (0.0 without events).
+        let end = times[n_events].clone();
 
         // Each ball's history: its state at time 0 and after each event (rows `e * n + b`),
         // then the last again, the same object: pooltool adds the ball's state at the closing
@@ -151,10 +152,7 @@ impl PooltoolBuilder {
                 let row = e * n + b;
                 own.push(self.state(block.row(row)?, shot.history_s[row], t)?);
             }
-            let last = own
-                .last()
-                .cloned()
-                .ok_or_else(|| PyValueError::new_err("no states"))?;
+            let last = own[n_events].clone();
             own.push(last.clone());
             let history = self.history(PyList::new(py, own)?)?;
             let history_cts = self.history(PyList::empty(py))?;
