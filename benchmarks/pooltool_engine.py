@@ -8,13 +8,20 @@ the median time per shot of each:
 
 - ``stock``: ``pt.simulate(system)``;
 - ``simulate``: ``ballcollide.pooltool.simulate(system)``, the same full ``System``;
+- ``stock drop``, ``sim. drop``: the same two, each ``System`` dropped before the next shot
+  (a search that keeps a score), where the two above keep the run's ``System`` s in a list
+  (a user collecting results). A ``System`` is ~2,000 objects that Python's cyclic garbage
+  collector tracks (as many as stock's); kept, they bring on collections of the whole heap
+  (with pooltool and numba loaded, hundreds of thousands of objects), which cost both ways
+  about a millisecond a shot here;
 - ``many 1``, ``many 2``: ``ballcollide.pooltool.simulate_many(systems, num_threads=n)``,
   array results, on one and on two threads;
 - its parts: ``reading`` the pooltool objects into arrays (Python, on one thread) and
   ``engine 1``, ``engine 2``: the engine on those arrays (``_core.simulate_shots``).
 
 Each figure is a run's total time over its number of shots, the median over the runs; the
-four ways take turns within each run (stock in the first ``--stock-runs`` only).
+ways take turns within each run (stock's two in the first ``--stock-runs`` only), and each
+is compared with stock run the same way (kept or dropped).
 
 The same shots are the integration tests' (``tests/pooltool_integration/test_engine.py``).
 Run it in pooltool's environment (``scripts/install-pooltool``)::
@@ -161,7 +168,7 @@ def _rounds(ways: dict[str, Any], systems: list[Any], runs: int, stock_runs: int
     times: dict[str, list[float]] = {name: [] for name in ways}
     for r in range(runs):
         for name, way in ways.items():
-            if name == "stock" and r >= stock_runs:
+            if name.startswith("stock") and r >= stock_runs:
                 continue
             start = time.perf_counter()
             way(systems)
@@ -197,9 +204,19 @@ def main(argv: list[str] | None = None) -> int:
     from ballcollide import _core
 
     inputs = bcp._inputs(systems)
+
+    def dropped(simulate: Any) -> Any:
+        def way(ss: list[Any]) -> None:
+            for s in ss:
+                simulate(s)
+
+        return way
+
     ways = {
         "stock": lambda ss: [pt.simulate(s) for s in ss],
+        "stock drop": dropped(pt.simulate),
         "simulate": lambda ss: [bcp.simulate(s) for s in ss],
+        "sim. drop": dropped(bcp.simulate),
         "many 1": lambda ss: bcp.simulate_many(ss, num_threads=1),
         "many 2": lambda ss: bcp.simulate_many(ss, num_threads=2),
         "reading": lambda ss: bcp._inputs(ss),
@@ -207,13 +224,15 @@ def main(argv: list[str] | None = None) -> int:
         "engine 2": lambda ss: _core.simulate_shots(**inputs, num_threads=2),
     }
     median = _rounds(ways, systems, args.runs, args.stock_runs)
-    stock = median.pop("stock")
+    stock, stock_drop = median.pop("stock"), median.pop("stock drop")
     events = sum(len(s.events) for s in (bcp.simulate(x) for x in systems))
     print(f"{events} events ({events / len(systems):.0f} a shot)")
     print(f"{'way':<10} {'per shot':>12} {'vs stock':>10}")
     print(f"{'stock':<10} {stock * 1e3:>9.3f} ms {1.0:>9.1f}x")
+    print(f"{'stock drop':<10} {stock_drop * 1e3:>9.3f} ms {1.0:>9.1f}x")
     for name, t in median.items():
-        print(f"{name:<10} {t * 1e6:>9.1f} us {stock / t:>9.1f}x")
+        against = stock_drop if name.endswith("drop") else stock
+        print(f"{name:<10} {t * 1e6:>9.1f} us {against / t:>9.1f}x")
     print(f"2 threads over 1: {median['many 1'] / median['many 2']:.2f}x (simulate_many), ", end="")
     print(f"{median['engine 1'] / median['engine 2']:.2f}x (the engine alone)")
     # A shared machine's other work moves every figure (and takes the second core).

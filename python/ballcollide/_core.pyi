@@ -316,6 +316,13 @@ def simulate_shots(
     history: bool | None = None,
     num_threads: SupportsIndex | None = None,
 ) -> dict[str, Any]: ...
+def _pooltool_inputs(shots: Sequence[Any]) -> dict[str, Any]: ...
+
+@final
+class _PooltoolBuilder:
+    def __new__(cls, types: dict[str, Any]) -> _PooltoolBuilder: ...
+    def build(self, system: Any, results: dict[str, Any], k: int, new_balls: bool) -> None: ...
+
 def pool_table(
     *,
     width: _Number = 1.27,

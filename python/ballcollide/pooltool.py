@@ -507,8 +507,6 @@ class UnsupportedError(ValueError):
 #: only when they come into contact, approaching).
 CONTACT_RULES: tuple[str, ...] = ("pooltool", "approaching")
 
-_PARAM_FIELDS = ("m", "R", "u_s", "u_r", "u_sp_proportionality", "u_b", "e_b", "e_c", "f_c", "g")
-
 
 @functools.lru_cache(maxsize=1)
 def _pooltool_types() -> dict[str, Any]:
@@ -519,6 +517,7 @@ def _pooltool_types() -> dict[str, Any]:
     from pooltool.evolution.event_based.config import INCLUDED_EVENTS
     from pooltool.objects.ball.datatypes import Ball, BallHistory, BallState
     from pooltool.physics.resolve.resolver import default_resolver
+    from pooltool.system.datatypes import System
 
     return {
         "module": simulate_module,
@@ -531,15 +530,9 @@ def _pooltool_types() -> dict[str, Any]:
         "Ball": Ball,
         "BallHistory": BallHistory,
         "BallState": BallState,
+        "System": System,
         "default_resolver": default_resolver(),
     }
-
-
-@functools.lru_cache(maxsize=4)
-def _event_types(names: tuple[str, ...]) -> tuple[Any, ...]:
-    """pooltool's ``EventType`` of each of ``_core.simulate_shots``' type codes."""
-    event_type = _pooltool_types()["EventType"]
-    return tuple(event_type(name) for name in names)
 
 
 def _check_supported(
@@ -581,88 +574,12 @@ def _check_supported(
         )
 
 
-def _table_arrays(table: Any) -> tuple[_F64, _F64, _F64]:
-    """A pooltool table as ``_core.simulate_shots``' ``(linear, circular, pockets)``."""
-    segments = table.cushion_segments
-
-    def rows(points: list[Any], *columns: list[float], width: int) -> _F64:
-        # Whole point arrays, then their x and y columns: indexing each point's coordinates
-        # one by one makes a numpy scalar each (this runs once a shot, serially).
-        if not points[0]:
-            return np.empty((0, width))
-        xy = [np.asarray(p, dtype=np.float64)[:, :2] for p in points]
-        return np.column_stack([*xy, *columns]).astype(np.float64, copy=False)
-
-    linear_ = list(segments.linear.values())
-    linear = rows(
-        [[c.p1 for c in linear_], [c.p2 for c in linear_]],
-        [c.height for c in linear_],
-        [int(c.direction) for c in linear_],
-        width=6,
-    )
-
-    def discs(items: list[Any], last: str) -> _F64:
-        # Rows (cx, cy, radius, last): a circular cushion's height, a pocket's depth.
-        centres, radii = [c.center for c in items], [c.radius for c in items]
-        return rows([centres], radii, [getattr(c, last) for c in items], width=4)
-
-    circular = discs(list(segments.circular.values()), "height")
-    pockets = discs(list(table.pockets.values()), "depth")
-    return linear, circular, pockets
-
-
 def _inputs(shots: Sequence[Any]) -> dict[str, Any]:
-    """``_core.simulate_shots``' arguments for pooltool ``System`` s (tables shared by
-    identity)."""
-    tables: list[tuple[_F64, _F64, _F64]] = []
-    table_of: dict[int, int] = {}
-    shot_table, ball_start, rvws, ss, params, strike, cue = [], [0], [], [], [], [], []
-    # Each parameter set's row, read once (balls often share one: a rack's, a game's).
-    rows: dict[int, list[float]] = {}
-    for k, system in enumerate(shots):
-        key = id(system.table)
-        if key not in table_of:
-            table_of[key] = len(tables)
-            tables.append(_table_arrays(system.table))
-        shot_table.append(table_of[key])
-        balls = list(system.balls.values())
-        states = [b.state for b in balls]
-        # One array a shot: this loop is the serial part of simulate_many.
-        rvw = np.array([state.rvw for state in states], dtype=np.float64).reshape(-1, 3, 3)
-        rvws.append(rvw)
-        ss += [state.s for state in states]
-        for b in balls:
-            row = rows.get(id(b.params))
-            if row is None:
-                row = rows[id(b.params)] = [getattr(b.params, f) for f in _PARAM_FIELDS]
-            params.append(row)
-        ball_start.append(ball_start[-1] + len(balls))
-        c = system.cue
-        # pooltool's stick event: at t = 0, no ball moving or spinning, V0 > 0.
-        moving = bool(rvw[:, 1:].any())
-        if c.V0 > 0 and not moving:
-            ids = [b.id for b in balls]
-            if c.cue_ball_id not in ids:
-                # pooltool's own loop raises a KeyError here.
-                raise ValueError(
-                    f"shots[{k}]: the cue's ball {c.cue_ball_id!r} is not among the balls"
-                )
-            strike.append(ids.index(c.cue_ball_id))
-        else:
-            strike.append(-1)
-        s = c.specs
-        cue.append([c.V0, c.phi, c.theta, c.a, c.b, s.M, s.end_mass, s.tip_radius])
-    n = ball_start[-1]
-    return {
-        "tables": tables,
-        "shot_table": np.array(shot_table, dtype=np.float64),
-        "ball_start": np.array(ball_start, dtype=np.float64),
-        "rvw": np.concatenate(rvws) if rvws else np.empty((0, 3, 3)),
-        "s": np.array(ss, dtype=np.float64),
-        "params": np.array(params, dtype=np.float64).reshape(n, 10),
-        "strike": np.array(strike, dtype=np.float64),
-        "cue": np.array(cue, dtype=np.float64).reshape(len(shots), 8),
-    }
+    """``_core.simulate_shots``' arguments for pooltool ``System`` s (read in Rust:
+    ``_core._pooltool_inputs``; tables shared by identity are read once)."""
+    from . import _core
+
+    return _core._pooltool_inputs(shots)
 
 
 class ShotResults:
@@ -707,7 +624,7 @@ class ShotResults:
         """Shot ``k`` as the pooltool ``System`` :func:`simulate` returns (a new one; the
         shot given to :func:`simulate_many` is not changed)."""
         if "history_rvw" in self._arrays:
-            return _build(self._shots[k].copy(), self._arrays, k)
+            return _build(self._shots[k], self._arrays, k, inplace=False)
         return simulate(self._shots[k], contact_rule=self._contact_rule)
 
 
@@ -794,170 +711,46 @@ def simulate(
     arrays = _core.simulate_shots(
         **_inputs([shot]), contact_rule=contact_rule, history=True, num_threads=1
     )
-    return _build(shot if inplace else shot.copy(), arrays, 0)
+    return _build(shot, arrays, 0, inplace=inplace)
 
 
-@functools.lru_cache(maxsize=1)
-def _makers() -> Any:
-    """Constructors of pooltool's ``BallState``, ``BallHistory``, ``Ball`` (a history-free
-    copy), ``Agent`` and ``Event`` that set their slots directly: pooltool's attrs
-    constructors (converters, validators, factories) cost about a microsecond an object, and
-    a break's ``System`` holds thousands; these cost a third of that. The values are pooltool's
-    own types, so nothing needs converting."""
-    pt = _pooltool_types()
-    BallState, BallHistory, Ball = pt["BallState"], pt["BallHistory"], pt["Ball"]
-    Agent, Event = pt["Agent"], pt["Event"]
-    new = object.__new__
-    set_rvw, set_s, set_t = BallState.rvw.__set__, BallState.s.__set__, BallState.t.__set__
-    set_states = BallHistory.states.__set__
-    ball_slots = [
-        getattr(Ball, name).__set__ for name in ("id", "params", "ballset", "initial_orientation")
-    ]
-    set_state, set_history, set_cts = (
-        Ball.state.__set__,
-        Ball.history.__set__,
-        Ball.history_cts.__set__,
-    )
-    agent_slots = [getattr(Agent, n).__set__ for n in ("id", "agent_type", "initial", "final")]
-    event_slots = [getattr(Event, n).__set__ for n in ("event_type", "agents", "time")]
+def _build(shot: Any, r: dict[str, Any], k: int, inplace: bool) -> Any:
+    """Shot ``k`` of ``_core.simulate_shots``' results (with history) as pooltool's
+    ``simulate(shot, inplace=inplace)`` leaves it: written into ``shot``, or into a copy.
 
-    def state(rvw: Any, s: int, t: float) -> Any:
-        o = new(BallState)
-        set_rvw(o, rvw)
-        set_s(o, s)
-        set_t(o, t)
-        return o
+    The copy is ``shot.copy()`` (pooltool's ``System.copy``) less the balls' copies, whose
+    states and histories the build replaces: it makes the balls itself, each sharing its
+    ``id``, ``params``, ``ballset`` and ``initial_orientation`` with the ball of ``shot``, as
+    ``Ball.copy`` does. The objects are made in Rust (``_core._PooltoolBuilder``: each as
+    ``object.__new__`` with its slots filled directly; pooltool's attrs constructors cost
+    about a microsecond an object, and a break's ``System`` holds thousands).
 
-    def history(states: list[Any]) -> Any:
-        o = new(BallHistory)
-        set_states(o, states)
-        return o
-
-    set_id, set_params, set_ballset, set_orientation = ball_slots
-    agent_id, agent_type_, agent_initial, agent_final = agent_slots
-    event_type_, event_agents, event_time = event_slots
-
-    def ball_copy(ball: Any, st: Any) -> Any:
-        """``ball.copy(drop_history=True)`` with state ``st``."""
-        o = new(Ball)
-        set_id(o, ball.id)
-        set_params(o, ball.params)
-        set_ballset(o, ball.ballset)
-        set_orientation(o, ball.initial_orientation)
-        set_state(o, st)
-        h = new(BallHistory)
-        set_states(h, [])
-        set_history(o, h)
-        h = new(BallHistory)
-        set_states(h, [])
-        set_cts(o, h)
-        return o
-
-    def agent(id: str, agent_type: Any, initial: Any, final: Any) -> Any:
-        o = new(Agent)
-        agent_id(o, id)
-        agent_type_(o, agent_type)
-        agent_initial(o, initial)
-        agent_final(o, final)
-        return o
-
-    def event(event_type: Any, agents: tuple[Any, ...], time: float) -> Any:
-        o = new(Event)
-        event_type_(o, event_type)
-        event_agents(o, agents)
-        event_time(o, time)
-        return o
-
-    return state, history, ball_copy, agent, event
-
-
-def _build(system: Any, r: dict[str, Any], k: int) -> Any:
-    """Writes shot ``k`` of ``_core.simulate_shots``' results (with history) into
-    ``system``, as pooltool's ``simulate`` leaves it.
-
-    Python's cyclic garbage collector is paused meanwhile: the thousands of objects of a
-    break would otherwise set off several collections, and with pooltool and numba loaded
-    each full one walks millions of objects (measured: 10 ms of a 13 ms build). None of the
-    objects made here forms a cycle; the collector runs again as usual afterwards.
+    Python's cyclic garbage collector is paused meanwhile. The thousands of new objects
+    would otherwise set off collections in the middle, each of which moves the live ones on
+    to an older generation, and so brings on collections of the whole heap sooner (with
+    pooltool and numba loaded, hundreds of thousands of objects): measured on the
+    benchmark's shots, 2.3 ms a shot without the pause, 0.7 ms with it. None of the objects
+    made here forms a cycle; the collector runs again as usual afterwards.
     """
+    if inplace:
+        system = shot
+    else:
+        system = _pooltool_types()["System"](
+            cue=shot.cue.copy(), table=shot.table.copy(), balls=dict(shot.balls), t=shot.t
+        )
     paused = gc.isenabled()
     gc.disable()
     try:
-        return _build_into(system, r, k)
+        _builder().build(system, r, k, not inplace)
     finally:
         if paused:
             gc.enable()
-
-
-def _build_into(system: Any, r: dict[str, Any], k: int) -> Any:
-    """:func:`_build`'s work."""
-    pt = _pooltool_types()
-    AgentType = pt["AgentType"]
-    event_types = _event_types(tuple(r["type_names"]))
-    state, history, copy_of, agent_of, event_of = _makers()
-    ball_type = AgentType.BALL
-
-    balls = list(system.balls.values())
-    n = len(balls)
-    e0, e1 = int(r["event_start"][k]), int(r["event_start"][k + 1])
-    n_events = e1 - e0
-    times = [0.0, *r["time"][e0:e1].tolist()]
-    end = times[-1]
-    h0 = int(r["history_start"][k])
-    rows = n * (n_events + 1)
-    # Each ball's history: its state at time 0 and after each event, then the last again
-    # (pooltool adds the same state object at the closing null event).
-    h_rvw = r["history_rvw"][h0 : h0 + rows].copy().reshape(n_events + 1, n, 3, 3)
-    h_s = r["history_s"][h0 : h0 + rows].reshape(n_events + 1, n).T.tolist()
-    for b, ball in enumerate(balls):
-        own = list(map(state, h_rvw[:, b], h_s[b], times))
-        own.append(own[-1])
-        ball.history = history(own)
-        ball.history_cts = history([])
-        ball.state = own[-1]
-
-    names = r["type_names"]
-    types = r["type"][e0:e1].tolist()
-    who = r["ball"][e0:e1].tolist()
-    objects = r["object"][e0:e1].tolist()
-    # Each event's two slots, flat: slot `2 e + k` is ball `k` of event `e`.
-    after_rvw = list(r["rvw"][e0:e1].reshape(-1, 3, 3).copy())
-    after_s = r["s"][e0:e1].reshape(-1).tolist()
-    before_rvw = list(r["before_rvw"][e0:e1].reshape(-1, 3, 3).copy())
-    before_s = r["before_s"][e0:e1].reshape(-1).tolist()
-    table = system.table
-    linear = list(table.cushion_segments.linear.values())
-    circular = list(table.cushion_segments.circular.values())
-    pockets = list(table.pockets.values())
-    events = [pt["null_event"](0)]  # pooltool starts with null_event(time=0), an int
-    for e in range(n_events):
-        code = types[e]
-        name = names[code]
-        t = times[e + 1]
-        agents = []
-        for slot, b in enumerate(who[e], 2 * e):
-            if b < 0:
-                continue
-            ball = balls[b]
-            initial = copy_of(ball, state(before_rvw[slot], before_s[slot], t))
-            final = copy_of(ball, state(after_rvw[slot], after_s[slot], t))
-            agents.append(agent_of(ball.id, ball_type, initial, final))
-        if name == "stick_ball":
-            cue = system.cue
-            agents.insert(0, agent_of(cue.id, AgentType.CUE, cue.copy(), None))
-        elif name == "ball_linear_cushion":
-            c = linear[objects[e]]
-            agents.append(agent_of(c.id, AgentType.LINEAR_CUSHION_SEGMENT, c, None))
-        elif name == "ball_circular_cushion":
-            c = circular[objects[e]]
-            agents.append(agent_of(c.id, AgentType.CIRCULAR_CUSHION_SEGMENT, c, None))
-        elif name == "ball_pocket":
-            p = pockets[objects[e]]
-            initial = p.copy()
-            p.add(balls[who[e][0]].id)
-            agents.append(agent_of(p.id, AgentType.POCKET, initial, p.copy()))
-        events.append(event_of(event_types[code], tuple(agents), t))
-    events.append(pt["null_event"](end))
-    system.events = events
-    system.t = end
     return system
+
+
+@functools.lru_cache(maxsize=1)
+def _builder() -> Any:
+    """The builder of pooltool's objects, made once (it looks up how to fill each class)."""
+    from . import _core
+
+    return _core._PooltoolBuilder(_pooltool_types())

@@ -20,6 +20,8 @@ mod geometry;
 mod input_error;
 mod long_call;
 mod paths;
+mod pooltool_inputs;
+mod pooltool_system;
 mod read;
 mod schedule;
 mod shots;
@@ -788,6 +790,16 @@ fn core_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.setattr(
         "_last_kernel_seconds",
         wrap_pyfunction!(_last_kernel_seconds, m)?,
+    )?;
+    // ballcollide.pooltool's reader and builder of pooltool objects: attributes, not
+    // exports.
+    m.setattr(
+        "_pooltool_inputs",
+        wrap_pyfunction!(pooltool_inputs::pooltool_inputs, m)?,
+    )?;
+    m.setattr(
+        "_PooltoolBuilder",
+        py.get_type::<pooltool_system::PooltoolBuilder>(),
     )?;
     let public = [
         wrap_pyfunction!(collision_time, m)?,

@@ -153,6 +153,78 @@ def test_the_system_is_built_as_pooltools() -> None:
         pt.continuize(ours, inplace=True)
 
 
+def states_of(system: Any) -> list[Any]:
+    """Every ``BallState`` of a simulated ``System``: the balls' histories, then the agents'
+    copies."""
+    states = [s for ball in system.balls.values() for s in ball.history.states]
+    for event in system.events:
+        for a in event.agents:
+            if a.agent_type == AgentType.BALL:
+                states += [a.initial.state, a.final.state]
+    return states
+
+
+def census(simulate: Any, system: Any) -> dict[str, int]:
+    """How many objects of each type that the garbage collector tracks ``simulate(system)``'s
+    result holds, of those it made (not the shot's own table segments, parameters, ...)."""
+    import gc
+
+    gc.collect()
+    # Held, so that no id of theirs is reused meanwhile.
+    existing = gc.get_objects()
+    before = {id(o) for o in existing}
+    made = simulate(system)
+    seen: dict[int, str] = {}
+    todo = [made]
+    while todo:
+        o = todo.pop()
+        if id(o) in seen or id(o) in before or not gc.is_tracked(o):
+            continue
+        seen[id(o)] = type(o).__name__
+        todo += gc.get_referents(o)
+    names = list(seen.values())
+    return {t: names.count(t) for t in set(names)}
+
+
+def test_the_system_is_made_of_what_pooltools_is(tmp_path: Any) -> None:
+    shots = named_shots()
+    picks = [k for k, (name, _) in enumerate(shots) if name in ("break9-1", "masse-2")]
+    for k in picks:
+        system = shots[k][1]
+        ours, theirs = bcp.simulate(system), stock(k)
+        # Each state's fields of pooltool's own types, as stock leaves them.
+        for mine, its in zip(states_of(ours), states_of(theirs)):
+            for x in (mine, its):
+                assert type(x.rvw) is np.ndarray and x.rvw.dtype == np.float64
+                assert x.rvw.shape == (3, 3) and x.rvw.flags.writeable
+                assert type(x.s) is int and type(x.t) is float
+        # No two states share an array, but a ball's last state is its history's last two
+        # (pooltool adds it again at the closing null event).
+        arrays = {id(s): s.rvw for s in states_of(ours)}
+        assert len(arrays) == len(states_of(ours)) - len(ours.balls)
+        rows = sorted((a.__array_interface__["data"][0], a.nbytes) for a in arrays.values())
+        assert all(x + n <= y for (x, n), (y, _) in zip(rows, rows[1:]))
+        for ball in ours.balls.values():
+            assert ball.history.states[-2] is ball.history.states[-1] is ball.state
+
+        # As many objects for the collector, type by type, as stock's System.
+        assert census(bcp.simulate, system) == census(pt.simulate, system)
+        # pooltool's own tools take it: a copy, the serializers, and back.
+        copy = ours.copy()
+        assert signature(copy) == signature(ours) and copy.t == ours.t
+        path = tmp_path / f"{k}.msgpack"
+        ours.save(path)
+        loaded = pt.System.load(path)
+        assert signature(loaded) == signature(ours)
+        for a, b in zip(states_of(loaded), states_of(ours)):
+            assert np.array_equal(a.rvw, b.rvw) and a.s == b.s and a.t == b.t
+        # A state's rvw written into changes that state only.
+        before = [s.rvw.copy() for s in states_of(ours)]
+        ours.events[1].agents[1].final.state.rvw[0, 0] += 1.0
+        changed = [not np.array_equal(s.rvw, b) for s, b in zip(states_of(ours), before)]
+        assert sum(changed) == 1
+
+
 def test_inplace_changes_the_shot_given() -> None:
     system = named_shots()[0][1].copy()
     assert bcp.simulate(system, inplace=True) is system
