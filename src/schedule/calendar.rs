@@ -343,7 +343,8 @@ impl<const D: usize> CollisionSchedule<D> {
     ///
     /// # Errors
     /// An [`InputError`]: `radius` of another length than `paths`, or a radius at an index
-    /// that is not finite and positive; `t_max` negative or NaN; more than `2³² − 2` balls
+    /// that is not finite and positive, or as wide as the box (`2r ≥` its width on an axis:
+    /// [`InputErrorKind::WiderThanBox`]); `t_max` negative or NaN; more than `2³² − 2` balls
     /// (`paths`, as a length); [`InputErrorKind::Interrupted`] inside an
     /// [`interruptible`](crate::interrupt::interruptible) call whose flag is set.
     pub fn new(
@@ -368,6 +369,10 @@ impl<const D: usize> CollisionSchedule<D> {
         }
         for (i, &r) in radii.iter().enumerate() {
             check_ball_radius("radius", r).map_err(|e| e.at(i))?;
+            // A ball as wide as the box would touch two walls at once at every instant.
+            if let Some(kind) = options.walls.as_ref().and_then(|w| w.wider_than(r, 1.0)) {
+                return Err(InputError::new("radius", kind).at(i));
+            }
         }
         let t_max = check_horizon("t_max", options.t_max)?;
         // `+ 0.0`: times are taken in with −0 made +0 (the calendar's time and the

@@ -627,12 +627,10 @@ fn check_start(balls: &[Ball], radii: &[f64], walls: &Walls<2>) -> Result<(), In
     let keep = 1.0 - START_TOLERANCE;
     for (i, (ball, &r)) in balls.iter().zip(radii).enumerate() {
         let p = ball.position();
+        if let Some(kind) = walls.wider_than(r, keep) {
+            return Err(InputError::new("radius", kind).at(i));
+        }
         for axis in 0..2 {
-            let width = hi[axis] - lo[axis];
-            if 2.0 * r >= width * keep {
-                let kind = InputErrorKind::WiderThanBox { axis, width };
-                return Err(InputError::new("radius", kind).at(i));
-            }
             let room = (p[axis] - lo[axis]).min(hi[axis] - p[axis]);
             if room < r * keep {
                 return Err(InputError::new("pos", InputErrorKind::OutsideBox { axis }).at(i));

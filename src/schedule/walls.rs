@@ -72,6 +72,16 @@ impl<const D: usize> Walls<D> {
         self.hi
     }
 
+    /// Whether a ball of radius `r` is as wide as the box or wider on some axis (`2r ≥
+    /// keep·width`, `keep ≤ 1` a tolerance): it would touch two opposite walls at once
+    /// wherever it is. The first such axis's error kind.
+    pub(crate) fn wider_than(&self, r: f64, keep: f64) -> Option<InputErrorKind> {
+        (0..D).find_map(|axis| {
+            let width = self.hi[axis] - self.lo[axis];
+            (2.0 * r >= width * keep).then_some(InputErrorKind::WiderThanBox { axis, width })
+        })
+    }
+
     /// The first contact of a ball of `radius` on `path` with these walls, searched from the
     /// path's first start: `(t, axis, side)`, ties to the lowest axis, then the low wall;
     /// `None` if there is none before `t_max`. This is the search the calendar runs.

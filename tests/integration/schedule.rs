@@ -442,6 +442,23 @@ fn refused_updates_name_the_argument_and_the_index() {
         err.to_string(),
         "radius[0]: a ball's radius must be > 0, got 0"
     );
+    // A ball as wide as its box, or wider: two walls at once wherever it is (a wall event at
+    // t = 0 for ever, calling next_event after each update).
+    for (r, refused) in [(0.49, false), (0.5, true), (0.75, true)] {
+        let options = ScheduleOptions {
+            walls: Some(Walls::new([0.0, 0.0], [1.0, 2.0]).expect("a box")),
+            ..Default::default()
+        };
+        let at = |x: f64, y: f64| {
+            Path::new(vec![Segment::at_rest(0.0, Vector2::new(x, y))]).expect("valid")
+        };
+        let made = CollisionSchedule::new(vec![at(0.5, 0.5), at(0.5, 1.5)], &[0.25, r], options);
+        match (made, refused) {
+            (Ok(_), false) => {}
+            (Err(e), true) => assert_eq!(e.kind().code(), "wider_than_box", "{e}"),
+            (made, _) => panic!("radius {r}: {made:?}"),
+        }
+    }
 }
 
 #[test]

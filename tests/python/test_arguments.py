@@ -362,8 +362,13 @@ CALLS: dict[str, tuple[Callable[..., Any], dict[str, object], dict[str, set[str]
 }
 
 # Valid values that may yet be refused with an InputError (naming any argument): balls of
-# radius 1.5 or 2**64 in this box overlap each other and the walls, an impossible start.
-MAY_REFUSE = {("simulate", "radius")}
+# radius 1.5 or 2**64 in this box overlap each other and the walls, an impossible start; in a
+# calendar's box, a ball of radius 2**64 is wider than the box.
+MAY_REFUSE = {
+    ("simulate", "radius"),
+    ("CollisionSchedule", "radius"),
+    ("CollisionSchedule.from_balls", "radius"),
+}
 
 CASES = [
     (call, argument, label)

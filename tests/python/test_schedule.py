@@ -461,3 +461,12 @@ def test_the_calendar_with_a_table_is_brute_force_after_any_updates(scenario, da
         s.update(indices, *arrays(new, dim))
         for i, p in zip(indices, new):
             paths[i] = p
+
+
+@pytest.mark.parametrize("radius", [0.5, 0.6])
+def test_a_ball_as_wide_as_the_box_is_refused_naming_it(radius):
+    # It would touch two walls at once at every instant (a wall event at t = 0 for ever).
+    with pytest.raises(bc.InputError) as error:
+        bc.CollisionSchedule.from_balls([[0.5, 0.5]], [[1, 0.3]], 0.0, radius, box=([0, 0], [1, 2]))
+    assert (error.value.argument, error.value.index) == ("radius", 0)
+    assert error.value.kind == "wider_than_box"

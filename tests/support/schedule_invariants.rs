@@ -328,7 +328,10 @@ pub fn calendar<const D: usize, C: Choices>(
         Table::default()
     };
     let t_max = scene.t_max * draw.time;
-    let radii_valid = radii.iter().all(|&r| r > 0.0 && r.is_finite());
+    // A ball as wide as the box is refused (`wider_than_box`).
+    let radii_valid = radii
+        .iter()
+        .all(|&r| r > 0.0 && r.is_finite() && !(scene.walls && 2.0 * r >= hi - lo));
     let walls = match walls {
         None => None,
         Some(Some(w)) => Some(w),
