@@ -34,15 +34,16 @@ pub struct Ball {
     stop_time: f64,
 }
 
-/// The name, in the calls that take balls as rows (`pos`, `vel`, `friction`: the scene, the
-/// calendar's friction balls, `simulate`), of the [`Ball`] input an error names (`position`,
-/// `velocity`, `friction`).
-pub(crate) fn row_name(argument: &'static str) -> &'static str {
-    match argument {
+/// Ball `i`'s error `e` (about a [`Ball`] input: `position`, `velocity`, `friction`), as the
+/// calls that take balls as rows (`pos`, `vel`, `friction`: the scene, the calendar's
+/// friction balls, `simulate`) name it: `vel[i]`.
+pub(crate) fn row_error(e: InputError, i: usize) -> InputError {
+    let name = match e.argument() {
         "position" => "pos",
         "velocity" => "vel",
         other => other,
-    }
+    };
+    e.renamed(name).at(i)
 }
 
 impl Ball {

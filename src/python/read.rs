@@ -277,12 +277,16 @@ fn nested_numbers<'py>(obj: &Bound<'py, PyAny>) -> Option<Bound<'py, PyUntypedAr
     array.into_any().cast_into::<PyUntypedArray>().ok()
 }
 
+/// Whether `obj` is a bool, Python's or numpy's.
+fn is_bool(obj: &Bound<'_, PyAny>) -> bool {
+    obj.is_instance_of::<PyBool>() || is_numpy_type(obj, NpyTypes::PyBoolArrType_Type)
+}
+
 /// Whether `obj`, nested lists or tuples (`depth` levels in), holds a bool (Python's or
 /// numpy's, or an array of them) among its items.
 fn holds_bool(obj: &Bound<'_, PyAny>, depth: usize) -> bool {
     let is_bool = |item: &Bound<'_, PyAny>| {
-        item.is_instance_of::<PyBool>()
-            || is_numpy_type(item, NpyTypes::PyBoolArrType_Type)
+        is_bool(item)
             || item
                 .cast::<PyUntypedArray>()
                 .is_ok_and(|array| array.dtype().kind() == b'b')
@@ -612,20 +616,13 @@ pub(super) fn point(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<[f64; 2]> {
         (_, Ok(l)) if l.len() == 2 => Some((l.get_item(0)?, l.get_item(1)?)),
         _ => None,
     };
-    if let Some((x, y)) = pair {
-        if plain(&x) && plain(&y) {
-            return Ok([number(name, &x)?, number(name, &y)?]);
-        }
-        // numpy would read `[True, 0]` as the ints `[1, 0]`.
-        let flag = |item: &Bound<'_, PyAny>| {
-            item.is_instance_of::<PyBool>() || is_numpy_type(item, NpyTypes::PyBoolArrType_Type)
-        };
-        if flag(&x) || flag(&y) {
-            return Err(PyTypeError::new_err(format!(
-                "{name}: expected real numbers, got bool"
-            )));
-        }
+    if let Some((x, y)) = pair
+        && plain(&x)
+        && plain(&y)
+    {
+        return Ok([number(name, &x)?, number(name, &y)?]);
     }
+    // (A bool among the items, which numpy would read as a number: refused by the reading.)
     let real = real_array(name, obj)?;
     if real.array.shape() != [2] {
         let shape = shape_text(real.array.shape());
@@ -818,9 +815,7 @@ pub(super) fn ball_index(
 /// A flag: `True` or `False` (Python's or numpy's bools); anything else is a `TypeError`
 /// naming it.
 pub(super) fn flag(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<bool> {
-    let is_bool =
-        obj.is_instance_of::<PyBool>() || is_numpy_type(obj, NpyTypes::PyBoolArrType_Type);
-    if !is_bool {
+    if !is_bool(obj) {
         let what = type_name(obj);
         return Err(PyTypeError::new_err(format!(
             "{name}: expected True or False, got {what}"
@@ -840,7 +835,7 @@ pub(super) fn int<'py>(
     let py = obj.py();
     let not_int =
         |what: &str| PyTypeError::new_err(format!("{name}: expected {expected}, got {what}"));
-    if obj.is_instance_of::<PyBool>() || is_numpy_type(obj, NpyTypes::PyBoolArrType_Type) {
+    if is_bool(obj) {
         return Err(not_int("bool"));
     }
     // SAFETY: a live object; `PyNumber_Index` returns a new reference or NULL with an

@@ -19,7 +19,7 @@ use super::index_i64;
 use super::input_error::{from_core, input_error};
 use super::long_call::{INLINE_UP_TO, Kernel, Progress, SIGNAL_CHECKS, look, run, run_shown};
 use super::paths::{Layout, Side, side};
-use super::read::{self, Given, param, rows};
+use super::read::{self, Floats, Given, Param, param, rows};
 use super::table::table_of;
 use crate::Path;
 use crate::batch::PerPair;
@@ -332,6 +332,37 @@ fn same_count(
     Err(from_core(py, InputError::new(argument, kind)))
 }
 
+/// A scene's friction-ball arguments, read (in place where they can be).
+struct BallArgs<'py> {
+    pos: Floats<'py>,
+    vel: Floats<'py>,
+    friction: Param<'py>,
+}
+
+impl<'py> BallArgs<'py> {
+    fn read(
+        pos: &Bound<'py, PyAny>,
+        vel: &Bound<'py, PyAny>,
+        friction: &Bound<'py, PyAny>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            pos: rows("pos", pos)?,
+            vel: rows("vel", vel)?,
+            friction: param("friction", friction)?,
+        })
+    }
+
+    /// The number of balls (`pos`'s rows).
+    fn len(&self) -> usize {
+        self.pos.rows::<2>().len()
+    }
+
+    /// The rows `scene::balls` takes (slices: what a kernel on another thread may hold).
+    fn rows(&self) -> (&[[f64; 2]], &[[f64; 2]], PerPair<'_>) {
+        (self.pos.rows(), self.vel.rows(), self.friction.per_pair())
+    }
+}
+
 /// Friction balls from a scene's arguments.
 fn balls(
     py: Python<'_>,
@@ -339,10 +370,9 @@ fn balls(
     vel: &Bound<'_, PyAny>,
     friction: &Bound<'_, PyAny>,
 ) -> PyResult<Vec<crate::Ball>> {
-    let pos = rows("pos", pos)?;
-    let vel = rows("vel", vel)?;
-    let friction = param("friction", friction)?;
-    scene::balls(pos.rows(), vel.rows(), friction.per_pair()).map_err(|e| from_core(py, e))
+    let args = BallArgs::read(pos, vel, friction)?;
+    let (pos, vel, friction) = args.rows();
+    scene::balls(pos, vel, friction).map_err(|e| from_core(py, e))
 }
 
 #[pymethods]
@@ -444,9 +474,8 @@ impl CollisionSchedule {
         transitions: Option<&Bound<'_, PyAny>>,
         progress: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
-        let (pos, vel) = (rows("pos", pos)?, rows("vel", vel)?);
-        let friction = param("friction", friction)?;
-        let n = pos.rows::<2>().len();
+        let args = BallArgs::read(pos, vel, friction)?;
+        let n = args.len();
         let radii = radii(py, radius, n)?;
         let t = t.number_or("t", 0.0)?;
         let t_max = t_max.number_or("t_max", f64::INFINITY)?;
@@ -455,10 +484,9 @@ impl CollisionSchedule {
         let progress = Progress::of(py, progress, Some(n), "ball")?;
         // The balls made inside the kernel, watched for Ctrl-C as the rest of the build is
         // (millions take a good part of a second).
-        let (pos, vel, friction) = (pos.rows::<2>(), vel.rows::<2>(), friction.per_pair());
+        let (pos, vel, friction) = args.rows();
         let core = run_shown(py, calendar_kernel(n), progress, || {
-            let balls = scene::balls(pos, vel, friction)?;
-            Core::from_balls(&balls, &radii, t, options)
+            Core::from_balls(&scene::balls(pos, vel, friction)?, &radii, t, options)
         })?;
         Ok(Self {
             inner: Inner::Two(core),

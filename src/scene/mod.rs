@@ -63,7 +63,7 @@ use crate::interrupt::Interrupt;
 use crate::batch::{PerPair, Threads};
 use crate::collision::first_contact_screened;
 use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon};
-use crate::motion::{Ball, row_name};
+use crate::motion::{Ball, row_error};
 use broad_phase::Sweep;
 
 /// Options of a scene query.
@@ -141,7 +141,7 @@ pub fn balls(
                 Vector2::from(vel[i]),
                 friction.get(i),
             )
-            .map_err(|e| e.renamed(row_name(e.argument())).at(i))
+            .map_err(|e| row_error(e, i))
         })
         .collect()
 }

@@ -12,7 +12,7 @@ use crate::collision::path_contact::{first_contact_bounded_fma, first_contact_of
 use crate::error::{InputError, InputErrorKind, check_ball_radius, check_horizon, finite};
 use crate::geometry::{ObjectKind, Table};
 use crate::interrupt::Interrupt;
-use crate::motion::{Ball, row_name};
+use crate::motion::{Ball, row_error};
 use crate::path::{FrictionPath, Path, Segment};
 
 /// Options of a [`CollisionSchedule`].
@@ -916,8 +916,7 @@ impl<const D: usize> CollisionSchedule<D> {
             .zip(&mut spare)
             .enumerate()
             .try_for_each(|(m, (ball, out))| {
-                ball.write_path_from(t, out)
-                    .map_err(|e| e.renamed(row_name(e.argument())).at(m))
+                ball.write_path_from(t, out).map_err(|e| row_error(e, m))
             })
             .and_then(|()| self.check_indices(indices, balls.len()));
         let result = written.and_then(|()| {
@@ -1409,8 +1408,7 @@ where
             if i % 1024 == 0 {
                 interrupt.check()?;
             }
-            b.path_from(t)
-                .map_err(|e| e.renamed(row_name(e.argument())).at(i))
+            b.path_from(t).map_err(|e| row_error(e, i))
         })
         .collect()
 }

@@ -479,10 +479,18 @@ fn reflected(v: Vector2<f64>, n: Vector2<f64>, e: f64) -> Vector2<f64> {
 /// The one velocity of two balls moving as one body (see [`Run::collide`]): their momentum's,
 /// `(m_a·v_a + m_b·v_b)/(m_a + m_b)`, from the mass ratio as in [`collide`] (no overflow for
 /// any masses).
-fn one_velocity(va: Vector2<f64>, vb: Vector2<f64>, [ma, mb]: [f64; 2]) -> Vector2<f64> {
-    let share_a = 1.0 / (1.0 + mb / ma);
-    let share_b = 1.0 / (1.0 + ma / mb);
-    va * share_a + vb * share_b
+fn one_velocity(va: Vector2<f64>, vb: Vector2<f64>, masses: [f64; 2]) -> Vector2<f64> {
+    // a's weight is b's share of a change, and b's a's.
+    let [share_a, share_b] = shares(masses);
+    va * share_b + vb * share_a
+}
+
+/// Each ball's share of a change of their relative velocity, `m_b/(m_a + m_b)` and
+/// `m_a/(m_a + m_b)` (the impulse over each mass), from the mass ratio: in `[0, 1]` for any
+/// masses from 5e-324 to `f64::MAX`, where `1/m` and `m_a + m_b` overflow; `½` exactly for
+/// equal masses.
+fn shares([ma, mb]: [f64; 2]) -> [f64; 2] {
+    [1.0 / (1.0 + ma / mb), 1.0 / (1.0 + mb / ma)]
 }
 
 /// The restitution of a collision at `t` of two balls whose last events came at `last`:
@@ -525,13 +533,7 @@ fn collide(
     let n = d / distance;
     // The normal speed at which they part (negative: approach).
     let parting = (a.1 - b.1).dot(&n);
-    // Each ball's share of the change of relative velocity, m_b/(m_a + m_b) and
-    // m_a/(m_a + m_b) (the impulse over each mass), from the mass ratio: in [0, 1] for any
-    // masses from 5e-324 to f64::MAX, where 1/m and m_a + m_b overflow; ½ exactly for equal
-    // masses.
-    let [ma, mb] = masses;
-    let share_a = 1.0 / (1.0 + ma / mb);
-    let share_b = 1.0 / (1.0 + mb / ma);
+    let [share_a, share_b] = shares(masses);
     let part_at = |target: f64| {
         let change = target - parting;
         (a.1 + n * (change * share_a), b.1 - n * (change * share_b))
