@@ -21,14 +21,22 @@ pub(crate) trait Key: Copy {
 #[derive(Clone, Debug)]
 pub(crate) struct Queue<K> {
     keys: Vec<K>,
-    /// Node `n`'s winner (a ball), `u32::MAX` for none; the leaves start at `leaves`.
-    tree: Vec<u32>,
-    /// Inner node `n`'s winner's time (`1 ≤ n < leaves`; not read where the winner is none):
-    /// what a replay compares with, read beside the node rather than through its winner's
-    /// key, a random read in a large tree (measured at N = 10⁶: the replay's reads of the
-    /// siblings' keys were 55 % of its time).
-    times: Vec<f64>,
+    /// Inner node `n`'s winner and its time (`1 ≤ n < leaves`; index 0 unused). Leaf
+    /// `leaves + i` is ball `i` (none past the last ball), its time its key's.
+    nodes: Vec<Node>,
     leaves: usize,
+}
+
+/// An inner node: the ball whose key comes first below it (`u32::MAX` for none) and that
+/// key's time (not read where the winner is none). The time is what a replay compares with,
+/// kept beside the winner rather than read through its key, a random read in a large tree
+/// (measured at N = 10⁶: the replay's reads of the siblings' keys were 55 % of its time);
+/// the two side by side, so that a level of a replay reads one cache line, two siblings
+/// sharing it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Node {
+    time: f64,
+    winner: u32,
 }
 
 const NONE: u32 = u32::MAX;
@@ -40,29 +48,40 @@ impl<K: Key> Queue<K> {
     /// The queue holding `keys` (fewer than `u32::MAX`).
     pub(crate) fn new(keys: Vec<K>) -> Self {
         let leaves = keys.len().next_power_of_two().max(1);
-        let mut tree = vec![NONE; 2 * leaves];
-        for (i, slot) in tree[leaves..leaves + keys.len()].iter_mut().enumerate() {
-            *slot = i as u32;
-        }
+        let none = Node {
+            time: f64::INFINITY,
+            winner: NONE,
+        };
         let mut queue = Self {
             keys,
-            tree,
-            times: vec![f64::INFINITY; leaves],
+            nodes: vec![none; leaves],
             leaves,
         };
         for node in (1..leaves).rev() {
             let winner = queue.winner(2 * node, 2 * node + 1);
-            queue.tree[node] = winner;
             if winner != NONE {
-                queue.times[node] = queue.keys[winner as usize].time();
+                queue.nodes[node] = Node {
+                    time: queue.keys[winner as usize].time(),
+                    winner,
+                };
             }
         }
         queue
     }
 
+    /// Node `n`'s winner (a leaf's: its ball, if there is one).
+    fn winner_at(&self, n: usize) -> u32 {
+        if n >= self.leaves {
+            let i = n - self.leaves;
+            if i < self.keys.len() { i as u32 } else { NONE }
+        } else {
+            self.nodes[n].winner
+        }
+    }
+
     /// The ball whose key comes first (`None` without balls).
     pub(crate) fn first(&self) -> Option<usize> {
-        let top = self.tree[1.min(self.tree.len() - 1)];
+        let top = self.winner_at(1);
         (top != NONE).then_some(top as usize)
     }
 
@@ -94,15 +113,20 @@ impl<K: Key> Queue<K> {
         let small = self.leaves <= SMALL_TREE;
         let mut up_time = key.time();
         while node > 1 {
-            let sibling = self.tree[node ^ 1];
-            if sibling != NONE {
-                // A leaf's time is its key's (beside the key just set); an inner node's is
-                // kept beside it.
-                let sibling_time = if node >= self.leaves {
-                    self.keys[sibling as usize].time()
-                } else {
-                    self.times[node ^ 1]
+            // A leaf's time is its key's (beside the key just set); an inner node's is kept
+            // beside its winner.
+            let (sibling, sibling_time) = if node >= self.leaves {
+                let sibling = self.winner_at(node ^ 1);
+                let time = match sibling {
+                    NONE => f64::INFINITY,
+                    b => self.keys[b as usize].time(),
                 };
+                (sibling, time)
+            } else {
+                let n = self.nodes[node ^ 1];
+                (n.winner, n.time)
+            };
+            if sibling != NONE {
                 let (earlier, later) = (sibling_time < up_time, sibling_time > up_time);
                 let sibling_first = if earlier | later {
                     earlier
@@ -129,23 +153,24 @@ impl<K: Key> Queue<K> {
                 }
             }
             node /= 2;
-            if !small && up != i as u32 && self.tree[node] == up {
+            if !small && up != i as u32 && self.nodes[node].winner == up {
                 return;
             }
-            self.tree[node] = up;
-            self.times[node] = up_time;
+            self.nodes[node] = Node {
+                time: up_time,
+                winner: up,
+            };
         }
     }
 
     /// The heap memory, in bytes.
     pub(crate) fn heap_bytes(&self) -> usize {
         self.keys.capacity() * std::mem::size_of::<K>()
-            + self.tree.capacity() * std::mem::size_of::<u32>()
-            + self.times.capacity() * std::mem::size_of::<f64>()
+            + self.nodes.capacity() * std::mem::size_of::<Node>()
     }
 
     fn winner(&self, left: usize, right: usize) -> u32 {
-        match (self.tree[left], self.tree[right]) {
+        match (self.winner_at(left), self.winner_at(right)) {
             (NONE, b) => b,
             (a, NONE) => a,
             (a, b) => {
@@ -195,7 +220,7 @@ mod tests {
     #[test]
     fn equal_keys_go_to_the_lowest_ball() {
         let mut rng = Rng(11);
-        for n in [2usize, 3, 7, 16, 33] {
+        for n in [2usize, 3, 4, 5, 7, 16, 33, 64, 65, 257] {
             let mut keys = vec![Coarse(1.0); n];
             let mut queue = Queue::new(keys.clone());
             for _ in 0..300 {
@@ -212,7 +237,7 @@ mod tests {
     #[test]
     fn the_first_key_is_always_the_least_after_random_changes() {
         let mut rng = Rng(7);
-        for n in [1usize, 2, 3, 5, 16, 17, 100, SMALL_TREE + 1] {
+        for n in [1usize, 2, 3, 4, 5, 16, 17, 64, 65, 100, SMALL_TREE + 1] {
             let mut keys: Vec<(f64, u32)> =
                 (0..n).map(|i| (rng.uniform(0.0, 10.0), i as u32)).collect();
             let mut queue = Queue::new(keys.clone());
@@ -228,11 +253,19 @@ mod tests {
                 assert_eq!(queue.key(least), &keys[least]);
                 // Every inner node too (the replay stops early): as built from scratch.
                 let fresh = Queue::new(keys.clone());
-                assert_eq!(queue.tree, fresh.tree);
-                let bits = |q: &Queue<(f64, u32)>| -> Vec<u64> {
+                let bits = |q: &Queue<(f64, u32)>| -> Vec<(u32, u64)> {
                     (1..q.leaves)
-                        .filter(|&n| q.tree[n] != NONE)
-                        .map(|n| q.times[n].to_bits())
+                        .map(|n| q.nodes[n])
+                        .map(|n| {
+                            (
+                                n.winner,
+                                if n.winner == NONE {
+                                    0
+                                } else {
+                                    n.time.to_bits()
+                                },
+                            )
+                        })
                         .collect()
                 };
                 assert_eq!(bits(&queue), bits(&fresh));

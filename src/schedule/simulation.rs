@@ -224,6 +224,9 @@ pub fn simulate_observed(
     check_start(balls, radii, &walls)?;
     check_start_on_table(balls, radii, &options.table)?;
     let mut captured: Vec<Option<usize>> = vec![None; n];
+    // Whether any ball is captured yet: until one is, the follow-ups do not look (a random
+    // read per ball, a cache miss in a large scene).
+    let mut any_captured = false;
     let mut events = Vec::new();
     let max_events = options.max_events.unwrap_or(usize::MAX);
     let most_at_one_instant = MAX_EVENTS_AT_ONE_INSTANT
@@ -275,6 +278,7 @@ pub fn simulate_observed(
                     )?;
                     calendar.retire(o.ball)?;
                     captured[o.ball] = Some(o.index);
+                    any_captured = true;
                 } else {
                     let normal = options.table.normal_at(o.kind, o.index, p);
                     let v = reflected(v, normal, table_restitution);
@@ -326,7 +330,7 @@ pub fn simulate_observed(
                     _ if q == x => p,
                     _ => continue,
                 };
-                if captured[x].is_some() || captured[y].is_some() {
+                if any_captured && (captured[x].is_some() || captured[y].is_some()) {
                     continue;
                 }
                 if events.len() >= max_events {
