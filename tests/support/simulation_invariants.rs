@@ -24,7 +24,7 @@
 #![allow(dead_code)]
 
 use ballcollide::geometry::{ObjectKind, SegmentSide, Table};
-use ballcollide::schedule::{Simulation, SimulationOptions, Walls, simulate};
+use ballcollide::schedule::{LoggedEvent, Simulation, SimulationOptions, Walls, simulate};
 use ballcollide::{Ball, InputError, InputErrorKind};
 use nalgebra::Vector2;
 
@@ -163,6 +163,28 @@ fn run(
     simulate(balls, &case.radii, walls, &options).map_err(|e| format!("{e}"))
 }
 
+/// The times to cut a run at (`events`: the whole run's log, to `t_end`), where no overlap
+/// may be deeper than [`OVERLAP`] and the log before the cut must be the whole run's: a half,
+/// a quarter and three quarters of `t_end`; then some events' times, where balls touch,
+/// and halfway from each to the next event, where a pair that passed into each other with
+/// no event would be found (up to eight events, evenly spread, as many as keep the cut
+/// runs' events within four times `most`, the events a run may take).
+fn cut_times(events: &[LoggedEvent], t_end: f64, most: usize) -> Vec<f64> {
+    let mut times = vec![t_end * 0.5, t_end * 0.25, t_end * 0.75];
+    let mut distinct: Vec<f64> = events.iter().map(|e| e.time).collect();
+    distinct.dedup();
+    // A cut at the k-th of E events runs about k of them: k picks cost about k·E.
+    let picks = (4 * most / events.len().max(1)).min(8).min(distinct.len());
+    for m in 0..picks {
+        let at = m * distinct.len() / picks;
+        let t = distinct[at];
+        let next = distinct.get(at + 1).copied().unwrap_or(t_end);
+        times.push(t);
+        times.push(t + (next - t) / 2.0);
+    }
+    times
+}
+
 /// The deepest overlap in a state, relative (two balls: their contact distance; a ball and a
 /// wall: its radius), and where.
 fn deepest_overlap(state: &[Ball], radii: &[f64], walls: &Walls<2>) -> (f64, String) {
@@ -278,8 +300,7 @@ pub fn simulation(case: &SimulationCase) -> Result<(), String> {
         ));
     }
     if full.events.len() < MAX_EVENTS && case.t_end.is_finite() {
-        for cut in [0.5, 0.25, 0.75] {
-            let t = case.t_end * cut;
+        for t in cut_times(&full.events, case.t_end, MAX_EVENTS) {
             let part = run(case, &balls, walls, t)?;
             let (depth, where_) = deepest_overlap(&part.balls, &case.radii, &walls);
             if depth > OVERLAP {
@@ -564,8 +585,7 @@ pub fn table_simulation(tc: &TableCase) -> Result<(), String> {
         }
     }
     if full.events.len() < table_events(case) && case.t_end.is_finite() {
-        for cut in [0.5, 0.25, 0.75] {
-            let t = case.t_end * cut;
+        for t in cut_times(&full.events, case.t_end, table_events(case)) {
             let part = table_run(tc, &balls, walls, t)?;
             let (depth, where_) =
                 deepest_on_table(&part.balls, &part.captured, &case.radii, &walls, &tc.table);
