@@ -23,8 +23,10 @@ the median time per shot of each:
   halves cost the same, per call: what two threads gain on the machine at that moment (on a
   shared machine, whose other work may hold the second core).
 
-And, on Linux, each thread's CPU time in ``engine 2`` (``/proc/self/task/*/schedstat``):
-how evenly the two threads share the shots, whatever the machine's load.
+And, on Linux, each thread's time on a CPU in ``engine 2``
+(``/proc/self/task/*/schedstat``): how evenly the two threads share the shots, whatever the
+machine's load; and its time waiting in the run queue for a CPU, which another process's
+work adds to the call.
 
 Each figure is a run's total time over its number of shots, the median over the runs; the
 ways take turns within each run (stock's two in the first ``--stock-runs`` only), and each
@@ -192,35 +194,47 @@ def _pairs(n: int) -> tuple[Any, ...]:
     return pos_a, vel_a, 0.2, pos_b, vel_b, 0.2, 0.05715
 
 
-def _thread_shares(call: Any, runs: int) -> list[float]:
-    """The CPU time (ms) of the two busiest threads other than this one in ``call``, each
-    the median over ``runs`` calls, busier first; empty where ``/proc`` has no per-thread
-    scheduler statistics."""
+def _thread_shares(call: Any, runs: int) -> list[tuple[float, float]]:
+    """For the two busiest threads other than this one in ``call``, busier first: the time
+    (ms) each ran on a CPU and the time it waited in the run queue for one (another
+    process's work on a shared machine), each the median over ``runs`` calls; empty where
+    ``/proc`` has no per-thread scheduler statistics."""
 
-    def cpu() -> dict[str, int]:
-        times = {}
+    def times() -> dict[str, tuple[int, int]]:
+        out = {}
         for task in os.listdir("/proc/self/task"):
             try:
                 with open(f"/proc/self/task/{task}/schedstat") as f:
-                    times[task] = int(f.read().split()[0])
+                    ran, waited = f.read().split()[:2]
+                out[task] = (int(ran), int(waited))
             except OSError:
                 pass  # a thread that ended meanwhile
-        return times
+        return out
 
-    if not os.path.exists(f"/proc/self/task/{threading.get_native_id()}/schedstat"):
-        return []
     me = str(threading.get_native_id())
+    if not os.path.exists(f"/proc/self/task/{me}/schedstat"):
+        return []
     per_call = []
     for _ in range(runs):
-        before = cpu()
+        before = times()
         call()
-        after = cpu()
+        after = times()
         used = sorted(
-            (after[t] - before.get(t, 0) for t in after if t != me),
+            (
+                (ran - before.get(t, (0, 0))[0], waited - before.get(t, (0, 0))[1])
+                for t, (ran, waited) in after.items()
+                if t != me
+            ),
             reverse=True,
+        )[:2]
+        per_call.append(used + [(0, 0)] * (2 - len(used)))
+    return [
+        (
+            statistics.median(c[i][0] for c in per_call) / 1e6,
+            statistics.median(c[i][1] for c in per_call) / 1e6,
         )
-        per_call.append(used[:2] + [0] * (2 - len(used[:2])))
-    return [statistics.median(c[i] for c in per_call) / 1e6 for i in (0, 1)]
+        for i in (0, 1)
+    ]
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -291,7 +305,9 @@ def main(argv: list[str] | None = None) -> int:
     print(f"{pairs_1 * 1e3:.1f} / {pairs_2 * 1e3:.1f} ms)")
     shares = _thread_shares(lambda: _core.simulate_shots(**inputs, num_threads=2), args.runs)
     if shares:
-        print(f"engine 2, its threads' CPU per call (median): {shares[0]:.1f} / {shares[1]:.1f} ms")
+        (ran_1, waited_1), (ran_2, waited_2) = shares
+        print(f"engine 2, its threads per call (median): on a CPU {ran_1:.1f} / {ran_2:.1f} ms;")
+        print(f"  waiting for one {waited_1:.1f} / {waited_2:.1f} ms")
     # A shared machine's other work moves every figure (and takes the second core).
     print(f"load average (1, 5, 15 min) at the end: {os.getloadavg()}, {os.cpu_count()} CPUs")
     return 0
