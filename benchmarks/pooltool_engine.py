@@ -16,8 +16,17 @@ the median time per shot of each:
   about a millisecond a shot here;
 - ``many 1``, ``many 2``: ``ballcollide.pooltool.simulate_many(systems, num_threads=n)``,
   array results, on one and on two threads;
-- its parts: ``reading`` the pooltool objects into arrays (Python, on one thread) and
-  ``engine 1``, ``engine 2``: the engine on those arrays (``_core.simulate_shots``).
+- its parts: ``reading`` the pooltool objects into arrays (Rust holding the GIL, on the
+  calling thread) and ``engine 1``, ``engine 2``: the engine on those arrays
+  (``_core.simulate_shots``);
+- ``pairs 1``, ``pairs 2``: ``bc.collision_times`` on 10⁶ random pairs, a kernel whose
+  halves cost the same, per call: what two threads gain on the machine at that moment (on a
+  shared machine, whose other work may hold the second core).
+
+And, on Linux, each thread's time on a CPU in ``engine 2``
+(``/proc/self/task/*/schedstat``): how evenly the two threads share the shots, whatever the
+machine's load; and its time waiting in the run queue for a CPU, which another process's
+work adds to the call.
 
 Each figure is a run's total time over its number of shots, the median over the runs; the
 ways take turns within each run (stock's two in the first ``--stock-runs`` only), and each
@@ -40,6 +49,7 @@ import os
 import random
 import statistics
 import sys
+import threading
 import time
 from pathlib import Path
 from typing import Any
@@ -176,6 +186,57 @@ def _rounds(ways: dict[str, Any], systems: list[Any], runs: int, stock_runs: int
     return {name: statistics.median(t) for name, t in times.items()}
 
 
+def _pairs(n: int) -> tuple[Any, ...]:
+    """``collision_times``' arguments for ``n`` seeded random pairs on a pool table."""
+    rng = np.random.default_rng(7)
+    pos_a, pos_b = (rng.uniform(0.0, 2.0, (n, 2)) for _ in range(2))
+    vel_a, vel_b = (rng.uniform(-2.0, 2.0, (n, 2)) for _ in range(2))
+    return pos_a, vel_a, 0.2, pos_b, vel_b, 0.2, 0.05715
+
+
+def _thread_shares(call: Any, runs: int) -> list[tuple[float, float]]:
+    """For the two busiest threads other than this one in ``call``, busier first: the time
+    (ms) each ran on a CPU and the time it waited in the run queue for one (another
+    process's work on a shared machine), each the median over ``runs`` calls; empty where
+    ``/proc`` has no per-thread scheduler statistics."""
+
+    def times() -> dict[str, tuple[int, int]]:
+        out = {}
+        for task in os.listdir("/proc/self/task"):
+            try:
+                with open(f"/proc/self/task/{task}/schedstat") as f:
+                    ran, waited = f.read().split()[:2]
+                out[task] = (int(ran), int(waited))
+            except OSError:
+                pass  # a thread that ended meanwhile
+        return out
+
+    me = str(threading.get_native_id())
+    if not os.path.exists(f"/proc/self/task/{me}/schedstat"):
+        return []
+    per_call = []
+    for _ in range(runs):
+        before = times()
+        call()
+        after = times()
+        used = sorted(
+            (
+                (ran - before.get(t, (0, 0))[0], waited - before.get(t, (0, 0))[1])
+                for t, (ran, waited) in after.items()
+                if t != me
+            ),
+            reverse=True,
+        )[:2]
+        per_call.append(used + [(0, 0)] * (2 - len(used)))
+    return [
+        (
+            statistics.median(c[i][0] for c in per_call) / 1e6,
+            statistics.median(c[i][1] for c in per_call) / 1e6,
+        )
+        for i in (0, 1)
+    ]
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=5, help="runs of each way (median)")
@@ -186,6 +247,7 @@ def main(argv: list[str] | None = None) -> int:
     import pooltool as pt
     from machine import describe
 
+    import ballcollide as bc
     import ballcollide.pooltool as bcp
 
     named = shots(args.scale)
@@ -223,7 +285,11 @@ def main(argv: list[str] | None = None) -> int:
         "engine 1": lambda ss: _core.simulate_shots(**inputs, num_threads=1),
         "engine 2": lambda ss: _core.simulate_shots(**inputs, num_threads=2),
     }
+    pairs = _pairs(1_000_000)
+    ways["pairs 1"] = lambda ss: bc.collision_times(*pairs, num_threads=1)
+    ways["pairs 2"] = lambda ss: bc.collision_times(*pairs, num_threads=2)
     median = _rounds(ways, systems, args.runs, args.stock_runs)
+    pairs_1, pairs_2 = (median.pop(k) * len(systems) for k in ("pairs 1", "pairs 2"))
     stock, stock_drop = median.pop("stock"), median.pop("stock drop")
     events = sum(len(s.events) for s in (bcp.simulate(x) for x in systems))
     print(f"{events} events ({events / len(systems):.0f} a shot)")
@@ -234,7 +300,14 @@ def main(argv: list[str] | None = None) -> int:
         against = stock_drop if name.endswith("drop") else stock
         print(f"{name:<10} {t * 1e6:>9.1f} us {against / t:>9.1f}x")
     print(f"2 threads over 1: {median['many 1'] / median['many 2']:.2f}x (simulate_many), ", end="")
-    print(f"{median['engine 1'] / median['engine 2']:.2f}x (the engine alone)")
+    print(f"{median['engine 1'] / median['engine 2']:.2f}x (the engine alone), ", end="")
+    print(f"{pairs_1 / pairs_2:.2f}x (collision_times: ", end="")
+    print(f"{pairs_1 * 1e3:.1f} / {pairs_2 * 1e3:.1f} ms)")
+    shares = _thread_shares(lambda: _core.simulate_shots(**inputs, num_threads=2), args.runs)
+    if shares:
+        (ran_1, waited_1), (ran_2, waited_2) = shares
+        print(f"engine 2, its threads per call (median): on a CPU {ran_1:.1f} / {ran_2:.1f} ms;")
+        print(f"  waiting for one {waited_1:.1f} / {waited_2:.1f} ms")
     # A shared machine's other work moves every figure (and takes the second core).
     print(f"load average (1, 5, 15 min) at the end: {os.getloadavg()}, {os.cpu_count()} CPUs")
     return 0

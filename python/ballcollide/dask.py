@@ -331,11 +331,6 @@ def _rechunked(a: da.Array | np.ndarray, chunks: tuple[tuple[int, ...], ...]) ->
     return whole
 
 
-#: The results of ``_core.simulate_shots`` that are offsets into the others (one per shot, and
-#: one past the end): shifted when chunks are joined; every other array is concatenated.
-_OFFSETS = ("event_start", "history_start")
-
-
 def simulate_many(
     shots: Sequence[Any],
     *,
@@ -380,7 +375,7 @@ def simulate_many(
     if not parts:
         return bcp.simulate_many(shots, num_threads, contact_rule=contact_rule, history=history)
     blocks = dask.compute(*parts)  # type: ignore[attr-defined,no-untyped-call]
-    return bcp.ShotResults(shots, _joined(blocks), contact_rule)
+    return bcp.ShotResults(shots, bcp._joined(blocks), contact_rule)
 
 
 def _shot_block(
@@ -421,20 +416,3 @@ _SHOT = re.compile(r"shots\[(\d+)\]")
 def _renumbered(local: re.Match[str], start: int) -> str:
     """``shots[k]`` of a chunk starting at ``start`` as ``shots[start + k]``."""
     return f"shots[{start + int(local.group(1))}]"
-
-
-def _joined(blocks: Sequence[dict[str, Any]]) -> dict[str, Any]:
-    """Chunks' results as one call's: arrays concatenated, offsets shifted."""
-    joined: dict[str, Any] = {}
-    for key, first in blocks[0].items():
-        if key in _OFFSETS:
-            parts, end = [first[:1]], 0
-            for block in blocks:
-                parts.append(block[key][1:] + end)
-                end += int(block[key][-1])
-            joined[key] = np.concatenate(parts)
-        elif isinstance(first, np.ndarray):
-            joined[key] = np.concatenate([block[key] for block in blocks])
-        else:  # type_names: the same in every chunk
-            joined[key] = first
-    return joined

@@ -45,9 +45,12 @@ True
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import gc
 import math
+import os
+import threading
 import weakref
 from collections.abc import Sequence
 from typing import Any, Callable
@@ -642,10 +645,12 @@ def simulate_many(
     ``num_threads``), returned as arrays (:class:`ShotResults`), which cost a small part of
     building pooltool objects; :meth:`ShotResults.to_system` builds shot ``k``'s ``System``.
     ``history=True`` also computes every ball's state at every event (so that ``to_system``
-    needs no second run). Raises :class:`UnsupportedError` as :func:`simulate` does for
-    pooltool's default engine, ``ballcollide.InputError`` naming the shot
-    (``shots[3].position``) for one the engine rejects, and ``ValueError`` for a cue whose
-    ``cue_ball_id`` is not among its shot's balls.
+    needs no second run). From 16 shots on more than one thread, a thread of its own reads
+    the later shots' pooltool objects (which holds the GIL) while the first quarter plays.
+    Raises :class:`UnsupportedError` as :func:`simulate` does for pooltool's default engine,
+    ``ballcollide.InputError`` naming the shot (``shots[3].position``) for one the engine
+    rejects, and ``ValueError`` for a cue whose ``cue_ball_id`` is not among its shot's
+    balls.
 
     >>> import pooltool as pt
     >>> import ballcollide.pooltool as bcp
@@ -659,13 +664,86 @@ def simulate_many(
     from . import _core
 
     _check_supported(None, False, None, None, None, 0, contact_rule)
-    arrays = _core.simulate_shots(
-        **_inputs(shots),
-        contact_rule=contact_rule,
-        history=history,
-        num_threads=num_threads,
-    )
-    return ShotResults(shots, arrays, contact_rule)
+    shots = list(shots)
+
+    def played(inputs: dict[str, Any]) -> dict[str, Any]:
+        return _core.simulate_shots(
+            **inputs,
+            contact_rule=contact_rule,
+            history=history,
+            num_threads=num_threads,
+        )
+
+    if not _overlapping(len(shots), num_threads):
+        return ShotResults(shots, played(_inputs(shots)), contact_rule)
+    # Reading the pooltool objects holds the GIL, on one thread: some 15 % of the whole on
+    # one thread, which no thread count would share. So the first quarter of the shots is
+    # read, and played while a thread of its own reads the rest (the engine does not need
+    # the GIL), then the rest is played.
+    split = len(shots) // 4
+    rest: dict[str, Any] = {}
+
+    def read_rest() -> None:
+        # Whatever it raises, the single call below raises again, in its place.
+        with contextlib.suppress(Exception):
+            rest["inputs"] = _inputs(shots[split:])
+
+    first_inputs = _inputs(shots[:split])
+    reader = threading.Thread(target=read_rest, name="ballcollide-read", daemon=True)
+    reader.start()
+    blocks = None
+    try:
+        first = played(first_inputs)
+        reader.join()
+        if "inputs" in rest:
+            blocks = [first, played(rest["inputs"])]
+    except (InputError, ValueError):
+        reader.join()
+    if blocks is None:
+        # The error a single call gives (the first bad shot's, named by its place in the
+        # whole, as are its arrays'): the shots played again as one call, which raises it.
+        return ShotResults(shots, played(_inputs(shots)), contact_rule)
+    return ShotResults(shots, _joined(blocks), contact_rule)
+
+
+#: From how many shots :func:`simulate_many` reads the later ones while it plays the first:
+#: below, the reading (~30 µs a shot) costs less than starting a thread for it.
+_OVERLAP_FROM = 16
+
+
+def _overlapping(shots: int, num_threads: Any) -> bool:
+    """Whether :func:`simulate_many` reads the later shots while it plays the first: from
+    :data:`_OVERLAP_FROM` shots, on more than one thread (``num_threads`` an int ≥ 2, or
+    ``None`` on a machine of more than one core). One thread stays one thread; a
+    ``num_threads`` of another kind is left to the call to check."""
+    if shots < _OVERLAP_FROM:
+        return False
+    if num_threads is None:
+        return (os.cpu_count() or 1) > 1
+    return isinstance(num_threads, int) and not isinstance(num_threads, bool) and num_threads > 1
+
+
+#: The results of ``_core.simulate_shots`` that are offsets into the others (one per shot, and
+#: one past the end): shifted when parts are joined; every other array is concatenated.
+_OFFSETS = ("event_start", "history_start")
+
+
+def _joined(blocks: Sequence[dict[str, Any]]) -> dict[str, Any]:
+    """Consecutive parts' results (``_core.simulate_shots``' dicts) as one call's: arrays
+    concatenated, offsets shifted."""
+    joined: dict[str, Any] = {}
+    for key, first in blocks[0].items():
+        if key in _OFFSETS:
+            parts, end = [first[:1]], 0
+            for block in blocks:
+                parts.append(block[key][1:] + end)
+                end += int(block[key][-1])
+            joined[key] = np.concatenate(parts)
+        elif isinstance(first, np.ndarray):
+            joined[key] = np.concatenate([block[key] for block in blocks])
+        else:  # type_names: the same in every part
+            joined[key] = first
+    return joined
 
 
 def simulate(

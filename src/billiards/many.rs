@@ -5,6 +5,8 @@ use super::shot::simulate_struck;
 use super::{BallParams, BallState, BilliardTable, Cue, Shot, ShotOptions, evolve};
 use crate::InputError;
 use crate::batch::{Threads, run_chunks_of};
+use crate::interrupt::Interrupt;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// One shot of [`simulate_shots`]: its table, its balls (one [`BallParams`] each) and the
 /// cue's strike at time 0, if any (the ball's index in `balls`, and the stroke).
@@ -22,12 +24,16 @@ pub struct ShotSetup<'a> {
 
 /// Simulates each shot of `shots` as [`simulate_shot`](super::simulate_shot) does, with
 /// `options`' models, `max_events` and contact rule (its `strike` is not read: each shot has
-/// its own), on up to `threads` threads, one shot per task. Each shot's result is the one
+/// its own), on up to `threads` threads. Each shot's result is the one
 /// [`simulate_shot`](super::simulate_shot) gives alone, bit for bit, whatever the number of
 /// threads.
 ///
+/// The threads take the shots one at a time, those with the most balls first (see
+/// [`simulate_shots_then`]).
+///
 /// Inside [`interruptible`](crate::interrupt::interruptible), the flag is looked at before
-/// each shot (and by each shot's calendar as it is built).
+/// each shot (and by each shot's calendar as it is built); inside
+/// [`counted`](crate::interrupt::counted), each shot is counted as it ends.
 ///
 /// Returns each shot's own result, in order: a shot that fails (with the error
 /// [`simulate_shot`](super::simulate_shot) gives it) does not stop the others.
@@ -57,20 +63,74 @@ pub fn simulate_shots(
     options: &ShotOptions,
     threads: Threads,
 ) -> Result<Vec<Result<Shot, InputError>>, InputError> {
-    let mut results: Vec<Option<Result<Shot, InputError>>> = shots.iter().map(|_| None).collect();
-    run_chunks_of(1, &mut results, threads, <[_]>::len, |offset, chunk| {
-        for (slot, s) in chunk.iter_mut().zip(&shots[offset..]) {
-            *slot = Some(simulate_struck(
-                s.table,
-                s.balls,
-                s.params,
-                s.strike.as_ref(),
-                options,
-            ));
-        }
-        Ok(())
-    })?;
-    // Every slot is filled once no chunk failed.
+    simulate_shots_then(shots, options, threads, |_, _, shot| shot)
+}
+
+/// [`simulate_shots`], each shot's [`Shot`] then handed to `then` (with its index in `shots`
+/// and its setup) on the thread that simulated it: what a caller makes of each shot (its
+/// [`shot_history`], its rows of a result array) is shared out over the threads with the
+/// shots.
+///
+/// The threads take the shots one at a time from a shared counter until none is left, each
+/// result kept at its shot's index (so that the output does not depend on which thread took
+/// which shot). Shots differ in cost by tens of times (a break against a cut shot), and
+/// costly ones often sit together in the list (a run of breaks): chunks fixed in advance, or
+/// a splitting that hands a thread a quarter of the list at once, leave one thread with
+/// them while the other idles, and a thread that starts late (on a busy machine) finds no
+/// work left to share. They are taken in order of their balls, most first (a shot's events
+/// grow with its balls), so that the last ones handed out are short and the threads end
+/// together.
+///
+/// # Errors
+/// As [`simulate_shots`].
+pub fn simulate_shots_then<T: Send>(
+    shots: &[ShotSetup<'_>],
+    options: &ShotOptions,
+    threads: Threads,
+    then: impl Fn(usize, &ShotSetup<'_>, Shot) -> T + Sync,
+) -> Result<Vec<Result<T, InputError>>, InputError> {
+    let mut order: Vec<usize> = (0..shots.len()).collect();
+    // Stable: shots of as many balls keep their order.
+    order.sort_by_key(|&k| std::cmp::Reverse(shots[k].balls.len()));
+    let next = AtomicUsize::new(0);
+    // The caller's flag and counter, for the shots' threads: each shot is counted as it
+    // ends (the chunks below are the threads, and count nothing themselves).
+    let interrupt = Interrupt::current();
+    let workers = match threads {
+        Threads::All => rayon::current_num_threads(),
+        Threads::AtMost(n) => n.get(),
+    }
+    .clamp(1, shots.len().max(1));
+    let mut taken: Vec<Vec<(usize, Result<T, InputError>)>> =
+        (0..workers).map(|_| Vec::new()).collect();
+    run_chunks_of(
+        1,
+        &mut taken,
+        threads,
+        |_| 0,
+        |_, mine| {
+            for mine in mine {
+                loop {
+                    interrupt.check()?;
+                    let Some(&k) = order.get(next.fetch_add(1, Ordering::Relaxed)) else {
+                        break;
+                    };
+                    let s = &shots[k];
+                    let result =
+                        simulate_struck(s.table, s.balls, s.params, s.strike.as_ref(), options)
+                            .map(|shot| then(k, s, shot));
+                    mine.push((k, result));
+                    interrupt.done(1);
+                }
+            }
+            Ok(())
+        },
+    )?;
+    let mut results: Vec<Option<Result<T, InputError>>> = shots.iter().map(|_| None).collect();
+    for (k, result) in taken.into_iter().flatten() {
+        results[k] = Some(result);
+    }
+    // Every shot was taken once no thread was interrupted.
     Ok(results
         .into_iter()
         .map(|r| r.unwrap_or_else(|| Err(crate::interrupt::interrupted())))

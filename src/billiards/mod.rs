@@ -39,7 +39,7 @@
 //! | `ball_pocket.rs` | [`Pocket`], [`BallPocketResolver`], the trait of ball–pocket models, and [`CanonicalBallPocket`], pooltool's (the ball put still at the pocket's bottom) |
 //! | `stick_ball.rs` | [`Cue`], [`CueSpecs`] (a stroke and the cue) and [`StickBallResolver`], the trait of stick–ball models |
 //! | `instantaneous_point.rs` | [`InstantaneousPoint`], pooltool's stick–ball model, and its [`squirt_angle`] |
-//! | `many.rs` | [`simulate_shots`]: many shots over threads ([`ShotSetup`]); [`shot_history`]: every ball's state at every event, as pooltool's histories ([`ShotHistory`]) |
+//! | `many.rs` | [`simulate_shots`]: many shots over threads ([`ShotSetup`]), taken one at a time, most balls first ([`simulate_shots_then`]: and what the caller makes of each, on its thread); [`shot_history`]: every ball's state at every event, as pooltool's histories ([`ShotHistory`]) |
 //! | `ball_path.rs` | [`ball_path`], [`BallPath`]: the motion until the ball stops as constant-acceleration segments, with the state at each segment's start |
 //! | `table.rs` | [`BilliardTable`]: straight and rounded cushions and pockets, as the calendar's table; [`side_of_direction`] (pooltool's cushion `direction`) |
 //! | `shot.rs` | [`simulate_shot`]: pooltool's event loop on the calendar, from the cue's strike until every ball is at rest or pocketed ([`Shot`], [`ShotEvent`], [`ShotEventKind`], [`ShotOptions`], [`ShotResolvers`]) |
@@ -99,7 +99,7 @@ pub use evolve_slide::evolve_slide;
 pub use evolve_spin::evolve_spin;
 pub use frictional_inelastic::{AlciatoreFriction, FrictionalInelastic};
 pub use instantaneous_point::{InstantaneousPoint, squirt_angle};
-pub use many::{ShotHistory, ShotSetup, shot_history, simulate_shots};
+pub use many::{ShotHistory, ShotSetup, shot_history, simulate_shots, simulate_shots_then};
 pub use params::BallParams;
 pub use shot::{
     ContactRule, Shot, ShotEvent, ShotEventKind, ShotOptions, ShotResolvers, simulate_shot,

@@ -13,7 +13,7 @@ use super::read::{Floats, count, flag, shape_text, shaped, threads};
 use crate::billiards::{
     BallParams, BallState, BilliardTable, CircularCushion, ContactRule, Cue, CueSpecs,
     LinearCushion, MotionState, Pocket, Shot, ShotEventKind, ShotOptions, ShotSetup, shot_history,
-    side_of_direction, simulate_shots as core_simulate_shots,
+    side_of_direction, simulate_shots_then,
 };
 
 /// Shots up to this many run on the calling thread holding the GIL (one shot is tens of µs
@@ -274,23 +274,19 @@ pub(super) fn simulate_shots<'py>(
         Kernel::Watched
     };
     let results = run(py, how, || {
-        let results = core_simulate_shots(&setups, &options, threads)?;
-        // The histories too, off the GIL.
-        Ok(results
-            .into_iter()
-            .zip(&setups)
-            .map(|(r, setup)| {
-                r.map(|shot| {
-                    let h = history.then(|| shot_history(setup.balls, setup.params, &shot));
-                    (shot, h)
-                })
-            })
-            .collect::<Vec<_>>())
+        // Each shot's rows of the results (and its history) built on its thread, off the
+        // GIL: what is left for the calling thread is to join them.
+        simulate_shots_then(&setups, &options, threads, |k, setup, shot| {
+            let h = history.then(|| shot_history(setup.balls, setup.params, &shot));
+            let first = usize::try_from(ball_start[k]).unwrap_or(0);
+            let heights = &heights[first..first + setup.balls.len()];
+            ShotRows::of(setup, heights, &shot, h.as_ref())
+        })
     })?;
     let mut shots = Vec::with_capacity(n_shots);
     for (k, r) in results.into_iter().enumerate() {
         match r {
-            Ok(shot) => shots.push(shot),
+            Ok(rows) => shots.push(rows),
             Err(e) => {
                 let argument = format!("shots[{k}].{}", e.argument());
                 return Err(located_error(
@@ -303,47 +299,66 @@ pub(super) fn simulate_shots<'py>(
             }
         }
     }
-    arrays(py, &setups, &heights, &ball_start, &shots)
+    // No shot: no history arrays either (as no shot had one).
+    arrays(py, &shots, history && !shots.is_empty())
 }
 
-/// The result dictionary of [`simulate_shots`].
-fn arrays<'py>(
-    py: Python<'py>,
-    setups: &[ShotSetup<'_>],
-    heights: &[f64],
-    ball_start: &[i64],
-    shots: &[(Shot, Option<crate::billiards::ShotHistory>)],
-) -> PyResult<Bound<'py, PyDict>> {
-    let n_events: usize = shots.iter().map(|(s, _)| s.events.len()).sum();
-    let mut event_start = Vec::with_capacity(shots.len() + 1);
-    let mut time = Vec::with_capacity(n_events);
-    let mut types = Vec::with_capacity(n_events);
-    let mut ball = Vec::with_capacity(2 * n_events);
-    let mut object = Vec::with_capacity(n_events);
-    let mut rvw = Vec::with_capacity(18 * n_events);
-    let mut s = Vec::with_capacity(2 * n_events);
-    let mut before_rvw = Vec::new();
-    let mut before_s = Vec::new();
-    let mut final_rvw = Vec::with_capacity(9 * heights.len());
-    let mut final_s = Vec::with_capacity(heights.len());
-    let mut history_start = vec![0i64];
-    let mut history_rvw = Vec::new();
-    let mut history_s = Vec::new();
-    let mut end = Vec::with_capacity(shots.len());
-    let mut stopped = Vec::with_capacity(shots.len());
-    let with_history = shots.iter().any(|(_, h)| h.is_some());
-    event_start.push(0i64);
-    for (k, ((shot, h), setup)) in shots.iter().zip(setups).enumerate() {
-        let first = usize::try_from(ball_start[k]).unwrap_or(0);
-        let table = setup.table;
+/// One shot's rows of [`simulate_shots`]' result arrays (the names of its dictionary).
+struct ShotRows {
+    time: Vec<f64>,
+    types: Vec<i64>,
+    ball: Vec<i64>,
+    object: Vec<i64>,
+    rvw: Vec<f64>,
+    s: Vec<i64>,
+    before_rvw: Vec<f64>,
+    before_s: Vec<i64>,
+    final_rvw: Vec<f64>,
+    final_s: Vec<i64>,
+    history_rvw: Vec<f64>,
+    history_s: Vec<i64>,
+    end: f64,
+    stopped: bool,
+}
+
+impl ShotRows {
+    /// The rows of `shot`, played from `setup` with its balls at `heights`, and of its
+    /// history `h` if given.
+    fn of(
+        setup: &ShotSetup<'_>,
+        heights: &[f64],
+        shot: &Shot,
+        h: Option<&crate::billiards::ShotHistory>,
+    ) -> Self {
+        let n_events = shot.events.len();
         let n = setup.balls.len();
+        // Room for the history's rows only when there is one.
+        let with_h = usize::from(h.is_some());
+        let mut out = Self {
+            time: Vec::with_capacity(n_events),
+            types: Vec::with_capacity(n_events),
+            ball: Vec::with_capacity(2 * n_events),
+            object: Vec::with_capacity(n_events),
+            rvw: Vec::with_capacity(18 * n_events),
+            s: Vec::with_capacity(2 * n_events),
+            before_rvw: Vec::with_capacity(with_h * 18 * n_events),
+            before_s: Vec::with_capacity(with_h * 2 * n_events),
+            final_rvw: Vec::with_capacity(9 * n),
+            final_s: Vec::with_capacity(n),
+            history_rvw: Vec::with_capacity(with_h * 9 * n * (n_events + 2)),
+            history_s: Vec::with_capacity(with_h * n * (n_events + 2)),
+            end: shot.end,
+            stopped: shot.stopped,
+        };
+        let table = setup.table;
         // Each ball's height: as given, until it drops into a pocket (its bottom).
-        let mut z: Vec<f64> = heights[first..first + n].to_vec();
+        let mut z: Vec<f64> = heights.to_vec();
         let mut before_at = 0;
         for (e, event) in shot.events.iter().enumerate() {
-            time.push(event.time);
-            types.push(event.kind.code());
-            object.push(event.kind.object().map_or(-1, super::index_i64));
+            out.time.push(event.time);
+            out.types.push(event.kind.code());
+            out.object
+                .push(event.kind.object().map_or(-1, super::index_i64));
             if let (ShotEventKind::Pocket(p), Some(&b)) = (event.kind, event.balls.first())
                 && let (Some(pocket), Some(zb)) = (table.pockets.get(p), z.get_mut(b))
             {
@@ -352,22 +367,27 @@ fn arrays<'py>(
             for slot in 0..2 {
                 match (event.balls.get(slot), event.states.get(slot)) {
                     (Some(&b), Some(state)) => {
-                        ball.push(super::index_i64(b));
-                        push_state(&mut rvw, &mut s, state, z[b]);
+                        out.ball.push(super::index_i64(b));
+                        push_state(&mut out.rvw, &mut out.s, state, z[b]);
                         if let Some(h) = h {
                             let zb = match event.kind {
-                                ShotEventKind::Pocket(_) => heights[first + b],
+                                ShotEventKind::Pocket(_) => heights[b],
                                 _ => z[b],
                             };
-                            push_state(&mut before_rvw, &mut before_s, &h.before[before_at], zb);
+                            push_state(
+                                &mut out.before_rvw,
+                                &mut out.before_s,
+                                &h.before[before_at],
+                                zb,
+                            );
                             before_at += 1;
                         }
                     }
                     _ => {
-                        ball.push(-1);
-                        push_missing(&mut rvw, &mut s);
+                        out.ball.push(-1);
+                        push_missing(&mut out.rvw, &mut out.s);
                         if h.is_some() {
-                            push_missing(&mut before_rvw, &mut before_s);
+                            push_missing(&mut out.before_rvw, &mut out.before_s);
                         }
                     }
                 }
@@ -377,65 +397,107 @@ fn arrays<'py>(
                 // Row 0 (before the strike) is written with the first event below.
                 if e == 0 {
                     for (b, state) in h.rows[..n].iter().enumerate() {
-                        push_state(&mut history_rvw, &mut history_s, state, heights[first + b]);
+                        push_state(&mut out.history_rvw, &mut out.history_s, state, heights[b]);
                     }
                 }
                 for (b, state) in row.iter().enumerate() {
-                    push_state(&mut history_rvw, &mut history_s, state, z[b]);
+                    push_state(&mut out.history_rvw, &mut out.history_s, state, z[b]);
                 }
             }
         }
         for (b, state) in shot.states.iter().enumerate() {
-            push_state(&mut final_rvw, &mut final_s, state, z[b]);
+            push_state(&mut out.final_rvw, &mut out.final_s, state, z[b]);
         }
         if let Some(h) = h {
             if shot.events.is_empty() {
                 for (b, state) in h.rows[..n].iter().enumerate() {
-                    push_state(&mut history_rvw, &mut history_s, state, heights[first + b]);
+                    push_state(&mut out.history_rvw, &mut out.history_s, state, heights[b]);
                 }
             }
             for (b, state) in shot.states.iter().enumerate() {
-                push_state(&mut history_rvw, &mut history_s, state, z[b]);
+                push_state(&mut out.history_rvw, &mut out.history_s, state, z[b]);
             }
-            history_start.push(super::index_i64(history_s.len()));
         }
-        event_start.push(super::index_i64(time.len()));
-        end.push(shot.end);
-        stopped.push(shot.stopped);
+        out
     }
+}
+
+/// The result dictionary of [`simulate_shots`]: the shots' rows joined.
+fn arrays<'py>(
+    py: Python<'py>,
+    shots: &[ShotRows],
+    with_history: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    /// The rows `part` of every shot, one after the other.
+    fn joined<T: Copy>(shots: &[ShotRows], part: impl Fn(&ShotRows) -> &[T]) -> Vec<T> {
+        let mut all = Vec::with_capacity(shots.iter().map(|r| part(r).len()).sum());
+        for rows in shots {
+            all.extend_from_slice(part(rows));
+        }
+        all
+    }
+    /// 0, then where each shot's rows `part` end.
+    fn starts(shots: &[ShotRows], part: impl Fn(&ShotRows) -> usize) -> Vec<i64> {
+        let mut at = 0;
+        let mut starts = Vec::with_capacity(shots.len() + 1);
+        starts.push(0);
+        for rows in shots {
+            at += part(rows);
+            starts.push(super::index_i64(at));
+        }
+        starts
+    }
+    let n_events: usize = shots.iter().map(|r| r.time.len()).sum();
     let dict = PyDict::new(py);
     let shaped = |v: Vec<f64>, shape: &[usize]| -> PyResult<Bound<'py, PyAny>> {
         PyArray1::from_vec(py, v).call_method1("reshape", (PyTuple::new(py, shape)?,))
     };
-    dict.set_item("event_start", PyArray1::from_vec(py, event_start))?;
-    dict.set_item("time", PyArray1::from_vec(py, time))?;
-    dict.set_item("type", PyArray1::from_vec(py, types))?;
+    let pairs = |v: Vec<i64>| PyArray1::from_vec(py, v).call_method1("reshape", ((n_events, 2),));
     dict.set_item(
-        "ball",
-        PyArray1::from_vec(py, ball).call_method1("reshape", ((n_events, 2),))?,
+        "event_start",
+        PyArray1::from_vec(py, starts(shots, |r| r.time.len())),
     )?;
-    dict.set_item("object", PyArray1::from_vec(py, object))?;
-    dict.set_item("rvw", shaped(rvw, &[n_events, 2, 3, 3])?)?;
+    dict.set_item("time", PyArray1::from_vec(py, joined(shots, |r| &r.time)))?;
+    dict.set_item("type", PyArray1::from_vec(py, joined(shots, |r| &r.types)))?;
+    dict.set_item("ball", pairs(joined(shots, |r| &r.ball))?)?;
     dict.set_item(
-        "s",
-        PyArray1::from_vec(py, s).call_method1("reshape", ((n_events, 2),))?,
+        "object",
+        PyArray1::from_vec(py, joined(shots, |r| &r.object)),
     )?;
+    dict.set_item(
+        "rvw",
+        shaped(joined(shots, |r| &r.rvw), &[n_events, 2, 3, 3])?,
+    )?;
+    dict.set_item("s", pairs(joined(shots, |r| &r.s))?)?;
+    let final_s = joined(shots, |r| &r.final_s);
     let n_balls = final_s.len();
-    dict.set_item("final_rvw", shaped(final_rvw, &[n_balls, 3, 3])?)?;
+    dict.set_item(
+        "final_rvw",
+        shaped(joined(shots, |r| &r.final_rvw), &[n_balls, 3, 3])?,
+    )?;
     dict.set_item("final_s", PyArray1::from_vec(py, final_s))?;
+    let end: Vec<f64> = shots.iter().map(|r| r.end).collect();
+    let stopped: Vec<bool> = shots.iter().map(|r| r.stopped).collect();
     dict.set_item("end", PyArray1::from_vec(py, end))?;
     dict.set_item("stopped", PyArray1::from_vec(py, stopped))?;
     dict.set_item("type_names", PyTuple::new(py, ShotEventKind::NAMES)?)?;
     if with_history {
+        let history_s = joined(shots, |r| &r.history_s);
         let rows = history_s.len();
-        dict.set_item("history_start", PyArray1::from_vec(py, history_start))?;
-        dict.set_item("history_rvw", shaped(history_rvw, &[rows, 3, 3])?)?;
-        dict.set_item("history_s", PyArray1::from_vec(py, history_s))?;
-        dict.set_item("before_rvw", shaped(before_rvw, &[n_events, 2, 3, 3])?)?;
         dict.set_item(
-            "before_s",
-            PyArray1::from_vec(py, before_s).call_method1("reshape", ((n_events, 2),))?,
+            "history_start",
+            PyArray1::from_vec(py, starts(shots, |r| r.history_s.len())),
         )?;
+        dict.set_item(
+            "history_rvw",
+            shaped(joined(shots, |r| &r.history_rvw), &[rows, 3, 3])?,
+        )?;
+        dict.set_item("history_s", PyArray1::from_vec(py, history_s))?;
+        dict.set_item(
+            "before_rvw",
+            shaped(joined(shots, |r| &r.before_rvw), &[n_events, 2, 3, 3])?,
+        )?;
+        dict.set_item("before_s", pairs(joined(shots, |r| &r.before_s))?)?;
     }
     Ok(dict)
 }

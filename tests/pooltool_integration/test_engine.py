@@ -267,6 +267,35 @@ def test_simulate_many_is_simulate_on_any_threads() -> None:
             assert [e.time for e in built.events] == [e.time for e in alone.events]
 
 
+def test_simulate_many_reading_while_it_plays_fails_as_one_call() -> None:
+    # From 16 shots on 2 threads the later shots are read while the first quarter plays;
+    # a bad shot among the later ones is named as one call names it.
+    from ballcollide import _core
+
+    systems = [s for _, s in named_shots()[::6]]
+    assert len(systems) >= 16 and bcp._overlapping(len(systems), 2)
+    assert not bcp._overlapping(len(systems), 1) and not bcp._overlapping(15, 2)
+    k = len(systems) - 3
+    bad = systems[k].copy()
+    bad.balls[next(iter(bad.balls))].state.rvw[0, 0] = np.nan
+    with pytest.raises(ballcollide.InputError) as raised:
+        bcp.simulate_many([*systems[:k], bad, *systems[k + 1 :]], num_threads=2)
+    assert raised.value.argument == f"shots[{k}].position" and raised.value.kind == "not_finite"
+    stray = systems[k].copy()
+    stray.cue.cue_ball_id = "nope"
+    with pytest.raises(ValueError, match=rf"^shots\[{k}\]: the cue's ball 'nope'"):
+        bcp.simulate_many([*systems[:k], stray, *systems[k + 1 :]], num_threads=2)
+    # An array's index, as one call over all the shots' arrays gives it.
+    odd = systems[k].copy()
+    odd.balls[next(iter(odd.balls))].state.s = 9
+    shots = [*systems[:k], odd, *systems[k + 1 :]]
+    with pytest.raises(ballcollide.InputError) as alone:
+        _core.simulate_shots(**bcp._inputs(shots), num_threads=2)
+    with pytest.raises(ballcollide.InputError) as many:
+        bcp.simulate_many(shots, num_threads=2)
+    assert str(many.value) == str(alone.value) and many.value.argument == "s"
+
+
 def test_the_corrected_contact_rule() -> None:
     # A straight stun shot: both balls end up rolling the same way, and pooltool's quartic
     # (leading coefficient 0) collides them again at once, over and over; the corrected rule

@@ -15,7 +15,7 @@ use crate::support::shot_cases;
 use ballcollide::batch::Threads;
 use ballcollide::billiards::{
     BallParams, BallState, ContactRule, Cue, MotionState, Shot, ShotEventKind, ShotOptions,
-    ShotSetup, evolve, shot_history, simulate_shot, simulate_shots,
+    ShotSetup, evolve, shot_history, simulate_shot, simulate_shots, simulate_shots_then,
 };
 use nalgebra::Vector2;
 use rng::Rng;
@@ -454,10 +454,22 @@ fn many_shots_are_each_shot_alone_on_any_threads() {
         })
         .collect();
     assert!(alone[5].is_err() && alone.iter().filter(|r| r.is_ok()).count() == 39);
-    let two = NonZeroUsize::new(2).map_or(Threads::All, Threads::AtMost);
-    for threads in [Threads::AtMost(NonZeroUsize::MIN), two, Threads::All] {
+    // More threads than shots of a kind, and than cores: the threads take the shots (breaks
+    // first) as they come free, and each result keeps its shot's place.
+    let at_most = |n| NonZeroUsize::new(n).map_or(Threads::All, Threads::AtMost);
+    for threads in [at_most(1), at_most(2), at_most(3), at_most(7), Threads::All] {
         let many = simulate_shots(&setups, &options, threads).expect("not interrupted");
         assert_eq!(many, alone, "{threads:?}");
+    }
+    // `then` is handed each shot's own index and setup.
+    let indexed = simulate_shots_then(&setups, &options, at_most(2), |k, setup, shot| {
+        (k, setup.balls.len(), shot.events.len())
+    })
+    .expect("not interrupted");
+    for (k, (r, shot)) in indexed.iter().zip(&alone).enumerate() {
+        if let (Ok(r), Ok(shot)) = (r, shot) {
+            assert_eq!(*r, (k, setups[k].balls.len(), shot.events.len()));
+        }
     }
     for (setup, shot) in setups.iter().zip(&alone) {
         let Ok(shot) = shot else { continue };
