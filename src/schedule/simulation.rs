@@ -234,8 +234,15 @@ pub fn simulate_observed(
         .saturating_mul(n)
         .saturating_add(MAX_EVENTS_AT_ONE_INSTANT.0);
     let mut at_this_instant = 0usize;
-    // Per ball: the time of its last event (see `restitution_at`).
-    let mut last_event = vec![f64::NEG_INFINITY; n];
+    let mut records: Vec<BallRecord> = balls
+        .iter()
+        .zip(radii)
+        .map(|(b, &radius)| BallRecord {
+            friction: b.friction(),
+            radius,
+            last_event: f64::NEG_INFINITY,
+        })
+        .collect();
     // The pairs that collided at the current instant (see `Run::collide`).
     let mut instant_pairs: Vec<[usize; 2]> = Vec::new();
     // The balls whose velocity an event changed, whose pairs of the instant are followed up
@@ -244,8 +251,6 @@ pub fn simulate_observed(
     let mut end = 0.0;
     let mut stopped = false;
     let run = Run {
-        balls,
-        radii,
         masses: &masses,
         restitution: e,
     };
@@ -261,15 +266,15 @@ pub fn simulate_observed(
         end = t;
         let (i, j, wall, object) = match event {
             Event::Collision(c) => {
-                run.collide(&mut calendar, &mut last_event, [c.i, c.j], t, false)?;
+                run.collide(&mut calendar, &mut records, [c.i, c.j], t, false)?;
                 instant_pairs.push([c.i, c.j]);
                 moved.extend([c.i, c.j]);
                 (c.i, Some(c.j), None, None)
             }
             Event::Object(o) => {
-                last_event[o.ball] = t;
+                records[o.ball].last_event = t;
                 let (p, v) = at(&calendar, o.ball, t);
-                let friction = balls[o.ball].friction();
+                let friction = records[o.ball].friction;
                 if o.kind == ObjectKind::Target {
                     calendar.update_balls(
                         &[o.ball],
@@ -294,7 +299,7 @@ pub fn simulate_observed(
             // (Not asked for.)
             Event::Transition(_) => continue,
             Event::Wall(w) => {
-                last_event[w.ball] = t;
+                records[w.ball].last_event = t;
                 let (p, mut v) = at(&calendar, w.ball, t);
                 v[w.axis] = match w.side {
                     Side::Low => v[w.axis].abs(),
@@ -303,7 +308,7 @@ pub fn simulate_observed(
                 let new = [Ball::from_checked(
                     p.into(),
                     v.into(),
-                    balls[w.ball].friction(),
+                    records[w.ball].friction,
                 )];
                 calendar.update_balls(&[w.ball], t, &new)?;
                 moved.push(w.ball);
@@ -337,7 +342,7 @@ pub fn simulate_observed(
                     break 'events;
                 }
                 let pair = [x.min(y), x.max(y)];
-                if run.collide(&mut calendar, &mut last_event, pair, t, true)? {
+                if run.collide(&mut calendar, &mut records, pair, t, true)? {
                     log(&mut events, pair[0], Some(pair[1]), None, None)?;
                     moved.extend(pair);
                 }
@@ -381,10 +386,17 @@ pub fn simulate_observed(
 
 /// What every collision of a run needs besides the calendar.
 struct Run<'a> {
-    balls: &'a [Ball],
-    radii: &'a [f64],
     masses: &'a PerBall<'a>,
     restitution: f64,
+}
+
+/// What the event loop reads and writes of a ball besides its path, in one record: in a
+/// large scene each ball an event touches is a cache miss, one here rather than one per array.
+struct BallRecord {
+    friction: f64,
+    radius: f64,
+    /// The time of its last event (see `restitution_at`).
+    last_event: f64,
 }
 
 impl Run<'_> {
@@ -400,13 +412,13 @@ impl Run<'_> {
     fn collide(
         &self,
         calendar: &mut CollisionSchedule<2>,
-        last_event: &mut [f64],
+        records: &mut [BallRecord],
         [i, j]: [usize; 2],
         t: f64,
         follow_up: bool,
     ) -> Result<bool, InputError> {
         let (a, b) = (at(calendar, i, t), at(calendar, j, t));
-        let frictions = [self.balls[i].friction(), self.balls[j].friction()];
+        let frictions = [records[i].friction, records[j].friction];
         let masses = [self.masses.get(i), self.masses.get(j)];
         // A pair moving as one body (the same friction, and velocities the same to within
         // rounding, `AS_ONE`) neither parts nor presses together but at rounding level. Its
@@ -427,8 +439,9 @@ impl Run<'_> {
                 (v, v)
             }
             (false, _) => {
-                let contact = self.radii[i] + self.radii[j];
-                let e = restitution_at(self.restitution, t, [last_event[i], last_event[j]]);
+                let contact = records[i].radius + records[j].radius;
+                let last = [records[i].last_event, records[j].last_event];
+                let e = restitution_at(self.restitution, t, last);
                 collide(a, b, masses, frictions, contact, e)
             }
         };
@@ -436,7 +449,7 @@ impl Run<'_> {
         if follow_up && !changed {
             return Ok(false);
         }
-        (last_event[i], last_event[j]) = (t, t);
+        (records[i].last_event, records[j].last_event) = (t, t);
         let new = [
             Ball::from_checked(a.0.into(), va.into(), frictions[0]),
             Ball::from_checked(b.0.into(), vb.into(), frictions[1]),
