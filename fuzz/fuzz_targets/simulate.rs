@@ -1,7 +1,7 @@
 //! `simulate` on 1 to 8 balls in a box, or a touching train of up to 16: valid starts run or
 //! are refused as impossible (and are so), runs end, events in order, no overlap beyond 1e-9
-//! at the end, at cut times, at events and halfway between them; a cut run logs the events
-//! before its cut (tests/support/simulation_invariants.rs).
+//! at the end, at cut times, at up to eight events' times and halfway to the next; a cut run
+//! logs the events before its cut (tests/support/simulation_invariants.rs).
 #![no_main]
 
 use arbitrary::Unstructured;

@@ -1,8 +1,9 @@
 //! `simulate` on a table (issue 36): 1 to 8 balls in a box with segments (capped by circles),
 //! circles, targets and a plane: runs end or are refused as impossible (and are so), events
-//! in order, no overlap with a ball, a wall or an object beyond 1e-9 of the radius at the end,
-//! at cut times, at events and halfway between them, captured balls never move again nor take part in a later event, the
-//! kinetic energy never grows (restitutions ≤ 1), a cut run logs the events before its cut
+//! in order, no overlap with a ball, a wall or an object beyond 1e-9 of the radius at the
+//! end, at cut times, at up to eight events' times and halfway to the next; captured balls
+//! never move again nor take part in a later event, the kinetic energy never grows
+//! (restitutions ≤ 1), a cut run logs the events before its cut
 //! (tests/support/simulation_invariants.rs).
 #![no_main]
 

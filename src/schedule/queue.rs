@@ -21,9 +21,10 @@ pub(crate) trait Key: Copy {
 #[derive(Clone, Debug)]
 pub(crate) struct Queue<K> {
     keys: Vec<K>,
-    /// Inner node `n`'s winner and its time (`1 ≤ n < leaves`; index 0 unused). Leaf
-    /// `leaves + i` is ball `i` (none past the last ball), its time its key's.
-    nodes: Vec<Node>,
+    /// Inner node `n`'s winner and its time (`1 ≤ n < leaves`; node 0 unused), two siblings
+    /// (`2k`, `2k + 1`) to an entry. Leaf `leaves + i` is ball `i` (none past the last
+    /// ball), its time its key's.
+    nodes: Vec<Siblings>,
     leaves: usize,
 }
 
@@ -31,13 +32,18 @@ pub(crate) struct Queue<K> {
 /// key's time (not read where the winner is none). The time is what a replay compares with,
 /// kept beside the winner rather than read through its key, a random read in a large tree
 /// (measured at N = 10⁶: the replay's reads of the siblings' keys were 55 % of its time);
-/// the two side by side, so that a level of a replay reads one cache line, two siblings
-/// sharing it.
+/// the two side by side.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Node {
     time: f64,
     winner: u32,
 }
+
+/// Two sibling nodes, aligned so that they never straddle two cache lines: a level of a
+/// replay reads one line.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(32))]
+struct Siblings([Node; 2]);
 
 const NONE: u32 = u32::MAX;
 
@@ -54,13 +60,13 @@ impl<K: Key> Queue<K> {
         };
         let mut queue = Self {
             keys,
-            nodes: vec![none; leaves],
+            nodes: vec![Siblings([none; 2]); leaves.div_ceil(2)],
             leaves,
         };
         for node in (1..leaves).rev() {
             let winner = queue.winner(2 * node, 2 * node + 1);
             if winner != NONE {
-                queue.nodes[node] = Node {
+                *queue.node_mut(node) = Node {
                     time: queue.keys[winner as usize].time(),
                     winner,
                 };
@@ -69,13 +75,22 @@ impl<K: Key> Queue<K> {
         queue
     }
 
+    /// Inner node `n`.
+    fn node(&self, n: usize) -> Node {
+        self.nodes[n / 2].0[n % 2]
+    }
+
+    fn node_mut(&mut self, n: usize) -> &mut Node {
+        &mut self.nodes[n / 2].0[n % 2]
+    }
+
     /// Node `n`'s winner (a leaf's: its ball, if there is one).
     fn winner_at(&self, n: usize) -> u32 {
         if n >= self.leaves {
             let i = n - self.leaves;
             if i < self.keys.len() { i as u32 } else { NONE }
         } else {
-            self.nodes[n].winner
+            self.node(n).winner
         }
     }
 
@@ -123,7 +138,7 @@ impl<K: Key> Queue<K> {
                 };
                 (sibling, time)
             } else {
-                let n = self.nodes[node ^ 1];
+                let n = self.node(node ^ 1);
                 (n.winner, n.time)
             };
             if sibling != NONE {
@@ -153,10 +168,10 @@ impl<K: Key> Queue<K> {
                 }
             }
             node /= 2;
-            if !small && up != i as u32 && self.nodes[node].winner == up {
+            if !small && up != i as u32 && self.node(node).winner == up {
                 return;
             }
-            self.nodes[node] = Node {
+            *self.node_mut(node) = Node {
                 time: up_time,
                 winner: up,
             };
@@ -166,7 +181,7 @@ impl<K: Key> Queue<K> {
     /// The heap memory, in bytes.
     pub(crate) fn heap_bytes(&self) -> usize {
         self.keys.capacity() * std::mem::size_of::<K>()
-            + self.nodes.capacity() * std::mem::size_of::<Node>()
+            + self.nodes.capacity() * std::mem::size_of::<Siblings>()
     }
 
     fn winner(&self, left: usize, right: usize) -> u32 {
@@ -220,7 +235,7 @@ mod tests {
     #[test]
     fn equal_keys_go_to_the_lowest_ball() {
         let mut rng = Rng(11);
-        for n in [2usize, 3, 4, 5, 7, 16, 33, 64, 65, 257] {
+        for n in [2usize, 3, 4, 5, 7, 16, 33, 64, 65, 257, SMALL_TREE + 1] {
             let mut keys = vec![Coarse(1.0); n];
             let mut queue = Queue::new(keys.clone());
             for _ in 0..300 {
@@ -255,7 +270,7 @@ mod tests {
                 let fresh = Queue::new(keys.clone());
                 let bits = |q: &Queue<(f64, u32)>| -> Vec<(u32, u64)> {
                     (1..q.leaves)
-                        .map(|n| q.nodes[n])
+                        .map(|n| q.node(n))
                         .map(|n| {
                             (
                                 n.winner,

@@ -237,9 +237,11 @@ pub fn simulate_observed(
     let mut records: Vec<BallRecord> = balls
         .iter()
         .zip(radii)
-        .map(|(b, &radius)| BallRecord {
+        .enumerate()
+        .map(|(i, (b, &radius))| BallRecord {
             friction: b.friction(),
             radius,
+            mass: masses.get(i),
             last_event: f64::NEG_INFINITY,
         })
         .collect();
@@ -250,10 +252,7 @@ pub fn simulate_observed(
     let mut moved: Vec<usize> = Vec::new();
     let mut end = 0.0;
     let mut stopped = false;
-    let run = Run {
-        masses: &masses,
-        restitution: e,
-    };
+    let run = Run { restitution: e };
     'events: while events.len() < max_events {
         let Some(event) = calendar.next_event() else {
             break;
@@ -384,22 +383,24 @@ pub fn simulate_observed(
     })
 }
 
-/// What every collision of a run needs besides the calendar.
-struct Run<'a> {
-    masses: &'a PerBall<'a>,
+/// What every collision of a run needs besides the calendar and the balls' records.
+struct Run {
     restitution: f64,
 }
 
-/// What the event loop reads and writes of a ball besides its path, in one record: in a
-/// large scene each ball an event touches is a cache miss, one here rather than one per array.
+/// What the event loop reads and writes of a ball besides its path (and, in a table scene,
+/// whether it is captured), in one record aligned to stay within one cache line: in a large
+/// scene each ball an event touches is a cache miss, one here rather than one per array.
+#[repr(C, align(32))]
 struct BallRecord {
     friction: f64,
     radius: f64,
+    mass: f64,
     /// The time of its last event (see `restitution_at`).
     last_event: f64,
 }
 
-impl Run<'_> {
+impl Run {
     /// The collision of balls `pair` at `t`: their new velocities (see [`collide`]) go into
     /// the calendar. A `follow_up` collision is one of a pair that collided earlier at this
     /// instant, after one of them has changed its velocity again (at a wall, or against a
@@ -419,7 +420,7 @@ impl Run<'_> {
     ) -> Result<bool, InputError> {
         let (a, b) = (at(calendar, i, t), at(calendar, j, t));
         let frictions = [records[i].friction, records[j].friction];
-        let masses = [self.masses.get(i), self.masses.get(j)];
+        let masses = [records[i].mass, records[j].mass];
         // A pair moving as one body (the same friction, and velocities the same to within
         // rounding, `AS_ONE`) neither parts nor presses together but at rounding level. Its
         // follow-up leaves it so; reported (it approached at rounding level), it takes one

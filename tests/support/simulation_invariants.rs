@@ -7,8 +7,9 @@
 //! - the run ends (within its `max_events`), its events in time order, within `[0, t_end]`;
 //! - no two balls overlap, and no ball overlaps a wall, beyond `1e-9` of their contact
 //!   distance (or radius), at the end nor at the end of the same run cut at earlier times
-//!   (a horizon only cuts: those are states of one trajectory);
-//! - a run cut at `t_end / 2` logs exactly the events of the whole run before `t_end / 2`.
+//!   (a horizon only cuts: those are states of one trajectory): fractions of `t_end`, some
+//!   events' times and halfway to the next event (`cut_times`);
+//! - a run cut at any of those times logs exactly the events of the whole run before it.
 //!
 //! On a table ([`TableCase`], [`table_simulation`]; the fuzz target `simulate_table`) also:
 //! no ball in play overlaps a circle, a plane or a two-sided segment's flat part beyond
@@ -165,22 +166,28 @@ fn run(
 
 /// The times to cut a run at (`events`: the whole run's log, to `t_end`), where no overlap
 /// may be deeper than [`OVERLAP`] and the log before the cut must be the whole run's: a half,
-/// a quarter and three quarters of `t_end`; then some events' times, where balls touch,
-/// and halfway from each to the next event, where a pair that passed into each other with
-/// no event would be found (up to eight events, evenly spread, as many as keep the cut
-/// runs' events within four times `most`, the events a run may take).
+/// a quarter and three quarters of `t_end`; then up to eight events' times (of the distinct
+/// ones, evenly spread), where balls touch, each with the time halfway to the next event,
+/// where a pair that passed into each other with no event would be found, as many as keep
+/// the events the cut runs replay (counted from the log) within four times `most`, the
+/// events a run may take.
 fn cut_times(events: &[LoggedEvent], t_end: f64, most: usize) -> Vec<f64> {
     let mut times = vec![t_end * 0.5, t_end * 0.25, t_end * 0.75];
     let mut distinct: Vec<f64> = events.iter().map(|e| e.time).collect();
     distinct.dedup();
-    // A cut at the k-th of E events runs about k of them: k picks cost about k·E.
-    let picks = (4 * most / events.len().max(1)).min(8).min(distinct.len());
+    let replayed = |t: f64| events.partition_point(|e| e.time <= t);
+    let mut cost: usize = times.iter().map(|&t| replayed(t)).sum();
+    let picks = distinct.len().min(8);
     for m in 0..picks {
         let at = m * distinct.len() / picks;
         let t = distinct[at];
         let next = distinct.get(at + 1).copied().unwrap_or(t_end);
-        times.push(t);
-        times.push(t + (next - t) / 2.0);
+        let pair = [t, t + (next - t) / 2.0];
+        cost += pair.iter().map(|&t| replayed(t)).sum::<usize>();
+        if cost > 4 * most {
+            break;
+        }
+        times.extend(pair);
     }
     times
 }
