@@ -9,6 +9,13 @@
 //! Paths go in rows as well (`paths.rs`: [`path_collision_times`], [`path_positions_at`]), and
 //! so do balls on paths against a table of static objects (`path_geometry.rs`:
 //! [`path_geometry_times`], whose answers go into [`ContactColumns`]).
+//!
+//! The lane stages, each the twin of a scalar stage of `crate::collision` (its map), written
+//! over the SIMD layer's `Simd`: `prefilter_lanes.rs` (the unit of length and the straight-run
+//! screen), `moving_entry_lanes.rs` (a friction pair's first window), `path_lanes.rs` (the
+//! whole-path screens), `window_lanes.rs` (the window screens), `first_window_lanes.rs` with
+//! `eighth_lanes.rs` (the eighth entry on a path pair's first window); pairs wait for a full
+//! block in a `block_queue.rs` queue. The map of the whole pipeline is in ARCHITECTURE.md.
 
 mod block_queue;
 mod eighth_lanes;

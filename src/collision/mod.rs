@@ -12,9 +12,9 @@
 //! | unit of length | `length_unit.rs` | divides every length of a pair by one power of two (exact), so that no answer depends on the unit | every friction-ball query, its batch lanes (`batch/prefilter_lanes.rs`); every path window (the path bounds work on the caller's numbers, with a margin for underflow) |
 //! | **friction balls** | | | |
 //! | prefilter | `prefilter.rs`; lane-wise, `batch/prefilter_lanes.rs` | the balls' straight runs to rest stay apart: never a contact | `collision_time`, scene, batch lanes (with the unit of length) |
-//! | crossing | `crossing.rs` | moving balls whose runs cross are never there at the same time | `collision_time`, scene, batch lanes |
+//! | crossing | `crossing.rs` | moving balls whose runs cross are never there at the same time | `collision_time`, scene, batch lanes (a loop over the lanes: `apart_by_window`) |
 //! | straight | `straight.rs` (`first_contact`, `contact`) | one ball at rest: the contact in closed form | `collision_time`, scene, batch lanes |
-//! | moving entry | `moving_entry.rs` | both moving, an isolated crossing in the first window: the contact by the eighth entry below, cut by the horizon | `collision_time`, scene, batch lanes |
+//! | moving entry | `moving_entry.rs`; lane-wise, `batch/moving_entry_lanes.rs` | both moving, an isolated crossing in the first window: the contact by the eighth entry below, cut by the horizon | `collision_time`, scene, batch lanes |
 //! | after stop | `after_stop.rs` | after the first stop, the mover against a ball at rest: closed form | `collision_time`, scene, batch lanes |
 //! | **paths** | | | |
 //! | path bounds | `path_bounds.rs`; lane-wise, `batch/path_lanes.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch; rows of 2 and 3 segments eight pairs at a time, lane-wise, at the SIMD levels that run the lane stages, the same proof to the bit); not for two paths of one segment each, whose one window goes straight to the window's stages |
