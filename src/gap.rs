@@ -230,9 +230,9 @@ impl<const D: usize> Gap<D> {
     }
 }
 
-/// `x² + y² − radius²` as [`Gap::value`] computes it (the batch's lanes form it with the same
-/// operations in `batch/eighth_lanes.rs`): the subtraction inside fused multiply-adds, the
-/// larger component last.
+/// `x² + y² − radius²` as [`Gap::value`] computes it (the batch's lanes use it too, so that
+/// both give the same bits): the subtraction inside fused multiply-adds, the larger component
+/// last. Without branches, so that it vectorises.
 #[inline(always)]
 pub(crate) fn gap_value(x: f64, y: f64, radius: f64) -> f64 {
     let x_larger = x.abs() >= y.abs();

@@ -110,7 +110,7 @@ impl<S: Simd> UnitLanes<S> {
 /// from the smallest to the largest in magnitude (in 2-D the larger last), each square added
 /// inside a fused multiply-add, the radius's square's rounding error taken out last.
 #[inline(always)]
-pub(super) fn gap_value_of<S: Simd, const D: usize>(s: S, d: &[S::V; D], radius: S::V) -> S::V {
+fn gap_value_of<S: Simd, const D: usize>(s: S, d: &[S::V; D], radius: S::V) -> S::V {
     let mut c = *d;
     // Insertion by magnitude, as compare-and-swaps in the order the insertion makes them (a
     // swap the insertion would not reach is one whose pair is already in order); a NaN is

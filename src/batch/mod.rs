@@ -25,7 +25,6 @@ mod path_geometry;
 mod path_lanes;
 mod paths;
 mod prefilter_lanes;
-mod straight_lanes;
 mod window_lanes;
 
 #[cfg(feature = "python")]
@@ -47,17 +46,18 @@ use crate::collision::crossing::{FirstWindow, apart_by_window};
 use crate::collision::first_contact_given;
 use crate::collision::length_unit::normalised;
 use crate::collision::moving_entry::WhileMoving;
-use crate::collision::prefilter::PairInput;
+use crate::collision::prefilter::{PairInput, valid};
+use crate::collision::straight;
 use crate::error::{
     InputError, InputErrorKind, check_contact_distance, check_friction, check_horizon, finite,
 };
+use crate::gap::gap_value;
 use crate::interrupt::{Interrupt, uncounted};
 use crate::motion::Ball;
 use crate::simd::{self, LANES, Mask, Simd};
 use block_queue::BlockQueue;
 use moving_entry_lanes::while_moving;
 use prefilter_lanes::{PairLanes, screen_runs};
-use straight_lanes::at_rest_answers;
 
 /// A scalar parameter of a batch: one value for every pair, or one per pair.
 ///
@@ -317,7 +317,7 @@ impl Held {
             let test = ready(&self.crossing);
             // Settling first keeps the open queue below one block before a test adds to it.
             if ready(&self.at_rest) {
-                self.settle_at_rest(s, pairs, offset, out)?;
+                self.settle_at_rest(pairs, offset, out)?;
             } else if self.open.len() >= LANES || (finish && !test && self.open.len() > 0) {
                 self.settle_first_window(s, pairs, offset, out)?;
             } else if test {
@@ -331,9 +331,8 @@ impl Held {
     /// Answers a block of pairs with one ball at rest: the closed form where it applies, the
     /// search's answer elsewhere.
     #[inline(always)]
-    fn settle_at_rest<S: Simd>(
+    fn settle_at_rest(
         &mut self,
-        s: S,
         pairs: &Pairs<'_>,
         offset: usize,
         out: &mut [f64],
@@ -341,7 +340,7 @@ impl Held {
         let (held, len) = self.at_rest.take();
         let index = held.map(|(i, _)| i);
         let lanes = lanes(pairs, &index, len);
-        let answers = at_rest_answers(s, &PairLanes::of_inputs(s, &lanes), first_lanes_mask(len));
+        let answers = at_rest_answers(|k| lanes[k], &first_lanes(len));
         for (&i, &answer) in index[..len].iter().zip(&answers) {
             out[i - offset] = if answer.is_nan() {
                 search(pairs, i, None)?
@@ -469,8 +468,9 @@ fn screen<S: Simd>(s: S, pairs: &Pairs<'_>, start: usize, len: usize) -> Screene
     // A block where every pair has one ball at rest (a cue ball against the others, say)
     // goes to the closed form alone, which settles misses as well as the screening does.
     if one_at_rest == Mask::MAX {
+        let inputs = lanes.inputs(s);
         return Screened {
-            answers: at_rest_answers(s, &lanes, first_lanes_mask(len)),
+            answers: at_rest_answers(|k| inputs[k], &first_lanes(len)),
             crossing: 0,
             at_rest: 0,
         };
@@ -489,6 +489,53 @@ fn screen<S: Simd>(s: S, pairs: &Pairs<'_>, start: usize, len: usize) -> Screene
 #[inline(always)]
 fn first_lanes_mask(len: usize) -> Mask {
     (((1u32 << len) - 1) & u32::from(Mask::MAX)) as Mask
+}
+
+/// The lanes `0..len` of a block.
+#[inline(always)]
+fn first_lanes(len: usize) -> [bool; LANES] {
+    let mut first = [false; LANES];
+    for (k, lane) in first.iter_mut().enumerate() {
+        *lane = k < len;
+    }
+    first
+}
+
+/// Whether a ball with this velocity is at rest.
+#[inline(always)]
+fn rests([vx, vy]: [f64; 2]) -> bool {
+    (vx == 0.0) & (vy == 0.0)
+}
+
+/// The closed form's answers for pairs with one ball at rest ([`straight::contact`]),
+/// lane-wise: for each lane `k` that is `open` and valid, where the closed form applies, its
+/// time (`∞` for none, or at or past the horizon); NaN elsewhere.
+///
+/// The closed form gets exactly the inputs that the scalar search would give it, so it returns
+/// the same bits.
+#[inline(always)]
+fn at_rest_answers(lane: impl Fn(usize) -> PairInput, open: &[bool; LANES]) -> [f64; LANES] {
+    let mut answers = [f64::NAN; LANES];
+    for (k, answer) in answers.iter_mut().enumerate() {
+        let pair = lane(k);
+        // The mover (A unless A rests) against the resting ball.
+        let ((p, v, mu), q) = if rests(pair.vel_a) {
+            ((pair.pos_b, pair.vel_b, pair.friction_b), pair.pos_a)
+        } else {
+            ((pair.pos_a, pair.vel_a, pair.friction_a), pair.pos_b)
+        };
+        let g0 = gap_value(
+            pair.pos_a[0] - pair.pos_b[0],
+            pair.pos_a[1] - pair.pos_b[1],
+            pair.radius,
+        );
+        let (applies, t) = straight::contact([p[0] - q[0], p[1] - q[1]], v, mu, pair.radius, g0);
+        let t = if t < pair.t_max { t } else { f64::INFINITY };
+        if open[k] & valid(&pair) & applies {
+            *answer = t;
+        }
+    }
+    answers
 }
 
 /// The centre of every ball at its time `t` (`pos`, `vel`, `friction` as in [`Pairs`]),
@@ -860,23 +907,6 @@ mod tests {
         assert!(hits > 1000, "{hits} hits: the set should exercise contacts");
     }
 
-    /// Whether a ball with this velocity is at rest.
-    fn rests([vx, vy]: [f64; 2]) -> bool {
-        (vx == 0.0) & (vy == 0.0)
-    }
-
-    /// The closed form's lanes on a block of pairs (the lanes of the mask).
-    struct AtRest<'a>(&'a [PairInput; LANES], Mask);
-
-    impl simd::Kernel for AtRest<'_> {
-        type Output = [f64; LANES];
-
-        #[inline(always)]
-        fn run<S: Simd>(self, s: S) -> [f64; LANES] {
-            at_rest_answers(s, &PairLanes::of_inputs(s, self.0), self.1)
-        }
-    }
-
     /// The screen's answers for every pair, block by block.
     struct ScreenAll<'a>(&'a Pairs<'a>);
 
@@ -914,7 +944,7 @@ mod tests {
             assert_eq!(bits(&portable), bits(&copy), "{level}");
             eprintln!("friction lanes at {level}: same bits as the portable copy");
         }
-        let mut apart = 0;
+        let (mut apart, mut closed) = (0, 0);
         let one = |i: usize| PairInput {
             pos_a: r.pos_a[i],
             vel_a: r.vel_a[i],
@@ -940,23 +970,17 @@ mod tests {
         let at_rest: Vec<usize> = (0..r.pos_a.len())
             .filter(|&i| rests(r.vel_a[i]) != rests(r.vel_b[i]))
             .collect();
-        // (Counted at each level: one that settled nothing would pass the comparisons.)
-        let levels = crate::simd::test_levels();
-        let mut closed_at = vec![0; levels.len()];
         for block in at_rest.chunks(LANES) {
-            let inputs: [PairInput; LANES] =
-                std::array::from_fn(|k| one(block[k.min(block.len() - 1)]));
-            for (&level, closed) in levels.iter().zip(&mut closed_at) {
-                let answers = simd::dispatch(level, AtRest(&inputs, first_lanes_mask(block.len())));
-                for (&i, &answer) in block.iter().zip(&answers) {
-                    if !answer.is_nan() {
-                        assert_eq!(answer.to_bits(), portable[i].to_bits(), "{level}: pair {i}");
-                        *closed += 1;
-                    }
+            let mut open = [false; LANES];
+            open[..block.len()].fill(true);
+            let answers = at_rest_answers(|k| one(block[k.min(block.len() - 1)]), &open);
+            for (&i, &answer) in block.iter().zip(&answers) {
+                if !answer.is_nan() {
+                    assert_eq!(answer.to_bits(), portable[i].to_bits(), "pair {i}");
+                    closed += 1;
                 }
             }
         }
-        let closed = closed_at.iter().copied().min().unwrap_or(0);
         // Both shortcuts are exercised (and the scalar path: see the test above).
         assert!(
             apart > 1000 && closed > 100,

@@ -10,7 +10,7 @@ use super::eighth_lanes::{
     GapLanes, UnitLanes, bigger, dot, eighth_entry, first_open_eighth, largest, long_window,
     normal_time_unit,
 };
-use super::prefilter_lanes::{PairLanes, valid};
+use super::prefilter_lanes::PairLanes;
 use crate::collision::LONGEST_WINDOW;
 use crate::collision::prefilter::LIMIT;
 use crate::simd::{LANES, Mask, Simd};
@@ -35,6 +35,12 @@ fn within<S: Simd>(s: S, x: S::V, lo: f64, hi: f64) -> Mask {
     s.ge(x, s.splat(lo)) & s.ge(s.splat(hi), x)
 }
 
+/// The lanes where `x` is finite (`|x| ≤ MAX`; NaN fails).
+#[inline(always)]
+fn finite<S: Simd>(s: S, x: S::V) -> Mask {
+    s.ge(s.splat(f64::MAX), s.abs(x))
+}
+
 /// The lanes where both coordinates are at most [`LIMIT`] in magnitude (`FirstWindow::of`'s
 /// `max(|x|, |y|) ≤ LIMIT`, which differs only where one is NaN, a pair `valid` refuses).
 #[inline(always)]
@@ -46,6 +52,32 @@ fn near<S: Simd>(s: S, [x, y]: [S::V; 2]) -> Mask {
 #[inline(always)]
 fn pull<S: Simd>(s: S, v: S::V, tau: S::V) -> S::V {
     s.div(s.mul(s.splat(-1.0), v), tau)
+}
+
+/// `prefilter::valid` in each lane.
+#[inline(always)]
+fn valid<S: Simd>(s: S, p: &PairLanes<S>) -> Mask {
+    let zero = s.zero();
+    let mut all = Mask::MAX;
+    for x in [
+        p.pos_a[0],
+        p.pos_a[1],
+        p.vel_a[0],
+        p.vel_a[1],
+        p.pos_b[0],
+        p.pos_b[1],
+        p.vel_b[0],
+        p.vel_b[1],
+        p.friction_a,
+        p.friction_b,
+        p.radius,
+    ] {
+        all &= finite(s, x);
+    }
+    all & s.ge(p.friction_a, zero)
+        & s.ge(p.friction_b, zero)
+        & s.gt(p.radius, zero)
+        & s.ge(p.t_max, zero)
 }
 
 impl<S: Simd> FirstWindowLanes<S> {

@@ -114,6 +114,29 @@ impl<S: Simd> PairLanes<S> {
     pub(super) fn at_rest(&self, s: S) -> (Mask, Mask) {
         (rests(s, self.vel_a), rests(s, self.vel_b))
     }
+
+    /// The pairs of the lanes, one by one (for the stages that are not lane-wise).
+    #[inline(always)]
+    pub(super) fn inputs(&self, s: S) -> [PairInput; LANES] {
+        let (pos_a, vel_a) = (stored(s, self.pos_a), stored(s, self.vel_a));
+        let (pos_b, vel_b) = (stored(s, self.pos_b), stored(s, self.vel_b));
+        let (friction_a, friction_b) = (s.store(self.friction_a), s.store(self.friction_b));
+        let (radius, t_max) = (s.store(self.radius), s.store(self.t_max));
+        let mut inputs = [PairInput::default(); LANES];
+        for (l, input) in inputs.iter_mut().enumerate() {
+            *input = PairInput {
+                pos_a: [pos_a[0][l], pos_a[1][l]],
+                vel_a: [vel_a[0][l], vel_a[1][l]],
+                friction_a: friction_a[l],
+                pos_b: [pos_b[0][l], pos_b[1][l]],
+                vel_b: [vel_b[0][l], vel_b[1][l]],
+                friction_b: friction_b[l],
+                radius: radius[l],
+                t_max: t_max[l],
+            };
+        }
+        inputs
+    }
 }
 
 /// The lanes where a ball with these velocities is at rest.
@@ -122,42 +145,16 @@ fn rests<S: Simd>(s: S, [x, y]: [S::V; 2]) -> Mask {
     s.eq(x, s.zero()) & s.eq(y, s.zero())
 }
 
+/// Both coordinates' lanes.
+#[inline(always)]
+fn stored<S: Simd>(s: S, [x, y]: [S::V; 2]) -> [[f64; LANES]; 2] {
+    [s.store(x), s.store(y)]
+}
+
 /// Both coordinates times `scale`.
 #[inline(always)]
 fn scaled<S: Simd>(s: S, [x, y]: [S::V; 2], scale: S::V) -> [S::V; 2] {
     [s.mul(x, scale), s.mul(y, scale)]
-}
-
-/// The lanes where `x` is finite (`|x| ≤ MAX`; NaN fails).
-#[inline(always)]
-fn finite<S: Simd>(s: S, x: S::V) -> Mask {
-    s.ge(s.splat(f64::MAX), s.abs(x))
-}
-
-/// `prefilter::valid` in each lane.
-#[inline(always)]
-pub(super) fn valid<S: Simd>(s: S, p: &PairLanes<S>) -> Mask {
-    let zero = s.zero();
-    let mut all = Mask::MAX;
-    for x in [
-        p.pos_a[0],
-        p.pos_a[1],
-        p.vel_a[0],
-        p.vel_a[1],
-        p.pos_b[0],
-        p.pos_b[1],
-        p.vel_b[0],
-        p.vel_b[1],
-        p.friction_a,
-        p.friction_b,
-        p.radius,
-    ] {
-        all &= finite(s, x);
-    }
-    all & s.ge(p.friction_a, zero)
-        & s.ge(p.friction_b, zero)
-        & s.gt(p.radius, zero)
-        & s.ge(p.t_max, zero)
 }
 
 /// `x·x + y·y`.
@@ -168,7 +165,7 @@ fn square<S: Simd>(s: S, [x, y]: [S::V; 2]) -> S::V {
 
 /// `lo ≤ x ≤ hi`, as two ordered compares (NaN fails both).
 #[inline(always)]
-pub(super) fn within<S: Simd>(s: S, x: S::V, lo: f64, hi: f64) -> Mask {
+fn within<S: Simd>(s: S, x: S::V, lo: f64, hi: f64) -> Mask {
     s.ge(x, s.splat(lo)) & s.ge(s.splat(hi), x)
 }
 
