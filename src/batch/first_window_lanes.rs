@@ -1,50 +1,178 @@
 //! The first windows of the pairs of paths that the lane-wise screens take and leave open,
-//! settled eight at a time on their first open eighth.
+//! settled eight at a time on their first open eighth, over [`Simd`].
 //!
 //! The pairs the screens ([`path_lanes`](super::path_lanes)) take whole and cannot prove
-//! apart are held back (a [`BlockQueue`](super::block_queue::BlockQueue)) until a block of them is full; each one's first
-//! window is then formed as the walk over windows would form it
-//! ([`PathFirstWindow`]), and all eight are settled at once, by the branch-free entry on
-//! the window's first open eighth ([`PathFirstWindow::eighth_contact`]), in one loop that the
-//! compiler runs in vectors. Most contacts of balls on a table come in the first window and
-//! are plain there; the pairs answered so skip the walk; a pair whose first window is found
-//! free of entries is walked from its second window on; the others are walked whole. The
-//! answers are the same bits as if the pairs had never been held.
+//! apart are held back (a [`BlockQueue`](super::block_queue::BlockQueue)) until a block of
+//! them is full; each one's first window is then formed as the walk over windows would form
+//! it ([`PathFirstWindow`]), and all eight are settled at once by the eighth entry on the
+//! window's first open eighth ([`window_eighth`](super::eighth_lanes::window_eighth), the lane
+//! twin of the walk's own). Most contacts of balls on a table come in the first window and are
+//! plain there; the pairs answered so skip the walk; a pair whose first window is found free
+//! of entries is walked from its second window on
+//! ([`Prior::FirstWindowScreenedOut`](crate::collision::path_contact::Prior)); the others are
+//! walked whole. The answers are the same bits as if the pairs had never been held.
 //!
 //! On the seed model written as paths (200,000 random table pairs), the lanes leave 9,720
 //! pairs: 3,801 are answered here, 2,003 are walked from their second window, and 3,916 walked
 //! whole.
 
+use super::eighth_lanes::{
+    GapLanes, UnitLanes, bounded_finite_length, largest as largest_of, window_eighth,
+};
 use super::paths::PathPairs;
 use crate::collision::length_unit::largest;
-use crate::collision::path_contact::PathFirstWindow;
 use crate::path::Segment;
-use crate::simd::LANES;
+use crate::simd::{LANES, Mask, Simd};
 
-/// What the first windows of pairs `offset + block[l]` settle
-/// ([`PathFirstWindow::eighth_contact`]): their answers where they find an entry, NaN for
-/// the others, and which are free of entries. The pairs must be ones the lanes took whole:
-/// valid, rows of `K` all used, starts increasing strictly, radius and horizon valid.
+/// A pair's first window as the walk of
+/// [`first_contact_bounded`](crate::collision::path_contact::first_contact_bounded) forms it:
+/// the segments of each path active at the pair's first time `start`, until the earlier of
+/// their ends `end` (finite); `largest`, the largest magnitude among both paths' values, from
+/// which with `radius` the pair's unit of length comes (as
+/// [`PathBounds`](crate::collision::path_bounds::PathBounds) notes it for paths whose segments
+/// are all non-empty); `t_max`, the horizon.
+#[derive(Clone, Copy, Debug)]
+struct PathFirstWindow<const D: usize> {
+    a: Segment<D>,
+    b: Segment<D>,
+    start: f64,
+    end: f64,
+    largest: f64,
+    radius: f64,
+    t_max: f64,
+}
+
+/// What the first windows of pairs `offset + block[l]` settle: their answers where the eighth
+/// entry finds an entry (its time, `∞` at or past the horizon), NaN for the others, and which
+/// are free of entries (no entry, the gap positive at the window's end). The pairs must be
+/// ones the lanes took whole: valid, rows of `K` all used, starts increasing strictly, radius
+/// and horizon valid.
+///
+/// Only windows with a relative acceleration are settled here, so that no closed form comes
+/// first in the walk; the screens the walk would run first are proofs that the balls are
+/// apart, which an entry rules out, and which would screen the window out just the same; and
+/// the balls are apart at the start: so these are the walk's findings, to the bit.
 #[inline(always)]
-pub(super) fn eighth_contacts<const D: usize, const K: usize>(
+pub(super) fn eighth_contacts<S: Simd, const D: usize, const K: usize>(
+    s: S,
     pairs: &PathPairs<'_, D>,
     offset: usize,
     block: &[usize; LANES],
-) -> ([f64; LANES], [bool; LANES]) {
-    // (A loop, not `array::map`: its closure would be compiled apart, without the caller's
-    // target features.)
-    let mut windows = [PathFirstWindow::<D>::at_rest(); LANES];
-    for (window, &k) in windows.iter_mut().zip(block) {
-        *window = first_window::<D, K>(pairs, offset + k);
+) -> ([f64; LANES], Mask) {
+    let mut windows = [[0.0; LANES]; 5];
+    let mut segments = [SegmentRows::<D>::default(); 2];
+    for (l, &k) in block.iter().enumerate() {
+        let w = first_window::<D, K>(pairs, offset + k);
+        for (field, x) in windows
+            .iter_mut()
+            .zip([w.start, w.end, w.largest, w.radius, w.t_max])
+        {
+            field[l] = x;
+        }
+        for (rows, segment) in segments.iter_mut().zip([&w.a, &w.b]) {
+            rows.start[l] = segment.start;
+            for i in 0..D {
+                rows.position[i][l] = segment.position[i];
+                rows.velocity[i][l] = segment.velocity[i];
+                rows.acceleration[i][l] = segment.acceleration[i];
+            }
+        }
     }
-    // A loop over the lanes with nothing but arithmetic and selects in it, into an array of
-    // each kind (pairs of them are not vectorised): the compiler runs it in vectors, one
-    // lane per pair.
-    let (mut contacts, mut free) = ([f64::NAN; LANES], [false; LANES]);
-    for ((contact, free), window) in contacts.iter_mut().zip(&mut free).zip(&windows) {
-        (*contact, *free) = window.eighth_contact();
+    let [start, end, most, radius, t_max] = [
+        s.load(windows[0]),
+        s.load(windows[1]),
+        s.load(windows[2]),
+        s.load(windows[3]),
+        s.load(windows[4]),
+    ];
+    let unit = UnitLanes::of(s, largest_of(s, &[most, radius, s.zero()]));
+    let radius = s.add(unit.apply(s, radius), unit.apply(s, s.zero()));
+    let a = SegmentLanes::scaled(s, &segments[0], unit);
+    let b = SegmentLanes::scaled(s, &segments[1], unit);
+    let mut gap = GapLanes {
+        offset: [s.zero(); D],
+        velocity: [s.zero(); D],
+        acceleration: [s.zero(); D],
+        radius,
+    };
+    // `window_gap`: each segment evaluated in time since its own start.
+    let (since_a, since_b) = (s.sub(start, a.start), s.sub(start, b.start));
+    let mut accelerating: Mask = 0;
+    for i in 0..D {
+        gap.offset[i] = s.sub(a.position_at(s, i, since_a), b.position_at(s, i, since_b));
+        gap.velocity[i] = s.sub(a.velocity_at(s, i, since_a), b.velocity_at(s, i, since_b));
+        gap.acceleration[i] = s.sub(a.acceleration[i], b.acceleration[i]);
+        accelerating |= s.ne(gap.acceleration[i], s.zero());
     }
-    (contacts, free)
+    let before = gap.apart_at_start(s);
+    // (A first window of paths whose segments all end but the last ends.)
+    let length = bounded_finite_length(s, s.sub(end, start));
+    let eighth = window_eighth(s, &gap, length, before);
+    let t = s.add(start, eighth.entry);
+    let contact = s.blend(s.lt(t, t_max), s.splat(f64::INFINITY), t);
+    let found = s.blend(eighth.found & accelerating, s.splat(f64::NAN), contact);
+    (s.store(found), eighth.screened_out & accelerating)
+}
+
+/// A segment of each lane's path, as rows of lanes.
+#[derive(Clone, Copy)]
+struct SegmentRows<const D: usize> {
+    start: [f64; LANES],
+    position: [[f64; LANES]; D],
+    velocity: [[f64; LANES]; D],
+    acceleration: [[f64; LANES]; D],
+}
+
+impl<const D: usize> Default for SegmentRows<D> {
+    fn default() -> Self {
+        Self {
+            start: [0.0; LANES],
+            position: [[0.0; LANES]; D],
+            velocity: [[0.0; LANES]; D],
+            acceleration: [[0.0; LANES]; D],
+        }
+    }
+}
+
+/// A segment of each lane's path, in the pair's unit of length.
+struct SegmentLanes<S: Simd, const D: usize> {
+    start: S::V,
+    position: [S::V; D],
+    velocity: [S::V; D],
+    acceleration: [S::V; D],
+}
+
+impl<S: Simd, const D: usize> SegmentLanes<S, D> {
+    /// The segment from its rows, in `unit`.
+    #[inline(always)]
+    fn scaled(s: S, rows: &SegmentRows<D>, unit: UnitLanes<S>) -> Self {
+        let mut segment = Self {
+            start: s.load(rows.start),
+            position: [s.zero(); D],
+            velocity: [s.zero(); D],
+            acceleration: [s.zero(); D],
+        };
+        for i in 0..D {
+            segment.position[i] = unit.apply(s, s.load(rows.position[i]));
+            segment.velocity[i] = unit.apply(s, s.load(rows.velocity[i]));
+            segment.acceleration[i] = unit.apply(s, s.load(rows.acceleration[i]));
+        }
+        segment
+    }
+
+    /// Component `i` of the position `since` its start (`Segment::position_at`).
+    #[inline(always)]
+    fn position_at(&self, s: S, i: usize, since: S::V) -> S::V {
+        let half = s.mul(s.splat(0.5), since);
+        let rate = s.add(self.velocity[i], s.mul(self.acceleration[i], half));
+        s.add(self.position[i], s.mul(rate, since))
+    }
+
+    /// Component `i` of the velocity `since` its start (`Segment::velocity_at`).
+    #[inline(always)]
+    fn velocity_at(&self, s: S, i: usize, since: S::V) -> S::V {
+        s.add(self.velocity[i], s.mul(self.acceleration[i], since))
+    }
 }
 
 /// Pair `i`'s first window, as its walk forms it: at the later of the two first starts, the
@@ -103,6 +231,7 @@ mod tests {
     use crate::collision::path_bounds::PathBounds;
     use crate::collision::path_contact::{Prior, first_contact_bounded};
     use crate::path::Path2;
+    use crate::simd::{Kernel, Level, dispatch, test_levels};
     use crate::test_path_rows::RowSpec;
     use crate::test_rng::Rng;
     use nalgebra::Vector2;
@@ -125,6 +254,21 @@ mod tests {
             last_at_rest: 0.5,
         }
         .draw(rng, n)
+    }
+
+    /// The first windows of a block of pairs, settled at a level.
+    struct FirstWindows<'a, const K: usize> {
+        pairs: &'a PathPairs<'a, 2>,
+        block: &'a [usize; LANES],
+    }
+
+    impl<const K: usize> Kernel for FirstWindows<'_, K> {
+        type Output = ([f64; LANES], Mask);
+
+        #[inline(always)]
+        fn run<S: Simd>(self, s: S) -> Self::Output {
+            eighth_contacts::<S, 2, K>(s, self.pairs, 0, self.block)
+        }
     }
 
     fn first_window_lanes_give_the_walks_bits<const K: usize>() {
@@ -167,11 +311,32 @@ mod tests {
             });
             Path2::new(segments.collect()).expect("valid rows")
         };
+        // Every level this CPU has.
+        let levels = test_levels();
         let (mut found, mut free) = (0, 0);
         for first in (0..n).step_by(LANES) {
             let block: [usize; LANES] = std::array::from_fn(|l| first + l);
-            let (contacts, frees) = eighth_contacts::<2, K>(&pairs, 0, &block);
-            for (l, (&contact, &is_free)) in contacts.iter().zip(&frees).enumerate() {
+            let settled = |level| {
+                dispatch(
+                    level,
+                    FirstWindows::<K> {
+                        pairs: &pairs,
+                        block: &block,
+                    },
+                )
+            };
+            let (contacts, frees) = settled(Level::Portable);
+            for &level in &levels {
+                let (ours, our_frees) = settled(level);
+                assert_eq!(
+                    ours.map(f64::to_bits),
+                    contacts.map(f64::to_bits),
+                    "{level}"
+                );
+                assert_eq!(our_frees, frees, "{level}");
+            }
+            for (l, &contact) in contacts.iter().enumerate() {
+                let is_free = frees >> l & 1 != 0;
                 let i = first + l;
                 let (a, b) = (path(&pairs.a, i), path(&pairs.b, i));
                 let (a, b) = (a.segments(), b.segments());

@@ -9,12 +9,22 @@
 //! Paths go in rows as well (`paths.rs`: [`path_collision_times`], [`path_positions_at`]), and
 //! so do balls on paths against a table of static objects (`path_geometry.rs`:
 //! [`path_geometry_times`], whose answers go into [`ContactColumns`]).
+//!
+//! The lane stages, each the twin of a scalar stage of `crate::collision` (its map), written
+//! over the SIMD layer's `Simd`: `prefilter_lanes.rs` (the unit of length and the straight-run
+//! screen), `moving_entry_lanes.rs` (a friction pair's first window), `path_lanes.rs` (the
+//! whole-path screens), `window_lanes.rs` (the window screens), `first_window_lanes.rs` with
+//! `eighth_lanes.rs` (the eighth entry on a path pair's first window); pairs wait for a full
+//! block in a `block_queue.rs` queue. The map of the whole pipeline is in ARCHITECTURE.md.
 
 mod block_queue;
+mod eighth_lanes;
 mod first_window_lanes;
+mod moving_entry_lanes;
 mod path_geometry;
 mod path_lanes;
 mod paths;
+mod prefilter_lanes;
 mod window_lanes;
 
 #[cfg(feature = "python")]
@@ -34,9 +44,9 @@ use rayon::{ThreadPool, ThreadPoolBuilder};
 use crate::collision::after_stop::after_first_stop_of;
 use crate::collision::crossing::{FirstWindow, apart_by_window};
 use crate::collision::first_contact_given;
-use crate::collision::length_unit::{normalise_lanes, normalised};
-use crate::collision::moving_entry::{WhileMoving, while_moving};
-use crate::collision::prefilter::{PairInput, screen_runs, valid};
+use crate::collision::length_unit::normalised;
+use crate::collision::moving_entry::WhileMoving;
+use crate::collision::prefilter::{PairInput, valid};
 use crate::collision::straight;
 use crate::error::{
     InputError, InputErrorKind, check_contact_distance, check_friction, check_horizon, finite,
@@ -44,8 +54,10 @@ use crate::error::{
 use crate::gap::gap_value;
 use crate::interrupt::{Interrupt, uncounted};
 use crate::motion::Ball;
-use crate::simd::{self, LANES};
+use crate::simd::{self, LANES, Mask, Simd};
 use block_queue::BlockQueue;
+use moving_entry_lanes::while_moving;
+use prefilter_lanes::{PairLanes, screen_runs};
 
 /// A scalar parameter of a batch: one value for every pair, or one per pair.
 ///
@@ -174,11 +186,14 @@ pub fn collision_times(
 /// The collision times of pairs `offset..offset + out.len()`: the batch's work on one chunk,
 /// at a SIMD level ([`simd::dispatch`]).
 ///
-/// Its lane-wise tests are plain array code over blocks of [`LANES`] pairs that the compiler
-/// vectorises in each level's copy (8-wide with AVX-512, 4-wide with AVX2); they use only
-/// correctly rounded operations, and fused multiply-adds only where written (`mul_add`, a
-/// library call without the FMA feature, one instruction with it: the same exact result), so
-/// every level gives the same bits (a test checks it).
+/// Its first stage, the unit of length and the straight-run screen of a block of [`LANES`]
+/// pairs, is written over the level's operations ([`PairLanes`], [`screen_runs`]); the later
+/// stages (the timing test, the first window, the closed forms) are loops over the lanes that
+/// call the scalar stages, which the compiler vectorises in each level's copy (8-wide with
+/// AVX-512, 4-wide with AVX2). Both use only correctly rounded operations, and fused
+/// multiply-adds only where written (`mul_add`, a library call without the FMA feature, one
+/// instruction with it: the same exact result), so every level gives the same bits (a test
+/// checks it).
 struct SolveChunk<'p, 'c> {
     pairs: &'p Pairs<'p>,
     offset: usize,
@@ -189,8 +204,8 @@ impl simd::Kernel for SolveChunk<'_, '_> {
     type Output = Result<(), InputError>;
 
     #[inline(always)]
-    fn run<S: simd::Simd>(self, _: S) -> Self::Output {
-        solve_chunk(self.pairs, self.offset, self.out)
+    fn run<S: Simd>(self, s: S) -> Self::Output {
+        solve_chunk(s, self.pairs, self.offset, self.out)
     }
 }
 
@@ -203,11 +218,16 @@ impl simd::Kernel for SolveChunk<'_, '_> {
 /// Invalid pairs reach the search as soon as they are met, so the first error found is the
 /// lowest index's (the pairs held back are valid: they cannot fail).
 #[inline(always)]
-fn solve_chunk(pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) -> Result<(), InputError> {
+fn solve_chunk<S: Simd>(
+    s: S,
+    pairs: &Pairs<'_>,
+    offset: usize,
+    out: &mut [f64],
+) -> Result<(), InputError> {
     let mut held = Held::default();
     for start in (0..out.len()).step_by(LANES) {
         let len = LANES.min(out.len() - start);
-        let screened = screen(pairs, offset + start, len);
+        let screened = screen(s, pairs, offset + start, len);
         match out.get_mut(start..start + LANES) {
             Some(block) if len == LANES => block.copy_from_slice(&screened.answers),
             _ => out[start..].copy_from_slice(&screened.answers[..len]),
@@ -220,9 +240,9 @@ fn solve_chunk(pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) -> Result<(), 
             open &= open - 1;
             let i = offset + start + k;
             // Answered when its block is settled.
-            if screened.crossing[k] {
+            if screened.crossing >> k & 1 != 0 {
                 held.crossing.push((i, (false, false)));
-            } else if screened.at_rest[k] {
+            } else if screened.at_rest >> k & 1 != 0 {
                 held.at_rest.push((i, (false, false)));
             } else {
                 // Invalid, both at rest, one at rest beyond the closed form's range, no
@@ -231,7 +251,7 @@ fn solve_chunk(pairs: &Pairs<'_>, offset: usize, out: &mut [f64]) -> Result<(), 
             }
         }
         // One call, the last block's draining everything: each stage is inlined once.
-        held.advance(pairs, offset, out, start + len == out.len())?;
+        held.advance(s, pairs, offset, out, start + len == out.len())?;
     }
     Ok(())
 }
@@ -283,8 +303,9 @@ impl Held {
     /// pairs `offset..`). Inlined into every copy of [`solve_chunk`], so that the
     /// tests run in the widest vectors; each stage has one call site, so it is inlined once.
     #[inline(always)]
-    fn advance(
+    fn advance<S: Simd>(
         &mut self,
+        s: S,
         pairs: &Pairs<'_>,
         offset: usize,
         out: &mut [f64],
@@ -298,7 +319,7 @@ impl Held {
             if ready(&self.at_rest) {
                 self.settle_at_rest(pairs, offset, out)?;
             } else if self.open.len() >= LANES || (finish && !test && self.open.len() > 0) {
-                self.settle_first_window(pairs, offset, out)?;
+                self.settle_first_window(s, pairs, offset, out)?;
             } else if test {
                 self.time_test(pairs, offset, out);
             } else {
@@ -355,8 +376,9 @@ impl Held {
     /// second was proven apart, else the closed form from the first stop on
     /// ([`after_first_stop_of`]) where it applies; the search's answer elsewhere.
     #[inline(always)]
-    fn settle_first_window(
+    fn settle_first_window<S: Simd>(
         &mut self,
+        s: S,
         pairs: &Pairs<'_>,
         offset: usize,
         out: &mut [f64],
@@ -364,15 +386,11 @@ impl Held {
         let (held, len) = self.open.take();
         let (index, apart) = (held.map(|(i, _)| i), held.map(|(_, apart)| apart));
         let lanes = lanes(pairs, &index, len);
-        let mut entry = [f64::NAN; LANES];
-        let mut no_entry = [false; LANES];
-        for ((entry, no_entry), lane) in entry.iter_mut().zip(&mut no_entry).zip(&lanes) {
-            let m = while_moving(lane);
-            (*entry, *no_entry) = (m.entry, m.screened_out);
-        }
-        let mut free = [false; LANES];
-        for ((free, &(first, _)), &no_entry) in free.iter_mut().zip(&apart).zip(&no_entry) {
-            *free = first | no_entry;
+        let (entry, screened_out) = while_moving(s, &PairLanes::of_inputs(s, &lanes));
+        let (mut no_entry, mut free) = ([false; LANES], [false; LANES]);
+        for (l, (no_entry, free)) in no_entry.iter_mut().zip(&mut free).enumerate() {
+            *no_entry = screened_out >> l & 1 != 0;
+            *free = apart[l].0 | *no_entry;
         }
         // In a loop of its own, run only where some lane needs it (contacts after a stop are
         // rarer than contacts while both move). It builds the first windows again rather
@@ -433,77 +451,44 @@ struct Screened {
     /// lanes past the block's length).
     answers: [f64; LANES],
     /// Open pairs for the timing test ([`apart_by_window`]): valid, both balls moving.
-    crossing: [bool; LANES],
+    crossing: Mask,
     /// Open pairs for the closed form: valid, one ball at rest (in a block of moving pairs).
-    at_rest: [bool; LANES],
+    at_rest: Mask,
 }
 
-/// Screens pairs `start..start + len` (`len ≤ LANES`), lane-wise; whatever it leaves open and
-/// neither `crossing` nor `at_rest` goes to the scalar search.
-///
-/// Each input is first copied as a whole block (a few vector moves, and no narrow stores
-/// that wide loads would then stall on), so that the arithmetic runs on whole vectors.
+/// Screens pairs `start..start + len` (`len ≤ LANES`), lane-wise ([`PairLanes`],
+/// [`screen_runs`]); whatever it leaves open and neither `crossing` nor `at_rest` goes to the
+/// scalar search.
 #[inline(always)]
-fn screen(pairs: &Pairs<'_>, start: usize, len: usize) -> Screened {
-    let (mut pos_a, mut vel_a) = (rows(pairs.pos_a, start, len), rows(pairs.vel_a, start, len));
-    let (mut pos_b, mut vel_b) = (rows(pairs.pos_b, start, len), rows(pairs.vel_b, start, len));
-    let (mut friction_a, mut friction_b) = (
-        scalars(pairs.friction_a, start, len),
-        scalars(pairs.friction_b, start, len),
-    );
-    let (mut radius, t_max) = (
-        scalars(pairs.contact_distance, start, len),
-        scalars(pairs.t_max, start, len),
-    );
+fn screen<S: Simd>(s: S, pairs: &Pairs<'_>, start: usize, len: usize) -> Screened {
     // Each pair in its own unit of length, as the scalar search takes it.
-    normalise_lanes(
-        [&mut pos_a, &mut pos_b],
-        [&mut vel_a, &mut vel_b],
-        [&mut friction_a, &mut friction_b],
-        &mut radius,
-    );
-    let lane = |k: usize| PairInput {
-        pos_a: pos_a[k],
-        vel_a: vel_a[k],
-        friction_a: friction_a[k],
-        pos_b: pos_b[k],
-        vel_b: vel_b[k],
-        friction_b: friction_b[k],
-        radius: radius[k],
-        t_max: t_max[k],
-    };
-    let mut one_at_rest = [false; LANES];
-    for (k, one) in one_at_rest.iter_mut().enumerate() {
-        *one = rests(vel_a[k]) != rests(vel_b[k]);
-    }
-    let mut screened = Screened {
-        answers: [f64::NAN; LANES],
-        crossing: [false; LANES],
-        at_rest: [false; LANES],
-    };
+    let lanes = PairLanes::normalised(s, pairs, start, len);
+    let (rests_a, rests_b) = lanes.at_rest(s);
+    let one_at_rest = rests_a ^ rests_b;
     // A block where every pair has one ball at rest (a cue ball against the others, say)
     // goes to the closed form alone, which settles misses as well as the screening does.
-    if one_at_rest.iter().all(|&x| x) {
-        screened.answers = at_rest_answers(lane, &first_lanes(len));
-        return screened;
-    }
-    let lanes = (screened.answers.iter_mut())
-        .zip(&mut screened.crossing)
-        .zip(&mut screened.at_rest);
-    for (k, ((answer, crossing), at_rest)) in lanes.enumerate() {
-        let pair = lane(k);
-        let (plain, apart) = screen_runs(&pair);
-        let plain = plain & (k < len);
-        *answer = if plain & apart {
-            f64::INFINITY
-        } else {
-            f64::NAN
+    if one_at_rest == Mask::MAX {
+        let inputs = lanes.inputs(s);
+        return Screened {
+            answers: at_rest_answers(|k| inputs[k], &first_lanes(len)),
+            crossing: 0,
+            at_rest: 0,
         };
-        let open = plain & !apart;
-        *at_rest = open & one_at_rest[k];
-        *crossing = open & !rests(pair.vel_a) & !rests(pair.vel_b);
     }
-    screened
+    let (in_range, apart) = screen_runs(s, &lanes);
+    let plain = in_range & first_lanes_mask(len);
+    let open = plain & !apart;
+    Screened {
+        answers: s.store(s.blend(plain & apart, s.splat(f64::NAN), s.splat(f64::INFINITY))),
+        crossing: open & !rests_a & !rests_b,
+        at_rest: open & one_at_rest,
+    }
+}
+
+/// The lanes `0..len` of a block, as bits.
+#[inline(always)]
+fn first_lanes_mask(len: usize) -> Mask {
+    (((1u32 << len) - 1) & u32::from(Mask::MAX)) as Mask
 }
 
 /// The lanes `0..len` of a block.
@@ -551,43 +536,6 @@ fn at_rest_answers(lane: impl Fn(usize) -> PairInput, open: &[bool; LANES]) -> [
         }
     }
     answers
-}
-
-/// Rows `start..start + len` of `src` as a block of [`LANES`] (zeros past `len`).
-#[inline(always)]
-fn rows(src: &[[f64; 2]], start: usize, len: usize) -> [[f64; 2]; LANES] {
-    match src
-        .get(start..start + LANES)
-        .map(<[[f64; 2]; LANES]>::try_from)
-    {
-        Some(Ok(block)) if len == LANES => block,
-        _ => {
-            let mut block = [[0.0; 2]; LANES];
-            for (slot, row) in block.iter_mut().zip(src.iter().skip(start).take(len)) {
-                *slot = *row;
-            }
-            block
-        }
-    }
-}
-
-/// A per-pair scalar's values for pairs `start..start + len`, as a block of [`LANES`]
-/// (zeros past `len`, which fail the test: a radius must be positive).
-#[inline(always)]
-fn scalars(src: PerPair<'_>, start: usize, len: usize) -> [f64; LANES] {
-    match src {
-        PerPair::All(x) => [x; LANES],
-        PerPair::Each(xs) => match xs.get(start..start + LANES).map(<[f64; LANES]>::try_from) {
-            Some(Ok(block)) if len == LANES => block,
-            _ => {
-                let mut block = [0.0; LANES];
-                for (slot, x) in block.iter_mut().zip(xs.iter().skip(start).take(len)) {
-                    *slot = *x;
-                }
-                block
-            }
-        },
-    }
 }
 
 /// The centre of every ball at its time `t` (`pos`, `vel`, `friction` as in [`Pairs`]),
@@ -816,6 +764,7 @@ fn first_error(x: Result<(), InputError>, y: Result<(), InputError>) -> Result<(
 mod tests {
     use super::*;
     use crate::collision::prefilter::screened_out_by_runs;
+    use crate::simd::Portable;
     use crate::{CollisionOptions, collision_time_with};
 
     #[test]
@@ -958,12 +907,30 @@ mod tests {
         assert!(hits > 1000, "{hits} hits: the set should exercise contacts");
     }
 
+    /// The screen's answers for every pair, block by block.
+    struct ScreenAll<'a>(&'a Pairs<'a>);
+
+    impl simd::Kernel for ScreenAll<'_> {
+        type Output = Vec<f64>;
+
+        #[inline(always)]
+        fn run<S: Simd>(self, s: S) -> Vec<f64> {
+            let n = self.0.pos_a.len();
+            let mut out = Vec::with_capacity(n);
+            for start in (0..n).step_by(LANES) {
+                let len = LANES.min(n - start);
+                out.extend_from_slice(&screen(s, self.0, start, len).answers[..len]);
+            }
+            out
+        }
+    }
+
     #[test]
     fn every_vector_copy_agrees_with_the_portable_code_bit_for_bit() {
         let r = rows(5_000, 5);
         let p = pairs(&r);
         let mut portable = vec![0.0; r.pos_a.len()];
-        assert_eq!(solve_chunk(&p, 0, &mut portable), Ok(()));
+        assert_eq!(solve_chunk(Portable, &p, 0, &mut portable), Ok(()));
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         // Every copy this CPU can run, through the dispatch.
         for level in crate::simd::test_levels() {
@@ -988,12 +955,13 @@ mod tests {
             radius: 0.05715,
             t_max: r.t_max[i],
         };
-        for start in (0..r.pos_a.len()).step_by(LANES) {
-            let len = LANES.min(r.pos_a.len() - start);
-            let answers = screen(&p, start, len).answers;
-            for (k, &answer) in answers.iter().enumerate().take(len) {
-                if screened_out_by_runs(&one(start + k)) {
-                    assert_eq!(answer, f64::INFINITY, "pair {}", start + k);
+        // The screen's lanes, at every level: `∞` for every pair the scalar screen proves
+        // apart.
+        for level in crate::simd::test_levels() {
+            let answers = simd::dispatch(level, ScreenAll(&p));
+            for (i, &answer) in answers.iter().enumerate() {
+                if screened_out_by_runs(&one(i)) {
+                    assert_eq!(answer, f64::INFINITY, "{level}: pair {i}");
                     apart += 1;
                 }
             }

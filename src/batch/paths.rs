@@ -256,10 +256,10 @@ fn path_pairs_in_turn<S: Simd, const D: usize, const K: usize>(
             }
             if let Some(block) = held.take_block() {
                 // (Only pairs the lanes took are held.)
-                let (contacts, free) = eighth_contacts::<D, K>(pairs, offset, &block);
-                for ((&k, &contact), &free) in block.iter().zip(&contacts).zip(&free) {
+                let (contacts, free) = eighth_contacts::<S, D, K>(s, pairs, offset, &block);
+                for (l, (&k, &contact)) in block.iter().zip(&contacts).enumerate() {
                     if contact.is_nan() {
-                        let prior = if free {
+                        let prior = if free >> l & 1 != 0 {
                             Prior::FirstWindowScreenedOut
                         } else {
                             Prior::LanesLeft

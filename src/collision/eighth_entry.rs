@@ -1,5 +1,6 @@
 //! The first entry on a window whose first open eighth is isolated: found by a fixed number of
-//! Newton steps, without a branch, so that a batch runs it eight windows at a time.
+//! Newton steps, so that a batch runs it eight windows at a time without a branch (its lane
+//! twin, `batch/eighth_lanes.rs`).
 //!
 //! Most contacts are transversal: the first eighth of the window that the Bernstein
 //! coefficients do not prove positive ([`first_open_eighth`]) holds exactly one root, and
@@ -15,8 +16,10 @@
 //!
 //! Two stages stand on it: a friction pair's first window ([`moving_entry`](super::moving_entry),
 //! lane-wise in the friction batch) and every window of balls on paths that would be searched
-//! ([`window_eighth`], called by [`path_contact`](super::path_contact)). Whatever it does not
-//! settle goes to the window search.
+//! ([`window_eighth`], called by [`path_contact`](super::path_contact); its lane twin,
+//! `batch/eighth_lanes.rs`, settles the first windows of the path batch's pairs eight at a
+//! time over the SIMD layer, every step taken). Whatever it does not settle goes to the window
+//! search.
 
 use super::exclusion::{OpenEighth, first_open_eighth};
 use super::long_window::long_window;
@@ -37,16 +40,15 @@ pub(crate) struct EighthEntry {
 
 /// The first entry on the window `[0, end]` of `gap` (time scaled so that `end ≤ 1`), where
 /// its first open `eighth` is isolated and the gap is positive at its start; `qualifies`: the
-/// caller's own conditions (magnitudes in the range where its arithmetic is exact enough). With
-/// `one_pair`, the Newton steps whose results would be masked out are skipped and the steps
-/// stop at convergence (lanes take them all: the results are the same).
+/// caller's own conditions (magnitudes in the range where its arithmetic is exact enough). The
+/// Newton steps whose results would be masked out are skipped and the steps stop at
+/// convergence; the lane twin (`batch/eighth_lanes.rs`) takes them all: the same results.
 #[inline(always)]
 pub(crate) fn eighth_entry<const D: usize>(
     gap: &Gap<D>,
     end: f64,
     eighth: &OpenEighth,
     qualifies: bool,
-    one_pair: bool,
 ) -> EighthEntry {
     let (root, dip) = (eighth.one_root, eighth.one_dip);
     // The eighth `[lo, hi]` (time in the window's units); the coefficients promise its shape,
@@ -58,12 +60,11 @@ pub(crate) fn eighth_entry<const D: usize>(
     let (g_lo, g_hi) = (gap.value(lo), gap.value(hi));
     let (slope_lo, slope_hi) = (gap.half_slope(lo), gap.half_slope(hi));
     let dip = dip & (slope_lo < 0.0) & (slope_hi > 0.0);
-    // One pair skips the steps whose results would be masked out below (lanes take them all:
-    // the results are the same).
+    // The steps whose results would be masked out below are skipped.
     // The minimum is used for a dip, unless a single root with g < 0 at the eighth's end
     // already brackets the entry (and rules out a miss).
     let lowest_used = dip && !(root && g_hi < 0.0);
-    let (lowest, lowest_found) = if one_pair && !lowest_used {
+    let (lowest, lowest_found) = if !lowest_used {
         (hi, false)
     } else {
         fixed_newton(
@@ -72,7 +73,6 @@ pub(crate) fn eighth_entry<const D: usize>(
             slope_lo,
             secant((lo, hi), (slope_lo, slope_hi)),
             gap.half_slope_noise(),
-            one_pair,
         )
     };
     let g_lowest = gap.value(lowest);
@@ -97,17 +97,10 @@ pub(crate) fn eighth_entry<const D: usize>(
     } else {
         secant((lo, right), (g_lo, g_right))
     };
-    let (entry, entry_found) = if one_pair && !crossing {
+    let (entry, entry_found) = if !crossing {
         (lo, false)
     } else {
-        fixed_newton(
-            &Value(gap),
-            (lo, right),
-            g_lo,
-            start,
-            gap.value_noise(),
-            one_pair,
-        )
+        fixed_newton(&Value(gap), (lo, right), g_lo, start, gap.value_noise())
     };
     // A dip narrower than the float grid is not called a miss here: the window search decides
     // it on the closest approach (`narrow_dip`).
@@ -126,18 +119,15 @@ pub(crate) fn eighth_entry<const D: usize>(
 /// ([`bounded_length`](super::bounded_length), which the caller's screens have formed), `before`
 /// whether the gap was positive just before it. The entry is in time since the window's start,
 /// as the search gives it. Nothing is settled where the window is not short, or the radius is
-/// so small beside the motion that the gap's squares could underflow. With `ONE_PAIR`, a
-/// window without an isolated eighth returns at once, and the Newton steps stop at convergence;
-/// without it (lanes), every step is taken, without a branch: the same answer.
+/// so small beside the motion that the gap's squares could underflow. A window without an
+/// isolated eighth returns at once, and the Newton steps stop at convergence; the lane twin
+/// (`batch/eighth_lanes.rs`) takes every step, without a branch: the same answer.
 #[inline(always)]
-pub(crate) fn window_eighth<const D: usize, const ONE_PAIR: bool>(
+pub(crate) fn window_eighth<const D: usize>(
     gap: &Gap<D>,
     length: f64,
     before: bool,
 ) -> EighthEntry {
-    /// The least radius in the window's own unit (its largest field in `[2, 4)`): its square
-    /// and those of separations near it stay far above the underflow.
-    const RADIUS_FLOOR: f64 = f64::from_bits((1023 - 300) << 52);
     let nothing = EighthEntry {
         entry: f64::NAN,
         found: false,
@@ -153,22 +143,27 @@ pub(crate) fn window_eighth<const D: usize, const ONE_PAIR: bool>(
     // Every eighth proven positive: no entry, the gap positive at the end (the search would
     // prove it piece by piece).
     let proven = qualifies & (eighth.index == 8.0);
-    if ONE_PAIR && proven {
+    if proven {
         return EighthEntry {
             screened_out: true,
             ..nothing
         };
     }
-    if ONE_PAIR && !(qualifies & (eighth.one_root | eighth.one_dip)) {
+    if !(qualifies & (eighth.one_root | eighth.one_dip)) {
         return nothing; // what `eighth_entry` finds for these
     }
-    let found = eighth_entry(&scaled, end, &eighth, qualifies, ONE_PAIR);
+    let found = eighth_entry(&scaled, end, &eighth, qualifies);
     EighthEntry {
         entry: found.entry * h,
         found: found.found,
         screened_out: found.screened_out | proven,
     }
 }
+
+/// The least radius of a window settled by [`window_eighth`], in the window's own unit (its
+/// largest field in `[2, 4)`): its square and those of separations near it stay far above the
+/// underflow.
+pub(crate) const RADIUS_FLOOR: f64 = f64::from_bits((1023 - 300) << 52);
 
 /// The root of the chord through `(lo, f_lo)` and `(hi, f_hi)`.
 #[inline(always)]
@@ -242,7 +237,7 @@ impl NewtonState {
     }
 
     /// One step on `f` (`lo_positive`: the sign of `f` at the bracket's low end); once
-    /// converged, the state stays (one pair stops there, lanes step on unchanged).
+    /// converged, the state stays (the steps stop there; the lane twin steps on unchanged).
     #[inline(always)]
     fn step(self, f: &impl WithDerivative, lo_positive: bool, noise: f64) -> Self {
         let x = self.x;
@@ -274,8 +269,8 @@ impl NewtonState {
 
 /// Up to six Newton steps on `f` from `start`, inside `(lo, hi)` where `f` changes sign
 /// (`f_lo` at `lo`), until converged; a step that would leave the shrinking bracket is
-/// replaced by bisection. Without a branch unless `one_pair` (which stops at convergence,
-/// where lanes take the remaining steps unchanged: the same result).
+/// replaced by bisection. (The lane twin takes the remaining steps unchanged once converged:
+/// the same result.)
 ///
 /// Returns the iterate where `|f|` was smallest, and whether it is the root to float
 /// accuracy: Newton's correction there is within two ulps, or the steps stopped lowering
@@ -288,7 +283,6 @@ fn fixed_newton(
     f_lo: f64,
     start: f64,
     noise: f64,
-    one_pair: bool,
 ) -> (f64, bool) {
     let lo_positive = f_lo > 0.0;
     let mut state = NewtonState {
@@ -300,18 +294,11 @@ fn fixed_newton(
         best_step: f64::INFINITY,
         improved: true,
     };
-    if one_pair {
-        for _ in 0..6 {
-            if state.converged(noise) {
-                break;
-            }
-            state = state.step(f, lo_positive, noise);
+    for _ in 0..6 {
+        if state.converged(noise) {
+            break;
         }
-    } else {
-        // Written out rather than looped, so that a batch's lane loop around it vectorises.
-        let (f, s, n) = (f, lo_positive, noise);
-        state = state.step(f, s, n).step(f, s, n).step(f, s, n);
-        state = state.step(f, s, n).step(f, s, n).step(f, s, n);
+        state = state.step(f, lo_positive, noise);
     }
     (state.best, state.within(2.0) | state.stalled(noise))
 }

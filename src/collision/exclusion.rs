@@ -23,6 +23,10 @@ use crate::gap::Gap;
 /// [`window_screened_out`], covers the rounding of that many halvings).
 const ISOLATING_SPLITS: u32 = 6;
 
+/// The Bernstein coefficients' margin ([`bernstein`]) over the square of the window's
+/// magnitudes.
+pub(crate) const MARGIN_PER_SQUARE: f64 = (16.0 + 4.0 * ISOLATING_SPLITS as f64) * f64::EPSILON;
+
 /// Whether `g(u) > 0` is proven for every `u ∈ [0, end]` (time already scaled so that
 /// `0 ≤ end ≤ 1`), by the Bernstein coefficients of the window or of its pieces down to three
 /// halvings.
@@ -45,7 +49,7 @@ pub(crate) fn window_screened_out<const D: usize>(gap: &Gap<D>, end: f64) -> boo
 /// window's first crossing, from + to −), or a single minimum ([`Shape::OneDip`]); and
 /// whether every later eighth is proven positive.
 ///
-/// Branch-free (every eighth is evaluated), so that a batch runs it lane-wise. The margin is
+/// Every eighth is evaluated, as the lane twin (`batch/eighth_lanes.rs`) evaluates them. The margin is
 /// that of [`window_screened_out`], and each eighth comes from three exact halvings.
 #[inline(always)]
 pub(crate) fn first_open_eighth<const D: usize>(gap: &Gap<D>, end: f64) -> OpenEighth {
@@ -243,7 +247,7 @@ fn bernstein<const D: usize>(gap: &Gap<D>, end: f64) -> ([f64; 5], f64) {
     ];
     let l1 = |v: &nalgebra::SVector<f64, D>| v.iter().fold(0.0, |sum, x| sum + x.abs());
     let m = l1(&gap.offset) + l1(&gap.velocity) + l1(&gap.acceleration) + gap.contact_distance;
-    let margin = (16.0 + 4.0 * ISOLATING_SPLITS as f64) * f64::EPSILON * (m * m);
+    let margin = MARGIN_PER_SQUARE * (m * m);
     (b, margin)
 }
 

@@ -10,14 +10,16 @@
 //! `±1e308`, a sum of two radii that would overflow), and normal where they are near the
 //! underflow. Times are not scaled: a time is a length divided by a speed.
 //!
-//! The batch's lanes and the scalar search divide by the same unit, computed by the same
-//! function, so they see the same numbers.
+//! The batch's lanes (`batch/prefilter_lanes.rs`, `batch/eighth_lanes.rs`) and the scalar
+//! search divide by the same unit, formed by the same operations (the scale by the SIMD
+//! layer's `unit_scale`), so they see the same numbers.
 
 use nalgebra::SVector;
 
 use super::prefilter::PairInput;
 use crate::gap::Gap;
 use crate::motion::Ball;
+use crate::simd::unit_scale;
 
 /// The unit of a pair whose largest length (in magnitude) is `largest`: multiplying by
 /// [`LengthUnit::apply`] brings `largest` into `[2, 4)`, exactly.
@@ -33,18 +35,20 @@ pub(crate) struct LengthUnit {
     scale: f64,
 }
 
+/// 2⁶⁰⁰: [`LengthUnit`]'s pre-scaling, which brings any subnormal into the normal range,
+/// exactly.
+pub(crate) const PRE: f64 = f64::from_bits((1023 + 600) << 52);
+
 impl LengthUnit {
     /// The unit for a pair whose largest length is `largest` (≥ 0). Branch-free, so that a
     /// batch forms it lane-wise.
     #[inline(always)]
     pub(crate) fn of(largest: f64) -> Self {
-        /// 2⁶⁰⁰: brings any subnormal into the normal range, exactly.
-        const PRE: f64 = f64::from_bits((1023 + 600) << 52);
         let subnormal = largest < f64::MIN_POSITIVE;
         let pre = if subnormal { PRE } else { 1.0 };
         Self {
             pre,
-            scale: normal_scale(largest * pre),
+            scale: unit_scale(largest * pre),
         }
     }
 
@@ -78,18 +82,6 @@ impl<const D: usize> Gap<D> {
     }
 }
 
-/// The power of two that brings a normal `largest` into `[2, 4)`: `2^(1024 − f)`, `f` its
-/// exponent field (normal for every field from 1 to 2046). `∞` for a subnormal or zero
-/// `largest` (field 0), 0 for an infinite one (field 2047): either turns the pair's numbers
-/// into infinities or NaNs.
-#[inline(always)]
-fn normal_scale(largest: f64) -> f64 {
-    const FIELD: u64 = 0x7ff;
-    let field = (largest.to_bits() >> 52) & FIELD;
-    // At most `FIELD`: a plain subtraction, which vectorises.
-    f64::from_bits((FIELD - field) << 52)
-}
-
 /// The largest magnitude among `lengths`, NaNs ignored (as a select, which vectorises).
 #[inline(always)]
 pub(crate) fn largest<const N: usize>(lengths: [f64; N]) -> f64 {
@@ -97,60 +89,6 @@ pub(crate) fn largest<const N: usize>(lengths: [f64; N]) -> f64 {
         let x = x.abs();
         if x > m { x } else { m }
     })
-}
-
-/// A block of pairs (the batch's lanes, as rows and per-pair values) put in place in their
-/// own units of length, as [`normalised`] puts each pair (with one radius per pair).
-///
-/// One factor per lane, without [`LengthUnit`]'s pre-scaling of a subnormal largest length:
-/// such a pair comes out with infinities or NaNs, which no lane-wise stage accepts (they
-/// need every number finite), so it goes to the search, which normalises it in two steps.
-/// For every other pair the pre-scaling is by 1, and both give the same numbers.
-#[inline(always)]
-pub(crate) fn normalise_lanes<const L: usize>(
-    pos: [&mut [[f64; 2]; L]; 2],
-    vel: [&mut [[f64; 2]; L]; 2],
-    friction: [&mut [f64; L]; 2],
-    radius: &mut [f64; L],
-) {
-    let [pos_a, pos_b] = pos;
-    let [vel_a, vel_b] = vel;
-    let [friction_a, friction_b] = friction;
-    // The rows' coordinates first, element by element across the four row blocks (the
-    // same lanes' x and y sit side by side), then each lane's x and y, frictions and radius:
-    // the same maximum as [`largest`] over the pair's eleven numbers, in vertical operations.
-    let bigger = |m: f64, x: f64| {
-        let x = x.abs();
-        if x > m { x } else { m }
-    };
-    let mut rows_largest = [[0.0; 2]; L];
-    for k in 0..L {
-        for axis in 0..2 {
-            let m = bigger(0.0, pos_a[k][axis]);
-            let m = bigger(m, vel_a[k][axis]);
-            let m = bigger(m, pos_b[k][axis]);
-            rows_largest[k][axis] = bigger(m, vel_b[k][axis]);
-        }
-    }
-    let mut scales = [0.0; L];
-    for (k, scale) in scales.iter_mut().enumerate() {
-        let [x, y] = rows_largest[k];
-        let m = bigger(bigger(x, y), friction_a[k]);
-        *scale = normal_scale(bigger(bigger(m, friction_b[k]), radius[k]));
-    }
-    for rows in [pos_a, vel_a, pos_b, vel_b] {
-        for (row, &scale) in rows.iter_mut().zip(&scales) {
-            *row = row.map(|x| x * scale);
-        }
-    }
-    for values in [friction_a, friction_b] {
-        for (mu, &scale) in values.iter_mut().zip(&scales) {
-            *mu = *mu * scale + 0.0;
-        }
-    }
-    for (r, &scale) in radius.iter_mut().zip(&scales) {
-        *r *= scale;
-    }
 }
 
 /// `pair` in its own unit of length, its radius the sum of `pair.radius` and `radius_b` (two

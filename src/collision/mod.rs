@@ -9,12 +9,12 @@
 //!
 //! | stage | file | what it proves or does | who calls it |
 //! |---|---|---|---|
-//! | unit of length | `length_unit.rs` | divides every length of a pair by one power of two (exact), so that no answer depends on the unit | every friction-ball query, its batch lanes (`normalise_lanes`); every path window (the path bounds work on the caller's numbers, with a margin for underflow) |
+//! | unit of length | `length_unit.rs` | divides every length of a pair by one power of two (exact), so that no answer depends on the unit | every friction-ball query, its batch lanes (`batch/prefilter_lanes.rs`); every path window (the path bounds work on the caller's numbers, with a margin for underflow) |
 //! | **friction balls** | | | |
-//! | prefilter | `prefilter.rs` | the balls' straight runs to rest stay apart: never a contact | `collision_time`, scene, batch lanes |
-//! | crossing | `crossing.rs` | moving balls whose runs cross are never there at the same time | `collision_time`, scene, batch lanes |
+//! | prefilter | `prefilter.rs`; lane-wise, `batch/prefilter_lanes.rs` | the balls' straight runs to rest stay apart: never a contact | `collision_time`, scene, batch lanes (with the unit of length) |
+//! | crossing | `crossing.rs` | moving balls whose runs cross are never there at the same time | `collision_time`, scene, batch lanes (a loop over the lanes: `apart_by_window`) |
 //! | straight | `straight.rs` (`first_contact`, `contact`) | one ball at rest: the contact in closed form | `collision_time`, scene, batch lanes |
-//! | moving entry | `moving_entry.rs` | both moving, an isolated crossing in the first window: the contact by the eighth entry below, cut by the horizon | `collision_time`, scene, batch lanes |
+//! | moving entry | `moving_entry.rs`; lane-wise, `batch/moving_entry_lanes.rs` | both moving, an isolated crossing in the first window: the contact by the eighth entry below, cut by the horizon | `collision_time`, scene, batch lanes |
 //! | after stop | `after_stop.rs` | after the first stop, the mover against a ball at rest: closed form | `collision_time`, scene, batch lanes |
 //! | **paths** | | | |
 //! | path bounds | `path_bounds.rs`; lane-wise, `batch/path_lanes.rs` | the boxes the two centres stay in along their whole paths are apart: never a contact | `path_collision_time`, `path_collision_times` (a broadcast path's bounds once per batch; rows of 2 and 3 segments eight pairs at a time, lane-wise, at the SIMD levels that run the lane stages, the same proof to the bit); not for two paths of one segment each, whose one window goes straight to the window's stages |
@@ -27,18 +27,22 @@
 //! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` at the SIMD levels that run the lane stages, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
 //! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |
-//! | eighth entry | `eighth_entry.rs` | a window whose first open eighth is isolated (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`) |
-//! | (first-window lanes) | `batch/first_window_lanes.rs`, `path_contact.rs` (`PathFirstWindow`) | the eighth entry on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window screened out (the walk starts after it) | `path_collision_times` at the SIMD levels that run the lane stages, rows of 2 and 3 segments |
+//! | eighth entry | `eighth_entry.rs`; lane-wise, `batch/eighth_lanes.rs` (`window_eighth`) | a window whose first open eighth is isolated (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`); the first-window lanes below |
+//! | (first-window lanes) | `batch/first_window_lanes.rs` | the eighth entry (`batch/eighth_lanes.rs`) on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window screened out (the walk starts after it) | `path_collision_times` at the SIMD levels that run the lane stages, rows of 2 and 3 segments |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
 //! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `entry` (for `search_window`), `crossing`, `moving_entry` |
 //! | entry | `entry.rs` | the first + → − sign change on the pieces left: critical points, bracketed Newton | `search_window` |
 //! | narrow dip | `narrow_dip.rs` | a dip whose float samples stay positive, the radius tiny beside the motion (`≤ 2⁻⁴⁰`): a contact if the closest approach, `|d × d′|/|d′|` from the cross product's own coefficients, is within the radius | `entry` (its dips and minima); `eighth_entry` only declines to call such a dip a miss |
 //!
-//! The friction balls' batch lanes (`prefilter`, `crossing`, `moving_entry`, lane-wise in
-//! `crate::batch`) run at every SIMD level ([`crate::simd`]: portable, AVX2 with FMA, AVX-512,
-//! NEON). The path lanes (`batch/path_lanes.rs`, `batch/window_lanes.rs`,
-//! `batch/first_window_lanes.rs`) are compiled and tested at every level but run only where the
+//! A stage's lane twin sits in `crate::batch`, beside the batch that runs it, written over the
+//! SIMD layer's `Simd` ([`crate::simd`]) with the scalar stage's operations in the scalar
+//! stage's order. The friction balls' batch lanes (`prefilter`, `crossing`, `moving_entry`,
+//! `after_stop`, `straight`) run at every SIMD level (portable, AVX2 with FMA, AVX-512, NEON):
+//! the prefilter's over `Simd`, the others as loops over the lanes that call the scalar stage,
+//! vectorised by the compiler inside the level's shim. The path lanes
+//! (`batch/path_lanes.rs`, `batch/window_lanes.rs`, `batch/first_window_lanes.rs` with
+//! `batch/eighth_lanes.rs`) are compiled and tested at every level but run only where the
 //! vectors hold four or more lanes (AVX2 with FMA, AVX-512: `Simd::RUNS_LANE_STAGES`); at the
 //! portable and NEON levels those pairs go one by one, to the same bits.
 //!
@@ -60,7 +64,7 @@ pub(crate) mod chord_normals;
 pub(crate) mod crossing;
 pub(crate) mod eighth_entry;
 mod entry;
-mod exclusion;
+pub(crate) mod exclusion;
 pub(crate) mod length_unit;
 pub(crate) mod long_window;
 pub(crate) mod moving_entry;
@@ -77,6 +81,7 @@ use crate::error::{InputError, check_contact_distance, check_horizon};
 use crate::gap::{Gap, gap_value_of};
 use crate::motion::Ball;
 use crate::poly::scaling::{exponent, pow2};
+use crate::simd::fraction_cleared;
 use after_stop::after_first_stop;
 use crossing::apart_by_window;
 use entry::{WindowSearch, first_entry, piecewise_entry};
@@ -207,7 +212,7 @@ pub(crate) fn first_contact(a: &Ball, b: &Ball, radius: f64, t_max: f64) -> Opti
     first_contact_given(a, b, radius, t_max, None)
 }
 
-/// [`first_contact`], given what [`while_moving`](moving_entry::while_moving) found for the
+/// [`first_contact`], given what [`while_moving_one`](moving_entry::while_moving_one) found for the
 /// pair if the caller (a batch, lane-wise) has run it already: the search takes the same
 /// steps either way.
 pub(crate) fn first_contact_given(
@@ -352,17 +357,12 @@ fn time_unit(length: f64) -> Option<f64> {
 }
 
 /// [`time_unit`] of a normal, finite, positive `length` (up to [`LONGEST_WINDOW`]), by its
-/// bits: the power of two below it, doubled unless it is that power.
+/// bits: the power of two below it, doubled unless it is that power (as the batch's lanes
+/// form it, with the same operation: `simd::fraction_cleared`).
 #[inline(always)]
 pub(crate) fn normal_time_unit(length: f64) -> f64 {
-    const MANTISSA: u64 = (1 << 52) - 1;
-    let bits = length.to_bits();
-    let below = f64::from_bits(bits & !MANTISSA);
-    if bits & MANTISSA == 0 {
-        length
-    } else {
-        2.0 * below
-    }
+    let below = fraction_cleared(length);
+    if below == length { length } else { 2.0 * below }
 }
 
 /// The first entry on a window of `length` (possibly infinite), as time since its start;

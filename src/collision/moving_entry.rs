@@ -1,5 +1,6 @@
 //! Two moving balls that first touch while both still move, where the crossing is isolated:
-//! found lane-wise, without a branch.
+//! found on the first window's first open eighth (lane-wise in the friction batch:
+//! `batch/moving_entry_lanes.rs`).
 //!
 //! On a table most contacts come before either ball stops (on the first window), and most
 //! are transversal: the first window's entry on its first open eighth
@@ -20,7 +21,7 @@ use super::eighth_entry::eighth_entry;
 use super::exclusion::{OpenEighth, first_open_eighth, window_screened_out_at_once};
 use super::prefilter::PairInput;
 
-/// What [`while_moving`] settles about a pair's first window.
+/// What [`while_moving_one`] settles about a pair's first window.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct WhileMoving {
     /// The first contact, if it comes in the first window: its time, `∞` if that time is at
@@ -31,23 +32,16 @@ pub(crate) struct WhileMoving {
     pub screened_out: bool,
 }
 
-/// The first window of `pair` (both balls moving), where its first open eighth is isolated.
+/// The first window of `pair` (both balls moving), where its first open eighth is isolated,
+/// with fused multiply-adds in hardware where the CPU has them.
 ///
 /// The eighth is isolated when it holds a single root, or a single minimum (a grazing contact,
 /// an entry and an exit close together, or a near miss): the minimum is found first, by
 /// Newton on the slope; if the gap is negative there, the entry lies between the eighth's
 /// start and it; if not, and the minimum has converged and every later eighth is proven
-/// positive, the window holds no contact.
-#[inline(always)]
-pub(crate) fn while_moving(pair: &PairInput) -> WhileMoving {
-    let window = FirstWindow::of(pair);
-    let eighth = first_open_eighth(&window.gap, window.end);
-    settle(pair, &window, &eighth, false)
-}
-
-/// [`while_moving`] for one pair: the same answer, without the Newton steps where the window
-/// holds no isolated eighth (most pairs that reach the search), and with fused multiply-adds
-/// in hardware where the CPU has them.
+/// positive, the window holds no contact. Without the Newton steps where the window holds no
+/// isolated eighth (most pairs that reach the search); the batch's lane twin
+/// (`batch/moving_entry_lanes.rs`) takes every step in every lane: the same answer.
 pub(crate) fn while_moving_one(pair: &PairInput) -> WhileMoving {
     // The level of the batch (or the process): `simd`'s one dispatch point.
     crate::simd::dispatch_scalar(crate::simd::current(), WhileMovingOne(pair))
@@ -89,18 +83,13 @@ fn while_moving_one_portable(pair: &PairInput) -> WhileMoving {
     if !(eighth.one_root | eighth.one_dip) {
         return nothing; // what `settle` finds for these
     }
-    settle(pair, &window, &eighth, true)
+    settle(pair, &window, &eighth)
 }
 
-/// [`while_moving`]'s work on the first open eighth.
+/// [`while_moving_one`]'s work on the first open eighth.
 #[inline(always)]
-fn settle(
-    pair: &PairInput,
-    window: &FirstWindow,
-    eighth: &OpenEighth,
-    one_pair: bool,
-) -> WhileMoving {
-    let found = eighth_entry(&window.gap, window.end, eighth, window.qualifies, one_pair);
+fn settle(pair: &PairInput, window: &FirstWindow, eighth: &OpenEighth) -> WhileMoving {
+    let found = eighth_entry(&window.gap, window.end, eighth, window.qualifies);
     let t = found.entry * window.unit;
     let entry = match (found.found, t < pair.t_max) {
         (true, true) => t,
@@ -134,7 +123,7 @@ mod tests {
     #[test]
     fn a_head_on_contact_is_settled() {
         // 1 apart, closing at 4 m/s and both braking at 1 m/s²: |d| = 1 − 4t + t² = 0.1.
-        let t = while_moving(&pair([0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [-2.0, 0.0])).entry;
+        let t = while_moving_one(&pair([0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [-2.0, 0.0])).entry;
         let exact = 2.0 - (4.0f64 - 0.9).sqrt();
         assert!(
             (t - exact).abs() <= 2.0 * f64::EPSILON * exact,
@@ -147,7 +136,7 @@ mod tests {
         // 0.05 apart at contact distance 0.1, closing; then the same pair separating, which
         // is not a contact at 0 (SPEC) and is left to the search.
         let closing = pair([0.0, 0.0], [1.0, 0.0], [0.05, 0.0], [-1.0, 0.0]);
-        assert_eq!(while_moving(&closing).entry, 0.0);
+        assert_eq!(while_moving_one(&closing).entry, 0.0);
         assert_eq!(while_moving_one(&closing).entry, 0.0);
         assert_eq!(search(&closing), Some(0.0));
         let no_time = PairInput {
@@ -155,11 +144,11 @@ mod tests {
             ..closing
         };
         // No time at all: the contact at 0 is cut by the horizon, as the search cuts it.
-        assert_eq!(while_moving(&no_time).entry, f64::INFINITY);
+        assert_eq!(while_moving_one(&no_time).entry, f64::INFINITY);
         assert_eq!(while_moving_one(&no_time).entry, f64::INFINITY);
         assert_eq!(search(&no_time), None);
         let parting = pair([0.0, 0.0], [-1.0, 0.0], [0.05, 0.0], [1.0, 0.0]);
-        assert!(while_moving(&parting).entry.is_nan());
+        assert!(while_moving_one(&parting).entry.is_nan());
         assert!(while_moving_one(&parting).entry.is_nan());
     }
 
@@ -171,7 +160,7 @@ mod tests {
             pair([0.0, 0.0], [1.0, 0.0], [1.0, 0.0], [0.0, 0.0]),
             pair([0.0, 0.0], [2.0, 0.0], [1.0, 0.1 - 1e-12], [0.0, 0.0]),
         ] {
-            assert!(while_moving(&p).entry.is_nan(), "{p:?}");
+            assert!(while_moving_one(&p).entry.is_nan(), "{p:?}");
         }
     }
 
@@ -192,7 +181,7 @@ mod tests {
                 f64::INFINITY
             };
             let p = pair_of(a, b, rng.uniform(0.05, 1.0) * scale, t_max);
-            let t = while_moving(&p).entry;
+            let t = while_moving_one(&p).entry;
             if t.is_nan() {
                 continue;
             }

@@ -30,7 +30,7 @@ use crate::gap::Gap;
 /// magnitudes of its offset, velocity and acceleration, time scaled to the window) before the
 /// gap's sign at float times is no longer trusted at a dip: there, the gap's rounding is
 /// above `2⁻¹²` of `r²`.
-const NARROW: f64 = 1.0 / ((1u64 << 40) as f64);
+pub(crate) const NARROW: f64 = 1.0 / ((1u64 << 40) as f64);
 
 /// How close to 0 the separation must come, relative to the window's magnitudes, at a narrow
 /// dip that is a crossing: `2²⁰·ε` (see [`narrow_entry`]).

@@ -25,20 +25,18 @@
 
 use super::chord_normals::apart_across_chords;
 use super::eighth_entry::window_eighth;
-use super::length_unit::{LengthUnit, largest};
+use super::length_unit::LengthUnit;
 use super::path_bounds::{PathBounds, SEGMENT_BOXES};
 use super::stage_counts::{Stage, count};
 use super::straight::straight_window;
 use super::window_box::apart_on_window;
 use super::window_chord::apart_across_window_chord;
 use super::{
-    CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_finite_length,
-    bounded_length, search_window,
+    CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_length, search_window,
 };
 use crate::error::{InputError, check_contact_distance, check_horizon};
 use crate::gap::Gap;
 use crate::path::{Path, Segment};
-use nalgebra::SVector;
 
 /// The first time (absolute, as the paths' starts are) at which balls on paths `a` and `b`
 /// are `contact_distance` apart and starting to interpenetrate, searched from the later of the two
@@ -188,7 +186,7 @@ pub(crate) enum Prior {
     LanesLeft,
     /// As `LanesLeft`, and the first-window lanes (`batch/first_window_lanes.rs`) found the
     /// pair's first window screened out (no entry, the gap positive at its end): what its
-    /// search would find ([`PathFirstWindow::eighth_contact`]), so the walk starts after it.
+    /// search would find (the lane twin of [`window_eighth`]), so the walk starts after it.
     FirstWindowScreenedOut,
 }
 
@@ -390,7 +388,7 @@ impl<const D: usize> Window<'_, D> {
             count(Stage::WindowSearched);
             // Most entries are isolated on the window's first open eighth, and most windows
             // without one too: settled there by a few Newton steps, the rest searched.
-            let eighth = window_eighth::<D, true>(&gap, bounded_length(&gap, length), before);
+            let eighth = window_eighth(&gap, bounded_length(&gap, length), before);
             if eighth.found {
                 count(Stage::WindowEighth);
                 WindowSearch::Entry(eighth.entry)
@@ -410,70 +408,6 @@ impl<const D: usize> Window<'_, D> {
             }
             WindowSearch::NoEntry { ends_positive } => WindowStep::NoEntry { ends_positive },
         }
-    }
-}
-
-/// A pair's first window as the walk of [`first_contact_bounded`] forms it, for a batch to
-/// settle eight at a time: the segments of each path active at the pair's first time
-/// `start`, until the earlier of their ends `end` (finite); `largest`, the largest magnitude
-/// among both paths' values, from which with `radius` the pair's unit of length comes (as
-/// [`PathBounds`] notes it for paths whose segments are all non-empty); `t_max`, the horizon.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct PathFirstWindow<const D: usize> {
-    pub a: Segment<D>,
-    pub b: Segment<D>,
-    pub start: f64,
-    pub end: f64,
-    pub largest: f64,
-    pub radius: f64,
-    pub t_max: f64,
-}
-
-impl<const D: usize> PathFirstWindow<D> {
-    /// A placeholder: two balls at rest at the origin, on an empty window.
-    pub(crate) fn at_rest() -> Self {
-        let rest = Segment::at_rest(0.0, SVector::zeros());
-        Self {
-            a: rest,
-            b: rest,
-            start: 0.0,
-            end: 0.0,
-            largest: 0.0,
-            radius: 0.0,
-            t_max: 0.0,
-        }
-    }
-
-    /// What the pair's first window settles on its first open eighth ([`window_eighth`]),
-    /// where the relative acceleration is not zero (so that no closed form comes first): the
-    /// pair's answer where it finds an entry (its time, `∞` at or past the horizon; NaN
-    /// elsewhere), and whether it screens the window out (no entry, the gap positive at its
-    /// end). The screens the walk would run first are proofs that the balls are apart, which
-    /// such an entry rules out, and which would screen the window out just the same; and the
-    /// balls are apart at the start: so these are the walk's findings, to the bit. Without a
-    /// branch, so that a batch runs it lane-wise.
-    #[inline(always)]
-    pub(crate) fn eighth_contact(&self) -> (f64, bool) {
-        let unit = LengthUnit::of(largest([self.largest, self.radius, 0.0]));
-        let radius = unit.apply(self.radius) + unit.apply(0.0);
-        let (a, b) = (scaled(&self.a, unit), scaled(&self.b, unit));
-        let gap = window_gap(&a, &b, self.start, radius);
-        let before = apart_at_start(&gap);
-        // (A first window of paths whose segments all end but the last ends.)
-        let length = bounded_finite_length(self.end - self.start);
-        let eighth = window_eighth::<D, false>(&gap, length, before);
-        let accelerating = gap
-            .acceleration
-            .iter()
-            .fold(false, |any, &x| any | (x != 0.0));
-        let t = self.start + eighth.entry;
-        let contact = if t < self.t_max { t } else { f64::INFINITY };
-        let found = if eighth.found & accelerating {
-            contact
-        } else {
-            f64::NAN
-        };
-        (found, eighth.screened_out & accelerating)
     }
 }
 

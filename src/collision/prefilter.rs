@@ -6,8 +6,9 @@
 //! stays farther than the contact distance from the other's line of motion (on one side of
 //! it), whatever their timing. Both lines are tried. On random pairs on a table that settles
 //! nine in ten with two square roots and a few dozen operations, no division, no branch and no
-//! library call, so that a batch evaluates it lane-wise (the compiler vectorises
-//! [`screened_out_by_runs`] over a block of pairs) and sends only the survivors on.
+//! library call, so that a batch evaluates it lane-wise (its lane twin,
+//! `batch/prefilter_lanes.rs`, the same operations over the SIMD layer) and sends only the
+//! survivors on.
 //!
 //! Only proofs are taken: the separation must exceed the contact distance by a margin far
 //! above every rounding error made here, so a pair said never to touch has no contact, and the

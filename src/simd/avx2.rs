@@ -3,16 +3,16 @@
 
 use core::arch::x86_64::{
     __m128d, __m256d, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm_loadu_pd,
-    _mm256_add_pd, _mm256_and_si256, _mm256_andnot_pd, _mm256_blendv_pd, _mm256_castpd128_pd256,
-    _mm256_castsi256_pd, _mm256_cmp_pd, _mm256_cmpeq_epi64, _mm256_div_pd, _mm256_insertf128_pd,
-    _mm256_loadu_pd, _mm256_max_pd, _mm256_min_pd, _mm256_movemask_pd, _mm256_mul_pd,
-    _mm256_permute2f128_pd, _mm256_set_pd, _mm256_set1_epi64x, _mm256_set1_pd, _mm256_setr_epi64x,
-    _mm256_setzero_pd, _mm256_sqrt_pd, _mm256_storeu_pd, _mm256_sub_pd, _mm256_unpackhi_pd,
-    _mm256_unpacklo_pd,
+    _mm256_add_pd, _mm256_and_si256, _mm256_andnot_pd, _mm256_blendv_pd, _mm256_castpd_si256,
+    _mm256_castpd128_pd256, _mm256_castsi256_pd, _mm256_cmp_pd, _mm256_cmpeq_epi64, _mm256_div_pd,
+    _mm256_fmadd_pd, _mm256_insertf128_pd, _mm256_loadu_pd, _mm256_max_pd, _mm256_min_pd,
+    _mm256_movemask_pd, _mm256_mul_pd, _mm256_permute2f128_pd, _mm256_set_pd, _mm256_set1_epi64x,
+    _mm256_set1_pd, _mm256_setr_epi64x, _mm256_setzero_pd, _mm256_sqrt_pd, _mm256_storeu_pd,
+    _mm256_sub_epi64, _mm256_sub_pd, _mm256_unpackhi_pd, _mm256_unpacklo_pd,
 };
 
 use super::Level;
-use super::lanes::{LANES, MOST, Mask, Simd};
+use super::lanes::{EXPONENT, FRACTION, LANES, MOST, Mask, Simd};
 
 /// The AVX2 level's token: a value of it is the proof that the CPU has AVX2 and FMA
 /// ([`Level::Avx2Fma`]).
@@ -51,6 +51,16 @@ fn lanes_of_bits(bits: u8) -> __m256d {
         let select = _mm256_setr_epi64x(1, 2, 4, 8);
         let set = _mm256_and_si256(_mm256_set1_epi64x(i64::from(bits)), select);
         _mm256_castsi256_pd(_mm256_cmpeq_epi64(set, select))
+    }
+}
+
+/// Lanes `lanes::unit_scale`: the exponent field subtracted from its all-ones value.
+#[inline(always)]
+fn unit_scale(x: __m256d) -> __m256d {
+    unsafe {
+        let field = _mm256_set1_epi64x(EXPONENT as i64);
+        let bits = _mm256_and_si256(_mm256_castpd_si256(x), field);
+        _mm256_castsi256_pd(_mm256_sub_epi64(field, bits))
     }
 }
 
@@ -221,6 +231,27 @@ impl Simd for Avx2 {
             [
                 _mm256_blendv_pd(x[0], y[0], low),
                 _mm256_blendv_pd(x[1], y[1], high),
+            ]
+        }
+    }
+
+    #[inline(always)]
+    fn unit_scale(self, x: V) -> V {
+        [unit_scale(x[0]), unit_scale(x[1])]
+    }
+
+    #[inline(always)]
+    fn fraction_cleared(self, x: V) -> V {
+        let fraction = unsafe { _mm256_castsi256_pd(_mm256_set1_epi64x(FRACTION as i64)) };
+        both!(_mm256_andnot_pd, [fraction; 2], x)
+    }
+
+    #[inline(always)]
+    fn mul_add(self, x: V, y: V, z: V) -> V {
+        unsafe {
+            [
+                _mm256_fmadd_pd(x[0], y[0], z[0]),
+                _mm256_fmadd_pd(x[1], y[1], z[1]),
             ]
         }
     }

@@ -3,13 +3,15 @@
 
 use core::arch::x86_64::{
     __m512d, __mmask8, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm512_abs_pd,
-    _mm512_add_pd, _mm512_cmp_pd_mask, _mm512_div_pd, _mm512_loadu_epi64, _mm512_loadu_pd,
+    _mm512_add_pd, _mm512_and_si512, _mm512_andnot_si512, _mm512_castpd_si512, _mm512_castsi512_pd,
+    _mm512_cmp_pd_mask, _mm512_div_pd, _mm512_fmadd_pd, _mm512_loadu_epi64, _mm512_loadu_pd,
     _mm512_mask_blend_pd, _mm512_max_pd, _mm512_min_pd, _mm512_mul_pd, _mm512_permutex2var_pd,
-    _mm512_set1_pd, _mm512_setzero_pd, _mm512_sqrt_pd, _mm512_storeu_pd, _mm512_sub_pd,
+    _mm512_set1_epi64, _mm512_set1_pd, _mm512_setzero_pd, _mm512_sqrt_pd, _mm512_storeu_pd,
+    _mm512_sub_epi64, _mm512_sub_pd,
 };
 
 use super::Level;
-use super::lanes::{LANES, MOST, Mask, Simd};
+use super::lanes::{EXPONENT, FRACTION, LANES, MOST, Mask, Simd};
 
 /// The AVX-512 level's token: a value of it is the proof that the CPU has AVX-512 F, VL and
 /// DQ, AVX2 and FMA ([`Level::Avx512`]).
@@ -97,6 +99,28 @@ impl Simd for Avx512 {
     #[inline(always)]
     fn blend(self, bits: Mask, x: __m512d, y: __m512d) -> __m512d {
         unsafe { _mm512_mask_blend_pd(bits as __mmask8, x, y) }
+    }
+
+    #[inline(always)]
+    fn unit_scale(self, x: __m512d) -> __m512d {
+        unsafe {
+            let field = _mm512_set1_epi64(EXPONENT as i64);
+            let bits = _mm512_and_si512(_mm512_castpd_si512(x), field);
+            _mm512_castsi512_pd(_mm512_sub_epi64(field, bits))
+        }
+    }
+
+    #[inline(always)]
+    fn fraction_cleared(self, x: __m512d) -> __m512d {
+        unsafe {
+            let fraction = _mm512_set1_epi64(FRACTION as i64);
+            _mm512_castsi512_pd(_mm512_andnot_si512(fraction, _mm512_castpd_si512(x)))
+        }
+    }
+
+    #[inline(always)]
+    fn mul_add(self, x: __m512d, y: __m512d, z: __m512d) -> __m512d {
+        unsafe { _mm512_fmadd_pd(x, y, z) }
     }
 
     #[inline(always)]

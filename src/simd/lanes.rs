@@ -5,15 +5,18 @@
 //!
 //! Every operation gives the same bits at every level, to the NaN and the signed zero:
 //!
-//! - `add`, `sub`, `mul`, `div` and `sqrt` are IEEE-754's, correctly rounded (no fused
-//!   multiply-add is formed: there is no operation that would ask for one);
+//! - `add`, `sub`, `mul`, `div` and `sqrt` are IEEE-754's, correctly rounded, and
+//!   [`Simd::mul_add`] is the fused multiply-add, rounded once (`f64::mul_add`); no other
+//!   operation forms one;
 //! - [`Simd::min`] and [`Simd::max`] are `x < y ? x : y` and `x > y ? x : y` (what x86's
 //!   `minpd` and `maxpd` compute): the second operand where either is NaN or both are zeros,
 //!   unlike `f64::min`, which drops a NaN, and unlike NEON's `fmin`, which returns it; the
 //!   stages' proofs are written for these;
 //! - the comparisons are ordered (false with a NaN operand), but [`Simd::ne`], which is true
 //!   with a NaN operand;
-//! - [`Simd::blend`] takes the second operand where the mask's bit is set.
+//! - [`Simd::blend`] takes the second operand where the mask's bit is set;
+//! - [`Simd::unit_scale`] and [`Simd::fraction_cleared`] work on the bits (exact, NaN
+//!   included): [`unit_scale`] and [`fraction_cleared`].
 //!
 //! The portable level is the reference; the tests compare every level the CPU has with it.
 
@@ -50,7 +53,6 @@ pub(crate) trait Simd: Copy {
     /// The lanes of an array, lane `l` from element `l`.
     fn load(self, x: [f64; LANES]) -> Self::V;
     /// The lanes as an array, element `l` from lane `l`.
-    #[cfg_attr(not(test), expect(dead_code, reason = "the tests read lanes back"))]
     fn store(self, x: Self::V) -> [f64; LANES];
     /// Lanes `x + y`.
     fn add(self, x: Self::V, y: Self::V) -> Self::V;
@@ -66,10 +68,17 @@ pub(crate) trait Simd: Copy {
     fn max(self, x: Self::V, y: Self::V) -> Self::V;
     /// Lanes `|x|` (the sign bit cleared).
     fn abs(self, x: Self::V) -> Self::V;
+    /// Lanes `x·y + z`, rounded once.
+    fn mul_add(self, x: Self::V, y: Self::V, z: Self::V) -> Self::V;
     /// Lanes `√x`.
     fn sqrt(self, x: Self::V) -> Self::V;
     /// `y` where the mask's bit is set, else `x`.
     fn blend(self, bits: Mask, x: Self::V, y: Self::V) -> Self::V;
+    /// Lanes [`unit_scale`]`(x)`: the power of two that brings a normal `|x|` into `[2, 4)`.
+    fn unit_scale(self, x: Self::V) -> Self::V;
+    /// Lanes [`fraction_cleared`]`(x)`: for a normal `x`, the signed power of two at or below
+    /// `|x|`.
+    fn fraction_cleared(self, x: Self::V) -> Self::V;
     /// Lanes `x < y`.
     fn lt(self, x: Self::V, y: Self::V) -> Mask;
     /// Lanes `x > y`.
@@ -95,6 +104,31 @@ pub(crate) trait Simd: Copy {
         self.splat(0.0)
     }
 }
+
+/// The power of two that brings a normal `|x|` into `[2, 4)`: `2^(1024 − f)`, `f` the exponent
+/// field of `x` (its sign ignored), by an integer subtraction on the bits (normal for every
+/// field from 1 to 2046); `+∞` for a zero or subnormal `x` (field 0), `+0` for an infinite or
+/// NaN one (field 2047): either turns the numbers it scales into infinities or NaNs. The
+/// scalar reference of [`Simd::unit_scale`], and the unit of length's scale
+/// (`collision::length_unit`).
+#[inline(always)]
+pub(crate) fn unit_scale(x: f64) -> f64 {
+    f64::from_bits(EXPONENT - (x.to_bits() & EXPONENT))
+}
+
+/// `x` with its 52 fraction bits cleared (its sign and exponent kept): for a normal `x` the
+/// power of two at or below `|x|`, with `x`'s sign; `±0` for a subnormal, itself for a zero or
+/// an infinity, an infinity for a NaN. The scalar reference of [`Simd::fraction_cleared`].
+#[inline(always)]
+pub(crate) fn fraction_cleared(x: f64) -> f64 {
+    f64::from_bits(x.to_bits() & !FRACTION)
+}
+
+/// The fraction field's bits of an `f64`.
+pub(super) const FRACTION: u64 = (1 << 52) - 1;
+
+/// The exponent field's bits of an `f64`.
+pub(super) const EXPONENT: u64 = 0x7ff << 52;
 
 /// The records-to-lanes transposition written with scalar reads, for levels that have no
 /// faster one: lane `l` of vector `c` is `values[l·W + c]`.
@@ -148,6 +182,13 @@ mod tests {
                 s.abs(x),
                 s.sqrt(x),
                 s.blend(self.bits, x, y),
+                s.unit_scale(x),
+                s.fraction_cleared(x),
+                s.mul_add(
+                    x,
+                    y,
+                    s.load(self.records[..LANES].try_into().unwrap_or_default()),
+                ),
             ];
             let masks = [s.lt(x, y), s.gt(x, y), s.ge(x, y), s.eq(x, y), s.ne(x, y)];
             let records = &self.records;
@@ -162,7 +203,7 @@ mod tests {
             // Which NaN an arithmetic operation on two NaNs returns is not fixed (the compiler
             // may swap the operands of `+` and `·`): there a NaN counts as any NaN. The
             // selections (min, max, abs, blend, the loads and the transposition) by bits.
-            const ARITHMETIC: [usize; 5] = [2, 3, 4, 5, 9];
+            const ARITHMETIC: [usize; 6] = [2, 3, 4, 5, 9, 13];
             let mut out = Vec::new();
             for (k, v) in vectors.into_iter().enumerate() {
                 for x in s.store(v) {
@@ -250,8 +291,30 @@ mod tests {
         let mask = |k: usize| out[out.len() - 5 + k] as Mask;
         assert_eq!(mask(0), 0b1000_0000, "lt: ordered");
         assert_eq!(mask(4), 0b1101_0011, "ne: unordered");
+        // The unit scale: a normal number times it is in `[2, 4)`; `+∞` for a zero of either
+        // sign, `+0` for a NaN.
+        let inf = f64::INFINITY;
+        assert_eq!(lanes(11), bits([0.0, 2.0, inf, inf, 0.0, 1.0, 1.0, 2.0]));
+        assert_eq!(lanes(12), bits([inf, 1.0, 0.0, -0.0, inf, 2.0, 2.0, 1.0]));
+        // The fused multiply-add: rounded once (`x·y + z` with `z = −x·y` rounded gives the
+        // product's rounding error, 0 when rounded twice).
+        let third = 1.0 + f64::EPSILON;
+        let product = third * third;
+        let case = EveryOperation {
+            x: [third; LANES],
+            y: [third; LANES],
+            bits: 0,
+            records: std::array::from_fn(|i| if i < LANES { -product } else { 0.0 }),
+        };
+        let out = dispatch(Level::Portable, &case);
+        let fused = f64::from_bits(out[13 * LANES]);
+        assert_eq!(
+            fused,
+            f64::EPSILON * f64::EPSILON,
+            "the product's rounding error"
+        );
         // Records of 3: lane `l` of vector `c` is value `3·l + c`.
-        let three = 11 + MOST * 2;
+        let three = 14 + MOST * 2;
         assert_eq!(
             lanes(three + 1),
             bits(std::array::from_fn(|l| (3 * l + 1) as f64))

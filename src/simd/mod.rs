@@ -6,7 +6,8 @@
 //!   [`with_level`].
 //! - `Simd` (`lanes.rs`): the operations on a block of eight pairs, one `f64` per pair in a
 //!   vector and a bit per pair in a mask, with the semantics the stages' proofs rely on
-//!   (`min`/`max` as `x < y ? x : y`, ordered compares, `ne` unordered). One implementation
+//!   (`min`/`max` as `x < y ? x : y`, ordered compares, `ne` unordered, `mul_add` fused, two
+//!   exact operations on the bits for the power-of-two units). One implementation
 //!   per level, each a token type that only a CPU check makes: `Portable` (`[f64; 8]`
 //!   arrays, the reference), `Avx2` (two `__m256d`), `Avx512` (one `__m512d`, masks in `k`
 //!   registers), `Neon` (four `float64x2_t`).
@@ -30,7 +31,8 @@
 //! Why a small trait of our own rather than `pulp` or `fearless_simd`: the stages' proofs
 //! depend on the exact operations, their order and their NaN and signed-zero semantics
 //! (`minpd`'s, not IEEE `minNum`'s, which is what generic SIMD crates give on NEON); the
-//! trait states those in one place, with sixteen operations a stage needs and no dependency;
+//! trait states those in one place, with the score of operations the stages need and no
+//! dependency;
 //! and a stage written over it is read as the scalar proof it mirrors. Plain arrays left to
 //! the compiler's vectoriser were tried first and cost twice the intrinsics' time (masks
 //! packed from vectors of bools, rows gathered element by element).
@@ -61,7 +63,7 @@ pub(crate) use avx2::Avx2;
 #[cfg(target_arch = "x86_64")]
 pub(crate) use avx512::Avx512;
 pub(crate) use dispatch::{Kernel, dispatch, dispatch_scalar};
-pub(crate) use lanes::{LANES, MOST, Mask, Simd};
+pub(crate) use lanes::{LANES, MOST, Mask, Simd, fraction_cleared, unit_scale};
 pub use level::{Level, current, test_levels, with_level};
 #[cfg(target_arch = "aarch64")]
 pub(crate) use neon::Neon;

@@ -2,14 +2,15 @@
 //! the compares' lanes.
 
 use core::arch::aarch64::{
-    float64x2_t, uint64x2_t, vabsq_f64, vaddq_f64, vbslq_f64, vceqq_f64, vcgeq_f64, vcgtq_f64,
-    vcltq_f64, vdivq_f64, vdupq_n_f64, vdupq_n_u64, vgetq_lane_u64, vld1q_f64, vld1q_u64,
-    vmulq_f64, vmvnq_u32, vreinterpretq_u32_u64, vreinterpretq_u64_u32, vsqrtq_f64, vst1q_f64,
-    vsubq_f64, vtstq_u64,
+    float64x2_t, uint64x2_t, vabsq_f64, vaddq_f64, vandq_u64, vbicq_u64, vbslq_f64, vceqq_f64,
+    vcgeq_f64, vcgtq_f64, vcltq_f64, vdivq_f64, vdupq_n_f64, vdupq_n_u64, vfmaq_f64,
+    vgetq_lane_u64, vld1q_f64, vld1q_u64, vmulq_f64, vmvnq_u32, vreinterpretq_f64_u64,
+    vreinterpretq_u32_u64, vreinterpretq_u64_f64, vreinterpretq_u64_u32, vsqrtq_f64, vst1q_f64,
+    vsubq_f64, vsubq_u64, vtstq_u64,
 };
 
 use super::Level;
-use super::lanes::{LANES, MOST, Mask, Simd, transposed_by_reads};
+use super::lanes::{EXPONENT, FRACTION, LANES, MOST, Mask, Simd, transposed_by_reads};
 
 /// The NEON level's token: a value of it is the proof that the CPU has NEON
 /// ([`Level::Neon`]; every aarch64 CPU does).
@@ -124,6 +125,29 @@ impl Simd for Neon {
             let lanes = vtstq_u64(vdupq_n_u64(u64::from(bits)), select);
             vbslq_f64(lanes, y[q], x[q])
         })
+    }
+
+    #[inline(always)]
+    fn unit_scale(self, x: V) -> V {
+        x.map(|x| unsafe {
+            let field = vdupq_n_u64(EXPONENT);
+            let bits = vandq_u64(vreinterpretq_u64_f64(x), field);
+            vreinterpretq_f64_u64(vsubq_u64(field, bits))
+        })
+    }
+
+    #[inline(always)]
+    fn fraction_cleared(self, x: V) -> V {
+        x.map(|x| unsafe {
+            let bits = vbicq_u64(vreinterpretq_u64_f64(x), vdupq_n_u64(FRACTION));
+            vreinterpretq_f64_u64(bits)
+        })
+    }
+
+    #[inline(always)]
+    fn mul_add(self, x: V, y: V, z: V) -> V {
+        // `vfmaq_f64(a, b, c)` is `a + b·c`, rounded once.
+        std::array::from_fn(|q| unsafe { vfmaq_f64(z[q], x[q], y[q]) })
     }
 
     #[inline(always)]

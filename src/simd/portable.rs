@@ -2,7 +2,7 @@
 //! lanes branch-free (the compiler vectorises it for the target's baseline: SSE2 on x86-64,
 //! NEON on aarch64). The reference the other levels are tested against.
 
-use super::lanes::{LANES, MOST, Mask, Simd, transposed_by_reads};
+use super::lanes::{LANES, MOST, Mask, Simd, fraction_cleared, transposed_by_reads, unit_scale};
 
 /// The portable level's token (every CPU runs it).
 #[derive(Clone, Copy, Debug, Default)]
@@ -83,6 +83,21 @@ impl Simd for Portable {
     #[inline(always)]
     fn blend(self, bits: Mask, x: Self::V, y: Self::V) -> Self::V {
         std::array::from_fn(|l| if bits >> l & 1 != 0 { y[l] } else { x[l] })
+    }
+
+    #[inline(always)]
+    fn unit_scale(self, x: Self::V) -> Self::V {
+        x.map(unit_scale)
+    }
+
+    #[inline(always)]
+    fn fraction_cleared(self, x: Self::V) -> Self::V {
+        x.map(fraction_cleared)
+    }
+
+    #[inline(always)]
+    fn mul_add(self, x: Self::V, y: Self::V, z: Self::V) -> Self::V {
+        std::array::from_fn(|l| x[l].mul_add(y[l], z[l]))
     }
 
     #[inline(always)]
