@@ -8,7 +8,7 @@
 //!   `w = max(e·u, w_min)`, `u` the speed at which they approached (the tangential
 //!   components are kept: smooth balls; see [`parting_speed`] for `w_min`); a ball's second
 //!   and later events at one instant are elastic (see [`restitution_at`]), and a pair that
-//!   a later event of the instant leaves parting too slowly collides again (`Run::collide`);
+//!   a later event of the instant leaves parting too slowly collides again (`collide_pair`);
 //! - a ball touches a wall: its velocity's component normal to the wall is reflected;
 //! - a ball touches a segment, a circle or a plane of the table: its velocity's component
 //!   normal to the object (from the contact point to its centre) is reflected with the
@@ -245,14 +245,13 @@ pub fn simulate_observed(
             last_event: f64::NEG_INFINITY,
         })
         .collect();
-    // The pairs that collided at the current instant (see `Run::collide`).
+    // The pairs that collided at the current instant (see `collide_pair`).
     let mut instant_pairs: Vec<[usize; 2]> = Vec::new();
     // The balls whose velocity an event changed, whose pairs of the instant are followed up
     // (kept from event to event: no allocation per event).
     let mut moved: Vec<usize> = Vec::new();
     let mut end = 0.0;
     let mut stopped = false;
-    let run = Run { restitution: e };
     'events: while events.len() < max_events {
         let Some(event) = calendar.next_event() else {
             break;
@@ -265,7 +264,7 @@ pub fn simulate_observed(
         end = t;
         let (i, j, wall, object) = match event {
             Event::Collision(c) => {
-                run.collide(&mut calendar, &mut records, [c.i, c.j], t, false)?;
+                collide_pair(e, &mut calendar, &mut records, [c.i, c.j], t, false)?;
                 instant_pairs.push([c.i, c.j]);
                 moved.extend([c.i, c.j]);
                 (c.i, Some(c.j), None, None)
@@ -341,7 +340,7 @@ pub fn simulate_observed(
                     break 'events;
                 }
                 let pair = [x.min(y), x.max(y)];
-                if run.collide(&mut calendar, &mut records, pair, t, true)? {
+                if collide_pair(e, &mut calendar, &mut records, pair, t, true)? {
                     log(&mut events, pair[0], Some(pair[1]), None, None)?;
                     moved.extend(pair);
                 }
@@ -383,14 +382,9 @@ pub fn simulate_observed(
     })
 }
 
-/// What every collision of a run needs besides the calendar and the balls' records.
-struct Run {
-    restitution: f64,
-}
-
-/// What the event loop reads and writes of a ball besides its path (and, in a table scene,
-/// whether it is captured), in one record aligned to stay within one cache line: in a large
-/// scene each ball an event touches is a cache miss, one here rather than one per array.
+/// What the event loop reads and writes of a ball besides its path, in one record aligned to
+/// stay within one cache line: in a large scene each ball an event touches is a cache miss,
+/// one here rather than one per array.
 #[repr(C, align(32))]
 struct BallRecord {
     friction: f64,
@@ -400,64 +394,62 @@ struct BallRecord {
     last_event: f64,
 }
 
-impl Run {
-    /// The collision of balls `pair` at `t`: their new velocities (see [`collide`]) go into
-    /// the calendar. A `follow_up` collision is one of a pair that collided earlier at this
-    /// instant, after one of them has changed its velocity again (at a wall, or against a
-    /// third ball): it still touches, and it collides again only if it no longer parts as a
-    /// collision would make it (elastically, as every later event at one instant). Without
-    /// this, a pair left parting slower than its [`parting_speed`] while friction presses it
-    /// together (a ball against a cushion with a slower one behind it) sinks in unseen:
-    /// rounding may put its centres a hair within the contact distance, where the gap never
-    /// enters from outside. Whether the velocities changed.
-    fn collide(
-        &self,
-        calendar: &mut CollisionSchedule<2>,
-        records: &mut [BallRecord],
-        [i, j]: [usize; 2],
-        t: f64,
-        follow_up: bool,
-    ) -> Result<bool, InputError> {
-        let (a, b) = (at(calendar, i, t), at(calendar, j, t));
-        let frictions = [records[i].friction, records[j].friction];
-        let masses = [records[i].mass, records[j].mass];
-        // A pair moving as one body (the same friction, and velocities the same to within
-        // rounding, `AS_ONE`) neither parts nor presses together but at rounding level. Its
-        // follow-up leaves it so; reported (it approached at rounding level), it takes one
-        // velocity, their momentum's, exactly the same for both, so that every derivative of
-        // its gap is 0 and the calendar never reports it again until a later update makes it
-        // approach (touching or overlapping balls that approach collide at once). Nudging it
-        // apart at the least parting speed instead changed both velocities by far more than
-        // their difference, and each change followed up the balls' other pairs of the instant:
-        // along a touching train of k balls (a Newton's cradle) that ran to O(k³) events at
-        // one instant.
-        let as_one = frictions[0] == frictions[1]
-            && (a.1 - b.1).norm() <= AS_ONE * (a.1.norm() + b.1.norm());
-        let (va, vb) = match (as_one, follow_up) {
-            (true, true) => return Ok(false),
-            (true, false) => {
-                let v = one_velocity(a.1, b.1, masses);
-                (v, v)
-            }
-            (false, _) => {
-                let contact = records[i].radius + records[j].radius;
-                let last = [records[i].last_event, records[j].last_event];
-                let e = restitution_at(self.restitution, t, last);
-                collide(a, b, masses, frictions, contact, e)
-            }
-        };
-        let changed = (va, vb) != (a.1, b.1);
-        if follow_up && !changed {
-            return Ok(false);
+/// The collision of balls `pair` at `t`: their new velocities (see [`collide`]) go into
+/// the calendar. A `follow_up` collision is one of a pair that collided earlier at this
+/// instant, after one of them has changed its velocity again (at a wall, or against a
+/// third ball): it still touches, and it collides again only if it no longer parts as a
+/// collision would make it (elastically, as every later event at one instant). Without
+/// this, a pair left parting slower than its [`parting_speed`] while friction presses it
+/// together (a ball against a cushion with a slower one behind it) sinks in unseen:
+/// rounding may put its centres a hair within the contact distance, where the gap never
+/// enters from outside. Whether the velocities changed.
+fn collide_pair(
+    restitution: f64,
+    calendar: &mut CollisionSchedule<2>,
+    records: &mut [BallRecord],
+    [i, j]: [usize; 2],
+    t: f64,
+    follow_up: bool,
+) -> Result<bool, InputError> {
+    let (a, b) = (at(calendar, i, t), at(calendar, j, t));
+    let frictions = [records[i].friction, records[j].friction];
+    let masses = [records[i].mass, records[j].mass];
+    // A pair moving as one body (the same friction, and velocities the same to within
+    // rounding, `AS_ONE`) neither parts nor presses together but at rounding level. Its
+    // follow-up leaves it so; reported (it approached at rounding level), it takes one
+    // velocity, their momentum's, exactly the same for both, so that every derivative of
+    // its gap is 0 and the calendar never reports it again until a later update makes it
+    // approach (touching or overlapping balls that approach collide at once). Nudging it
+    // apart at the least parting speed instead changed both velocities by far more than
+    // their difference, and each change followed up the balls' other pairs of the instant:
+    // along a touching train of k balls (a Newton's cradle) that ran to O(k³) events at
+    // one instant.
+    let as_one =
+        frictions[0] == frictions[1] && (a.1 - b.1).norm() <= AS_ONE * (a.1.norm() + b.1.norm());
+    let (va, vb) = match (as_one, follow_up) {
+        (true, true) => return Ok(false),
+        (true, false) => {
+            let v = one_velocity(a.1, b.1, masses);
+            (v, v)
         }
-        (records[i].last_event, records[j].last_event) = (t, t);
-        let new = [
-            Ball::from_checked(a.0.into(), va.into(), frictions[0]),
-            Ball::from_checked(b.0.into(), vb.into(), frictions[1]),
-        ];
-        calendar.update_balls(&[i, j], t, &new)?;
-        Ok(changed)
+        (false, _) => {
+            let contact = records[i].radius + records[j].radius;
+            let last = [records[i].last_event, records[j].last_event];
+            let e = restitution_at(restitution, t, last);
+            collide(a, b, masses, frictions, contact, e)
+        }
+    };
+    let changed = (va, vb) != (a.1, b.1);
+    if follow_up && !changed {
+        return Ok(false);
     }
+    (records[i].last_event, records[j].last_event) = (t, t);
+    let new = [
+        Ball::from_checked(a.0.into(), va.into(), frictions[0]),
+        Ball::from_checked(b.0.into(), vb.into(), frictions[1]),
+    ];
+    calendar.update_balls(&[i, j], t, &new)?;
+    Ok(changed)
 }
 
 /// The error for a run stuck at one instant: more than `most` events at `t`, the last
@@ -494,7 +486,7 @@ fn reflected(v: Vector2<f64>, n: Vector2<f64>, e: f64) -> Vector2<f64> {
     }
 }
 
-/// The one velocity of two balls moving as one body (see [`Run::collide`]): their momentum's,
+/// The one velocity of two balls moving as one body (see [`collide_pair`]): their momentum's,
 /// `(m_a·v_a + m_b·v_b)/(m_a + m_b)`, from the mass ratio as in [`collide`] (no overflow for
 /// any masses).
 fn one_velocity(va: Vector2<f64>, vb: Vector2<f64>, masses: [f64; 2]) -> Vector2<f64> {
@@ -565,7 +557,7 @@ fn collide(
     // enough, as for `least` below: a pair parted at `rounding` by an earlier event of the
     // instant forms its parting speed again from the new velocities up to a few ulps below
     // it, and moving it up to `rounding` once more changes a velocity by an ulp, so that its
-    // follow-up (`Run::collide`) collides it again, without end (a frictionless gas at
+    // follow-up (`collide_pair`) collides it again, without end (a frictionless gas at
     // restitution 0 stopped with "no progress" after 1,000 + 64·N such events at one
     // instant).
     let target = (e * -parting).max(rounding);
@@ -633,7 +625,7 @@ const SLACK: f64 = 1.0 / 256.0;
 /// See [`parting_speed`].
 const ROUNDING: f64 = 1.0 / (1u64 << 40) as f64;
 /// A pair whose velocities differ by at most this part of their speeds moves as one body
-/// ([`Run::collide`]): the rounding of an exchange along a line of centres off the axes (a
+/// ([`collide_pair`]): the rounding of an exchange along a line of centres off the axes (a
 /// few ulps), far below the least parting speed ([`ROUNDING`]) a collision gives.
 const AS_ONE: f64 = 1.0 / (1u64 << 46) as f64;
 /// See [`parting_speed`]: twice the rise of a resting contact's bounces, relative to the
