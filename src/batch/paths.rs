@@ -534,6 +534,7 @@ pub(super) fn check_side<const D: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::simd::Level;
     use crate::test_path_rows::RowSpec;
     use crate::test_rng::Rng;
 
@@ -559,24 +560,24 @@ mod tests {
 
     /// The chunk at every level the CPU has gives the portable copy's bits, which are the
     /// single query's, in rows of 2 and 3 (the lanes' shapes) and of 4 (no lanes).
-    fn every_level_agrees_with_the_portable_code_bit_for_bit<const K: usize>() {
+    fn every_level_agrees_with_the_portable_code_bit_for_bit(k: usize) {
         let n = 4_000;
-        let (start_a, [pos_a, vel_a, acc_a]) = random_rows(n, 1, K);
-        let (start_b, [pos_b, vel_b, acc_b]) = random_rows(n, 2, K);
+        let (start_a, [pos_a, vel_a, acc_a]) = random_rows(n, 1, k);
+        let (start_b, [pos_b, vel_b, acc_b]) = random_rows(n, 2, k);
         let pairs = PathPairs {
             a: PathRows {
                 start: &start_a,
                 pos: &pos_a,
                 vel: &vel_a,
                 acc: &acc_a,
-                segments: K,
+                segments: k,
             },
             b: PathRows {
                 start: &start_b,
                 pos: &pos_b,
                 vel: &vel_b,
                 acc: &acc_b,
-                segments: K,
+                segments: k,
             },
             contact_distance: PerPair::All(0.3),
             t_max: PerPair::All(f64::INFINITY),
@@ -584,8 +585,13 @@ mod tests {
         let shared = check_path_pairs(&pairs, n).expect("valid");
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         let mut portable = vec![0.0; n];
-        let done = path_chunk(crate::simd::Portable, &pairs, 0, &mut portable, &shared);
-        assert_eq!(done, Ok(()));
+        let chunk = PathChunk {
+            pairs: &pairs,
+            offset: 0,
+            chunk: &mut portable,
+            shared: &shared,
+        };
+        assert_eq!(dispatch(Level::Portable, chunk), Ok(()));
         let hits = portable.iter().filter(|t| t.is_finite()).count();
         assert!(hits > 400, "{hits} hits: the set should exercise contacts");
         // The single query's bits, pair by pair.
@@ -609,23 +615,23 @@ mod tests {
             };
             assert_eq!(dispatch(level, chunk), Ok(()));
             assert_eq!(bits(&portable), bits(&copy), "{level}");
-            eprintln!("path chunk in rows of {K} at {level}: the portable copy's bits");
+            eprintln!("path chunk in rows of {k} at {level}: the portable copy's bits");
         }
     }
 
     #[test]
     fn every_level_agrees_with_the_portable_code_bit_for_bit_in_rows_of_two() {
-        every_level_agrees_with_the_portable_code_bit_for_bit::<2>();
+        every_level_agrees_with_the_portable_code_bit_for_bit(2);
     }
 
     #[test]
     fn every_level_agrees_with_the_portable_code_bit_for_bit_in_rows_of_three() {
-        every_level_agrees_with_the_portable_code_bit_for_bit::<3>();
+        every_level_agrees_with_the_portable_code_bit_for_bit(3);
     }
 
     #[test]
     fn every_level_agrees_with_the_portable_code_bit_for_bit_in_rows_of_four() {
-        every_level_agrees_with_the_portable_code_bit_for_bit::<4>();
+        every_level_agrees_with_the_portable_code_bit_for_bit(4);
     }
 
     /// The same paths in rows of `k` and padded to rows of `k + 3` (an extra `+∞` row or more).

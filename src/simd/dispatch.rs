@@ -40,11 +40,19 @@ pub(crate) fn dispatch<K: Kernel>(level: Level, kernel: K) -> K::Output {
         Level::Neon => {
             // (NEON is the aarch64 baseline: no shim.)
             if let Some(s) = super::Neon::new() {
-                return kernel.run(s);
+                return on_neon(s, kernel);
             }
         }
         Level::Portable => {}
     }
+    on_portable(kernel)
+}
+
+/// `kernel` on the portable operations, as a function of its own: `dispatch` is inlined into
+/// each caller, and with the portable copy inside it every caller (each test included) would
+/// compile the whole kernel again, at a build cost that doubled the test build.
+#[inline(never)]
+fn on_portable<K: Kernel>(kernel: K) -> K::Output {
     kernel.run(Portable)
 }
 
@@ -61,7 +69,14 @@ pub(crate) fn dispatch_scalar<K: Kernel>(level: Level, kernel: K) -> K::Output {
         return unsafe { on_fma(kernel) };
     }
     let _ = level;
-    kernel.run(Portable)
+    on_portable(kernel)
+}
+
+/// `kernel` on NEON, a function of its own for the reason `on_portable` is.
+#[cfg(target_arch = "aarch64")]
+#[inline(never)]
+fn on_neon<K: Kernel>(s: super::Neon, kernel: K) -> K::Output {
+    kernel.run(s)
 }
 
 /// `kernel` compiled with FMA, on the portable operations.
