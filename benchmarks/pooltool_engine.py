@@ -172,7 +172,7 @@ def shots(scale: float = 1.0) -> list[tuple[str, Any]]:
 
 
 def _rounds(ways: dict[str, Any], systems: list[Any], runs: int, stock_runs: int) -> dict:
-    """Each way's median time per shot over ``runs`` rounds (stock's over the first
+    """Each way's time per shot in each of ``runs`` rounds (stock's in the first
     ``stock_runs``), the ways taking turns within a round so that a change of the machine's
     load falls on all of them."""
     times: dict[str, list[float]] = {name: [] for name in ways}
@@ -183,7 +183,7 @@ def _rounds(ways: dict[str, Any], systems: list[Any], runs: int, stock_runs: int
             start = time.perf_counter()
             way(systems)
             times[name].append((time.perf_counter() - start) / len(systems))
-    return {name: statistics.median(t) for name, t in times.items()}
+    return times
 
 
 def _pairs(n: int) -> tuple[Any, ...]:
@@ -288,7 +288,14 @@ def main(argv: list[str] | None = None) -> int:
     pairs = _pairs(1_000_000)
     ways["pairs 1"] = lambda ss: bc.collision_times(*pairs, num_threads=1)
     ways["pairs 2"] = lambda ss: bc.collision_times(*pairs, num_threads=2)
-    median = _rounds(ways, systems, args.runs, args.stock_runs)
+    rounds = _rounds(ways, systems, args.runs, args.stock_runs)
+    median = {name: statistics.median(t) for name, t in rounds.items()}
+
+    def over(one: str, two: str) -> float:
+        """The median of the rounds' ratios of way ``one`` to way ``two`` (each round's
+        two ran a moment apart, under the same load)."""
+        return statistics.median(a / b for a, b in zip(rounds[one], rounds[two]))
+
     pairs_1, pairs_2 = (median.pop(k) * len(systems) for k in ("pairs 1", "pairs 2"))
     stock, stock_drop = median.pop("stock"), median.pop("stock drop")
     events = sum(len(s.events) for s in (bcp.simulate(x) for x in systems))
@@ -299,9 +306,10 @@ def main(argv: list[str] | None = None) -> int:
     for name, t in median.items():
         against = stock_drop if name.endswith("drop") else stock
         print(f"{name:<10} {t * 1e6:>9.1f} us {against / t:>9.1f}x")
-    print(f"2 threads over 1: {median['many 1'] / median['many 2']:.2f}x (simulate_many), ", end="")
-    print(f"{median['engine 1'] / median['engine 2']:.2f}x (the engine alone), ", end="")
-    print(f"{pairs_1 / pairs_2:.2f}x (collision_times: ", end="")
+    print("2 threads over 1 (the median of the rounds' ratios): ", end="")
+    print(f"{over('many 1', 'many 2'):.2f}x (simulate_many), ", end="")
+    print(f"{over('engine 1', 'engine 2'):.2f}x (the engine alone), ", end="")
+    print(f"{over('pairs 1', 'pairs 2'):.2f}x (collision_times: ", end="")
     print(f"{pairs_1 * 1e3:.1f} / {pairs_2 * 1e3:.1f} ms)")
     shares = _thread_shares(lambda: _core.simulate_shots(**inputs, num_threads=2), args.runs)
     if shares:

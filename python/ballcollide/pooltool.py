@@ -45,12 +45,9 @@ True
 
 from __future__ import annotations
 
-import contextlib
 import functools
 import gc
 import math
-import os
-import threading
 import weakref
 from collections.abc import Sequence
 from typing import Any, Callable
@@ -645,8 +642,7 @@ def simulate_many(
     ``num_threads``), returned as arrays (:class:`ShotResults`), which cost a small part of
     building pooltool objects; :meth:`ShotResults.to_system` builds shot ``k``'s ``System``.
     ``history=True`` also computes every ball's state at every event (so that ``to_system``
-    needs no second run). From 16 shots on more than one thread, a thread of its own reads
-    the later shots' pooltool objects (which holds the GIL) while the first quarter plays.
+    needs no second run).
     Raises :class:`UnsupportedError` as :func:`simulate` does for pooltool's default engine,
     ``ballcollide.InputError`` naming the shot (``shots[3].position``) for one the engine
     rejects, and ``ValueError`` for a cue whose ``cue_ball_id`` is not among its shot's
@@ -674,53 +670,10 @@ def simulate_many(
             num_threads=num_threads,
         )
 
-    if not _overlapping(len(shots), num_threads):
-        return ShotResults(shots, played(_inputs(shots)), contact_rule)
-    # Reading the pooltool objects holds the GIL, on one thread: some 15 % of the whole on
-    # one thread, which no thread count would share. So the first quarter of the shots is
-    # read, and played while a thread of its own reads the rest (the engine does not need
-    # the GIL), then the rest is played.
-    split = len(shots) // 4
-    rest: dict[str, Any] = {}
-
-    def read_rest() -> None:
-        # Whatever it raises, the single call below raises again, in its place.
-        with contextlib.suppress(Exception):
-            rest["inputs"] = _inputs(shots[split:])
-
-    first_inputs = _inputs(shots[:split])
-    reader = threading.Thread(target=read_rest, name="ballcollide-read", daemon=True)
-    reader.start()
-    blocks = None
-    try:
-        first = played(first_inputs)
-        reader.join()
-        if "inputs" in rest:
-            blocks = [first, played(rest["inputs"])]
-    except (InputError, ValueError):
-        reader.join()
-    if blocks is None:
-        # The error a single call gives (the first bad shot's, named by its place in the
-        # whole, as are its arrays'): the shots played again as one call, which raises it.
-        return ShotResults(shots, played(_inputs(shots)), contact_rule)
-    return ShotResults(shots, _joined(blocks), contact_rule)
-
-
-#: From how many shots :func:`simulate_many` reads the later ones while it plays the first:
-#: below, the reading (~30 µs a shot) costs less than starting a thread for it.
-_OVERLAP_FROM = 16
-
-
-def _overlapping(shots: int, num_threads: Any) -> bool:
-    """Whether :func:`simulate_many` reads the later shots while it plays the first: from
-    :data:`_OVERLAP_FROM` shots, on more than one thread (``num_threads`` an int ≥ 2, or
-    ``None`` on a machine of more than one core). One thread stays one thread; a
-    ``num_threads`` of another kind is left to the call to check."""
-    if shots < _OVERLAP_FROM:
-        return False
-    if num_threads is None:
-        return (os.cpu_count() or 1) > 1
-    return isinstance(num_threads, int) and not isinstance(num_threads, bool) and num_threads > 1
+    # The reading holds the GIL, on this thread alone. It is not overlapped with the engine:
+    # the engine's threads keep every core busy, so a reading thread would only take turns
+    # with them (measured on 2 cores: no gain).
+    return ShotResults(shots, played(_inputs(shots)), contact_rule)
 
 
 #: The results of ``_core.simulate_shots`` that are offsets into the others (one per shot, and

@@ -1,7 +1,8 @@
 //! `_pooltool_inputs`: pooltool `System`s read into [`simulate_shots`]' arguments, for
 //! ballcollide.pooltool's `simulate` and `simulate_many` (its serial part): each shot's
-//! balls, cue and table, a few hundred attribute reads, about 45 µs a shot in Python on the
-//! benchmark's shots and 24 µs here.
+//! balls, cue and table, a few hundred attribute reads, ~34 µs a shot on the benchmark's
+//! shots (each made with a table of its own), ~6 µs on copies of one `System` (whose
+//! tables share their parts).
 //!
 //! [`simulate_shots`]: super::shots::simulate_shots
 
@@ -42,9 +43,7 @@ const PARAM_FIELDS: [&str; 10] = [
 pub(super) fn pooltool_inputs<'py>(shots: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
     let py = shots.py();
     let shots: Vec<Bound<'py, PyAny>> = shots.try_iter()?.collect::<PyResult<_>>()?;
-    let mut tables = Vec::new();
-    // Each table read so far, by identity (the tables are held meanwhile, by their shots).
-    let mut table_of: HashMap<usize, usize> = HashMap::new();
+    let mut tables = TableReader::default();
     // Each parameter set's row, read once (balls often share one: a rack's, a game's).
     let mut param_rows: HashMap<usize, [f64; 10]> = HashMap::new();
     let mut shot_table = Vec::with_capacity(shots.len());
@@ -54,12 +53,7 @@ pub(super) fn pooltool_inputs<'py>(shots: &Bound<'py, PyAny>) -> PyResult<Bound<
     let mut cue = Vec::with_capacity(8 * shots.len());
     for (k, system) in shots.iter().enumerate() {
         let table = system.getattr(intern!(py, "table"))?;
-        let next = table_of.len();
-        let t = *table_of.entry(table.as_ptr() as usize).or_insert(next);
-        if t == next {
-            tables.push(table_arrays(&table)?);
-        }
-        shot_table.push(t as f64);
+        shot_table.push(tables.index_of(&table)? as f64);
 
         let balls = dict_values(&system.getattr(intern!(py, "balls"))?)?;
         let mut moving = false;
@@ -132,7 +126,7 @@ pub(super) fn pooltool_inputs<'py>(shots: &Bound<'py, PyAny>) -> PyResult<Bound<
 
     let n_balls = s.len();
     let dict = PyDict::new(py);
-    dict.set_item("tables", PyList::new(py, tables)?)?;
+    dict.set_item("tables", PyList::new(py, tables.into_arrays(py)?)?)?;
     dict.set_item("shot_table", PyArray1::from_vec(py, shot_table))?;
     dict.set_item("ball_start", PyArray1::from_vec(py, ball_start))?;
     dict.set_item("rvw", PyArray1::from_vec(py, rvw).reshape([n_balls, 3, 3])?)?;
@@ -149,45 +143,130 @@ pub(super) fn pooltool_inputs<'py>(shots: &Bound<'py, PyAny>) -> PyResult<Bound<
     Ok(dict)
 }
 
-/// A pooltool table as `simulate_shots`' `(linear, circular, pockets)`: rows `(p1x, p1y,
-/// p2x, p2y, height, direction)`, `(cx, cy, radius, height)` and `(cx, cy, radius, depth)`.
-fn table_arrays<'py>(table: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyTuple>> {
-    let py = table.py();
-    let segments = table.getattr(intern!(py, "cushion_segments"))?;
-    let mut linear = Vec::new();
-    for c in dict_values(&segments.getattr(intern!(py, "linear"))?)? {
-        let [x1, y1] = xy(&c, intern!(py, "p1"))?;
-        let [x2, y2] = xy(&c, intern!(py, "p2"))?;
-        let height = field(&c, intern!(py, "height"))?;
-        let direction = field(&c, intern!(py, "direction"))?;
-        linear.extend([x1, y1, x2, y2, height, direction]);
-    }
-    // Rows `(cx, cy, radius, last)`: a circular cushion's height, a pocket's depth.
-    let discs = |items: Vec<Bound<'py, PyAny>>, last: &Bound<'py, PyString>| {
-        let mut rows = Vec::with_capacity(4 * items.len());
-        for c in items {
-            let [x, y] = xy(&c, intern!(py, "center"))?;
-            let radius = field(&c, intern!(py, "radius"))?;
-            rows.extend([x, y, radius, field(&c, last)?]);
+/// A table's rows for `simulate_shots`: `(linear, circular, pockets)`, rows `(p1x, p1y, p2x,
+/// p2y, height, direction)`, `(cx, cy, radius, height)` and `(cx, cy, radius, depth)`.
+type TableRows = [Vec<f64>; 3];
+
+/// The shots' tables, each distinct one read into rows once.
+///
+/// Every shot has a table object of its own when its `System` is a copy (`System.copy()`
+/// copies the table), and reading one takes a few hundred attribute reads, most of the
+/// serial part of `simulate_many` (21 of 28 µs a shot on the benchmark's shots). But the
+/// copies share their parts: pooltool's cushion segments are frozen and `copy()` returns the
+/// segment itself, and a copied pocket keeps its `center` array. So the parts are read once
+/// each by identity, and tables of equal rows (to the bit) share one index, so that the
+/// engine also builds each distinct table once. Each part read is kept alive here for the
+/// call, so that no address can be reused by another object meanwhile.
+#[derive(Default)]
+struct TableReader<'py> {
+    /// Each table's index, by the table object's identity.
+    by_object: HashMap<usize, (Bound<'py, PyAny>, usize)>,
+    /// Each linear cushion's row and circular cushion's row, by the segment's identity.
+    segments: HashMap<usize, (Bound<'py, PyAny>, Vec<f64>)>,
+    /// Each pocket centre's `(x, y)`, by the array's identity.
+    centres: HashMap<usize, (Bound<'py, PyAny>, [f64; 2])>,
+    /// Each distinct table's index, by its rows' bits.
+    by_rows: HashMap<[Vec<u64>; 3], usize>,
+    /// The distinct tables' rows, in index order.
+    rows: Vec<TableRows>,
+}
+
+impl<'py> TableReader<'py> {
+    /// The index of `table`'s rows, read if no table with the same rows was read before.
+    fn index_of(&mut self, table: &Bound<'py, PyAny>) -> PyResult<usize> {
+        if let Some((_, t)) = self.by_object.get(&(table.as_ptr() as usize)) {
+            return Ok(*t);
         }
-        PyResult::Ok(rows)
-    };
-    let circular = discs(
-        dict_values(&segments.getattr(intern!(py, "circular"))?)?,
-        intern!(py, "height"),
-    )?;
-    let pockets = discs(
-        dict_values(&table.getattr(intern!(py, "pockets"))?)?,
-        intern!(py, "depth"),
-    )?;
-    let rows = |values: Vec<f64>, width: usize| {
-        let n = values.len() / width;
-        PyArray1::from_vec(py, values).reshape([n, width])
-    };
-    PyTuple::new(
-        py,
-        [rows(linear, 6)?, rows(circular, 4)?, rows(pockets, 4)?],
-    )
+        let rows = self.read(table)?;
+        let bits = rows
+            .each_ref()
+            .map(|v| v.iter().map(|x| x.to_bits()).collect());
+        let next = self.rows.len();
+        let t = *self.by_rows.entry(bits).or_insert(next);
+        if t == next {
+            self.rows.push(rows);
+        }
+        self.by_object
+            .insert(table.as_ptr() as usize, (table.clone(), t));
+        Ok(t)
+    }
+
+    /// `table`'s rows, its segments and pocket centres read once by identity.
+    fn read(&mut self, table: &Bound<'py, PyAny>) -> PyResult<TableRows> {
+        let py = table.py();
+        let segments = table.getattr(intern!(py, "cushion_segments"))?;
+        let mut linear = Vec::new();
+        for c in dict_values(&segments.getattr(intern!(py, "linear"))?)? {
+            // `height` is pooltool's `p1[2]` (a `cached_property`: computing it on a new
+            // segment costs 0.6 µs, most of a table's reading), read here from `p1`.
+            linear.extend(self.segment(&c, |c| {
+                let [x1, y1, height] = xyz(c, intern!(py, "p1"))?;
+                let [x2, y2, _] = xyz(c, intern!(py, "p2"))?;
+                let direction = field(c, intern!(py, "direction"))?;
+                Ok(vec![x1, y1, x2, y2, height, direction])
+            })?);
+        }
+        let mut circular = Vec::new();
+        for c in dict_values(&segments.getattr(intern!(py, "circular"))?)? {
+            // `height` is pooltool's `center[2]` (as for a linear cushion).
+            circular.extend(self.segment(&c, |c| {
+                let [x, y, height] = xyz(c, intern!(py, "center"))?;
+                Ok(vec![x, y, field(c, intern!(py, "radius"))?, height])
+            })?);
+        }
+        let mut pockets = Vec::new();
+        for p in dict_values(&table.getattr(intern!(py, "pockets"))?)? {
+            // A pocket is copied with its table (its `contains` is mutable), its centre not.
+            let centre = p.getattr(intern!(py, "center"))?;
+            let [x, y] = match self.centres.get(&(centre.as_ptr() as usize)) {
+                Some((_, xy)) => *xy,
+                None => {
+                    let [x, y, _] = xyz_of("center", &centre)?;
+                    let read = [x, y];
+                    self.centres
+                        .insert(centre.as_ptr() as usize, (centre, read));
+                    read
+                }
+            };
+            pockets.extend([
+                x,
+                y,
+                field(&p, intern!(py, "radius"))?,
+                field(&p, intern!(py, "depth"))?,
+            ]);
+        }
+        Ok([linear, circular, pockets])
+    }
+
+    /// The row of cushion segment `c` (frozen in pooltool), by `read` the first time.
+    fn segment(
+        &mut self,
+        c: &Bound<'py, PyAny>,
+        read: impl FnOnce(&Bound<'py, PyAny>) -> PyResult<Vec<f64>>,
+    ) -> PyResult<&[f64]> {
+        let entry = match self.segments.entry(c.as_ptr() as usize) {
+            std::collections::hash_map::Entry::Occupied(e) => e.into_mut(),
+            std::collections::hash_map::Entry::Vacant(e) => e.insert((c.clone(), read(c)?)),
+        };
+        Ok(&entry.1)
+    }
+
+    /// The distinct tables' `(linear, circular, pockets)` arrays, in index order.
+    fn into_arrays(self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyTuple>>> {
+        let array = |values: Vec<f64>, width: usize| {
+            let n = values.len() / width;
+            PyArray1::from_vec(py, values).reshape([n, width])
+        };
+        self.rows
+            .into_iter()
+            .map(|[linear, circular, pockets]| {
+                PyTuple::new(
+                    py,
+                    [array(linear, 6)?, array(circular, 4)?, array(pockets, 4)?],
+                )
+            })
+            .collect()
+    }
 }
 
 /// The number `obj.name`.
@@ -195,11 +274,16 @@ fn field(obj: &Bound<'_, PyAny>, name: &Bound<'_, PyString>) -> PyResult<f64> {
     number(&name.to_cow()?, &obj.getattr(name)?)
 }
 
-/// The first two coordinates of `obj.name` (a point of pooltool's, `(x, y, z)`).
-fn xy(obj: &Bound<'_, PyAny>, name: &Bound<'_, PyString>) -> PyResult<[f64; 2]> {
-    let (values, _) = shaped(&name.to_cow()?, &obj.getattr(name)?)?;
+/// The coordinates of `obj.name` (a point of pooltool's, `(x, y, z)`).
+fn xyz(obj: &Bound<'_, PyAny>, name: &Bound<'_, PyString>) -> PyResult<[f64; 3]> {
+    xyz_of(&name.to_cow()?, &obj.getattr(name)?)
+}
+
+/// The coordinates of point `value`, named `name` in errors.
+fn xyz_of(name: &str, value: &Bound<'_, PyAny>) -> PyResult<[f64; 3]> {
+    let (values, _) = shaped(name, value)?;
     match values.values() {
-        [x, y, ..] => Ok([*x, *y]),
+        [x, y, z] => Ok([*x, *y, *z]),
         _ => Err(PyValueError::new_err(format!(
             "{name}: expected a point (x, y, z), got {} numbers",
             values.values().len()

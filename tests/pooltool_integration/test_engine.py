@@ -267,14 +267,11 @@ def test_simulate_many_is_simulate_on_any_threads() -> None:
             assert [e.time for e in built.events] == [e.time for e in alone.events]
 
 
-def test_simulate_many_reading_while_it_plays_fails_as_one_call() -> None:
-    # From 16 shots on 2 threads the later shots are read while the first quarter plays;
-    # a bad shot among the later ones is named as one call names it.
+def test_simulate_many_names_a_bad_shot_on_two_threads() -> None:
+    # A bad shot among many, on 2 threads, is named by its place among them.
     from ballcollide import _core
 
     systems = [s for _, s in named_shots()[::6]]
-    assert len(systems) >= 16 and bcp._overlapping(len(systems), 2)
-    assert not bcp._overlapping(len(systems), 1) and not bcp._overlapping(15, 2)
     k = len(systems) - 3
     bad = systems[k].copy()
     bad.balls[next(iter(bad.balls))].state.rvw[0, 0] = np.nan
