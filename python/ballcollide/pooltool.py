@@ -576,7 +576,8 @@ def _check_supported(
 
 def _inputs(shots: Sequence[Any]) -> dict[str, Any]:
     """``_core.simulate_shots``' arguments for pooltool ``System`` s (read in Rust:
-    ``_core._pooltool_inputs``; tables shared by identity are read once)."""
+    ``_core._pooltool_inputs``; each distinct table read once, and tables of equal rows
+    sharing one index)."""
     from . import _core
 
     return _core._pooltool_inputs(shots)

@@ -171,9 +171,11 @@ fn lanes_of<S: Simd>(s: S, values: PerPair<'_>, first: usize) -> S::V {
 
 /// How many pairs ahead of the block its rows are asked for in the cache: two blocks, 16
 /// pairs. The lanes read eight streams at once, faster than the CPU's own prefetch keeps up
-/// with. Asked for farther ahead (16 blocks), the lines were more often gone again from the
-/// first-level cache by the time they were read: the seed model as paths took 5 % (AVX2) to
-/// 10 % (AVX-512) longer, pool-table paths the same (criterion, AMD EPYC).
+/// with. Asked for 16 blocks ahead, the seed model as paths took 9.10–9.18 ms against
+/// 8.62–8.72 at AVX2, and 7.31–7.45 against 6.64–6.73 at AVX-512; pool-table paths the same
+/// (criterion, alternated in one session, AMD EPYC; 1 and 3 blocks ahead as 2, no prefetch
+/// as 16). Probably the lines asked for so early were often gone from the first-level cache
+/// again by the time they were read.
 const AHEAD: usize = 2 * LANES;
 
 /// Asks for the `width·LANES` values from `at + width·AHEAD` in the cache (nothing past the

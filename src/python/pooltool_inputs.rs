@@ -35,7 +35,7 @@ const PARAM_FIELDS: [&str; 10] = [
 /// ``rvw``, ``s``, ``params``, ``strike``, ``cue``) for a sequence of pooltool ``System`` s:
 /// each shot's balls (in ``balls`` order: ``state.rvw``, ``state.s``, ``params``), its cue's
 /// stroke, struck at time 0 only when ``V0 > 0`` and no ball moves or spins (as pooltool's
-/// loop strikes), and its table (tables shared by identity are read once). Raises
+/// loop strikes), and its table (each distinct table read once: see [`TableReader`]). Raises
 /// ``ValueError`` for a cue to strike whose ``cue_ball_id`` is not among the balls (where
 /// pooltool's loop raises a ``KeyError``). Private: for ``ballcollide.pooltool``.
 #[pyfunction]
@@ -53,7 +53,7 @@ pub(super) fn pooltool_inputs<'py>(shots: &Bound<'py, PyAny>) -> PyResult<Bound<
     let mut cue = Vec::with_capacity(8 * shots.len());
     for (k, system) in shots.iter().enumerate() {
         let table = system.getattr(intern!(py, "table"))?;
-        shot_table.push(tables.index_of(&table)? as f64);
+        shot_table.push(tables.index_of(&table, k)? as f64);
 
         let balls = dict_values(&system.getattr(intern!(py, "balls"))?)?;
         let mut moving = false;
@@ -151,18 +151,21 @@ type TableRows = [Vec<f64>; 3];
 ///
 /// Every shot has a table object of its own when its `System` is a copy (`System.copy()`
 /// copies the table), and reading one takes a few hundred attribute reads, most of the
-/// serial part of `simulate_many` (21 of 28 µs a shot on the benchmark's shots). But the
+/// serial part of `simulate_many` (~34 µs a shot on the benchmark's shots). But the
 /// copies share their parts: pooltool's cushion segments are frozen and `copy()` returns the
 /// segment itself, and a copied pocket keeps its `center` array. So the parts are read once
-/// each by identity, and tables of equal rows (to the bit) share one index, so that the
+/// each by identity (210 copies of `System.example()`: 5.9 µs a shot, against 18.4 for 210
+/// made one by one), and tables of equal rows (to the bit) share one index, so that the
 /// engine also builds each distinct table once. Each part read is kept alive here for the
 /// call, so that no address can be reused by another object meanwhile.
 #[derive(Default)]
 struct TableReader<'py> {
     /// Each table's index, by the table object's identity.
     by_object: HashMap<usize, (Bound<'py, PyAny>, usize)>,
-    /// Each linear cushion's row and circular cushion's row, by the segment's identity.
-    segments: HashMap<usize, (Bound<'py, PyAny>, Vec<f64>)>,
+    /// Each linear cushion's row, by the segment's identity.
+    linear: HashMap<usize, (Bound<'py, PyAny>, Vec<f64>)>,
+    /// Each circular cushion's row, by the segment's identity.
+    circular: HashMap<usize, (Bound<'py, PyAny>, Vec<f64>)>,
     /// Each pocket centre's `(x, y)`, by the array's identity.
     centres: HashMap<usize, (Bound<'py, PyAny>, [f64; 2])>,
     /// Each distinct table's index, by its rows' bits.
@@ -173,11 +176,14 @@ struct TableReader<'py> {
 
 impl<'py> TableReader<'py> {
     /// The index of `table`'s rows, read if no table with the same rows was read before.
-    fn index_of(&mut self, table: &Bound<'py, PyAny>) -> PyResult<usize> {
+    /// A point that is not `(x, y, z)` is a `ValueError` naming shot `k`.
+    fn index_of(&mut self, table: &Bound<'py, PyAny>, k: usize) -> PyResult<usize> {
         if let Some((_, t)) = self.by_object.get(&(table.as_ptr() as usize)) {
             return Ok(*t);
         }
-        let rows = self.read(table)?;
+        let rows = self
+            .read(table)
+            .map_err(|e| prefixed(table.py(), e, &format!("shots[{k}].table")))?;
         let bits = rows
             .each_ref()
             .map(|v| v.iter().map(|x| x.to_bits()).collect());
@@ -199,7 +205,7 @@ impl<'py> TableReader<'py> {
         for c in dict_values(&segments.getattr(intern!(py, "linear"))?)? {
             // `height` is pooltool's `p1[2]` (a `cached_property`: computing it on a new
             // segment costs 0.6 µs, most of a table's reading), read here from `p1`.
-            linear.extend(self.segment(&c, |c| {
+            linear.extend(segment(&mut self.linear, &c, |c| {
                 let [x1, y1, height] = xyz(c, intern!(py, "p1"))?;
                 let [x2, y2, _] = xyz(c, intern!(py, "p2"))?;
                 let direction = field(c, intern!(py, "direction"))?;
@@ -209,7 +215,7 @@ impl<'py> TableReader<'py> {
         let mut circular = Vec::new();
         for c in dict_values(&segments.getattr(intern!(py, "circular"))?)? {
             // `height` is pooltool's `center[2]` (as for a linear cushion).
-            circular.extend(self.segment(&c, |c| {
+            circular.extend(segment(&mut self.circular, &c, |c| {
                 let [x, y, height] = xyz(c, intern!(py, "center"))?;
                 Ok(vec![x, y, field(c, intern!(py, "radius"))?, height])
             })?);
@@ -221,7 +227,8 @@ impl<'py> TableReader<'py> {
             let [x, y] = match self.centres.get(&(centre.as_ptr() as usize)) {
                 Some((_, xy)) => *xy,
                 None => {
-                    let [x, y, _] = xyz_of("center", &centre)?;
+                    let [x, y, _] = xyz_of("center", &centre)
+                        .map_err(|e| prefixed(py, e, &format!("pocket {}", id_of(&p))))?;
                     let read = [x, y];
                     self.centres
                         .insert(centre.as_ptr() as usize, (centre, read));
@@ -236,19 +243,6 @@ impl<'py> TableReader<'py> {
             ]);
         }
         Ok([linear, circular, pockets])
-    }
-
-    /// The row of cushion segment `c` (frozen in pooltool), by `read` the first time.
-    fn segment(
-        &mut self,
-        c: &Bound<'py, PyAny>,
-        read: impl FnOnce(&Bound<'py, PyAny>) -> PyResult<Vec<f64>>,
-    ) -> PyResult<&[f64]> {
-        let entry = match self.segments.entry(c.as_ptr() as usize) {
-            std::collections::hash_map::Entry::Occupied(e) => e.into_mut(),
-            std::collections::hash_map::Entry::Vacant(e) => e.insert((c.clone(), read(c)?)),
-        };
-        Ok(&entry.1)
     }
 
     /// The distinct tables' `(linear, circular, pockets)` arrays, in index order.
@@ -266,6 +260,41 @@ impl<'py> TableReader<'py> {
                 )
             })
             .collect()
+    }
+}
+
+/// The row of cushion segment `c` (frozen in pooltool) from `rows`, by `read` the first time
+/// (a point that is not `(x, y, z)` named with the segment's id).
+fn segment<'m, 'py>(
+    rows: &'m mut HashMap<usize, (Bound<'py, PyAny>, Vec<f64>)>,
+    c: &Bound<'py, PyAny>,
+    read: impl FnOnce(&Bound<'py, PyAny>) -> PyResult<Vec<f64>>,
+) -> PyResult<&'m [f64]> {
+    let entry = match rows.entry(c.as_ptr() as usize) {
+        std::collections::hash_map::Entry::Occupied(e) => e.into_mut(),
+        std::collections::hash_map::Entry::Vacant(e) => {
+            let row = read(c)
+                .map_err(|err| prefixed(c.py(), err, &format!("cushion segment {}", id_of(c))))?;
+            e.insert((c.clone(), row))
+        }
+    };
+    Ok(&entry.1)
+}
+
+/// `obj.id`'s repr (`?` if it has none), for errors.
+fn id_of(obj: &Bound<'_, PyAny>) -> String {
+    obj.getattr("id")
+        .and_then(|id| id.repr().map(|r| r.to_string()))
+        .unwrap_or_else(|_| "?".to_string())
+}
+
+/// `error` with `context: ` before its message if it is a plain `ValueError` (the point
+/// errors here); any other error (an `InputError` naming its argument) as it is.
+fn prefixed(py: Python<'_>, error: PyErr, context: &str) -> PyErr {
+    if error.get_type(py).is(py.get_type::<PyValueError>()) {
+        PyValueError::new_err(format!("{context}: {}", error.value(py)))
+    } else {
+        error
     }
 }
 

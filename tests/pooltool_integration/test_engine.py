@@ -344,3 +344,48 @@ def test_what_is_not_supported_is_named() -> None:
     lost.cue.cue_ball_id = "ghost"
     with pytest.raises(ValueError, match="ghost"):
         bcp.simulate(lost)
+
+
+def test_reading_reads_each_distinct_table_once_with_pooltools_values() -> None:
+    # Copies share their segments and pocket centres; a table made anew from the same spec
+    # has equal rows to the bit: one table for all four. Its rows are pooltool's own values
+    # (heights by pooltool's `height`, which the reader takes from the points).
+    from types import SimpleNamespace
+
+    from ballcollide import _core
+
+    base = pt.System.example()
+    shots = [base, base.copy(), pt.System.example(), base.copy()]
+    inputs = _core._pooltool_inputs(shots)
+    assert len(inputs["tables"]) == 1 and inputs["shot_table"].tolist() == [0, 0, 0, 0]
+    linear, circular, pockets = inputs["tables"][0]
+    table = base.table
+    segments = table.cushion_segments
+    assert np.array_equal(
+        linear,
+        [[*c.p1[:2], *c.p2[:2], c.height, c.direction] for c in segments.linear.values()],
+    )
+    assert np.array_equal(
+        circular, [[*c.center[:2], c.radius, c.height] for c in segments.circular.values()]
+    )
+    assert np.array_equal(
+        pockets, [[*p.center[:2], p.radius, p.depth] for p in table.pockets.values()]
+    )
+    # Another game's table: its own index.
+    snooker = pt.Table.from_game_type(pt.GameType.SNOOKER)
+    other = base.copy()
+    other.table = snooker
+    inputs = _core._pooltool_inputs([base, other, base.copy()])
+    assert len(inputs["tables"]) == 2 and inputs["shot_table"].tolist() == [0, 1, 0]
+    # A point that is not (x, y, z): the shot and the segment named.
+    flat = SimpleNamespace(
+        id="flat", p1=np.array([0.0, 0.0]), p2=np.array([1.0, 0.0, 0.0]), direction=2
+    )
+    odd = base.copy()
+    odd.table = SimpleNamespace(
+        cushion_segments=SimpleNamespace(linear={"flat": flat}, circular={}), pockets={}
+    )
+    with pytest.raises(
+        ValueError, match=r"^shots\[1\]\.table: cushion segment 'flat': p1: expected a point"
+    ):
+        _core._pooltool_inputs([base, odd])
