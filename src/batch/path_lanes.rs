@@ -121,8 +121,14 @@ pub(crate) fn settled<S: Simd, const D: usize, const K: usize>(
     // The chords, only where some lane is left for them.
     let open = taken & !apart & rests_at_end(s, &rows_a) & rests_at_end(s, &rows_b);
     let chords = if open != 0 {
-        open & (apart_across_chord(s, &rows_a, &rows_b, reach)
-            | apart_across_chord(s, &rows_b, &rows_a, reach))
+        // B's chord only where A's leaves a lane open (each costs a division and a root).
+        let first = open & apart_across_chord(s, &rows_a, &rows_b, reach);
+        let rest = open & !first;
+        if rest != 0 {
+            first | (rest & apart_across_chord(s, &rows_b, &rows_a, reach))
+        } else {
+            first
+        }
     } else {
         0
     };
