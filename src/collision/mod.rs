@@ -281,21 +281,7 @@ fn first_contact_in_unit(
         } else {
             Gap::between(a, b, radius, start)
         };
-        // The window's first open eighth first, then the search, as the path search takes
-        // them: an entry isolated there is settled by Newton steps to the floor of its own
-        // time, where the search's steps are sized by the window (a contact at 2⁻²² of the
-        // window's length, at a radius of 2⁻⁵² of the distance, came 85 floors late), and
-        // the two queries take the same steps on one pair.
-        let eighth = window_eighth(&gap, bounded_length(&gap, end - start), previous_positive);
-        let found = if eighth.found {
-            WindowSearch::Entry(eighth.entry)
-        } else if eighth.screened_out {
-            WindowSearch::NoEntry {
-                ends_positive: true,
-            }
-        } else {
-            search_window(&gap, end - start, previous_positive)
-        };
+        let (found, _) = eighth_then_search(&gap, end - start, previous_positive);
         match found {
             WindowSearch::Entry(s) => {
                 let t = start + s;
@@ -305,6 +291,30 @@ fn first_contact_in_unit(
         }
     }
     None
+}
+
+/// A window's first entry: its first open eighth first, then the window search. An entry
+/// isolated on the eighth is settled by Newton steps to the floor of its own time, where the
+/// search's steps are sized by the window (a contact at 2⁻²² of the window's length, at a
+/// radius of 2⁻⁵² of the distance, came 85 floors late). Both pair queries search their
+/// windows here, so they take the same steps on one pair. Also whether the eighth settled it.
+#[inline(always)]
+pub(crate) fn eighth_then_search<const D: usize>(
+    gap: &Gap<D>,
+    length: f64,
+    previous_positive: bool,
+) -> (WindowSearch, bool) {
+    let eighth = window_eighth(gap, bounded_length(gap, length), previous_positive);
+    if eighth.found {
+        (WindowSearch::Entry(eighth.entry), true)
+    } else if eighth.screened_out {
+        let none = WindowSearch::NoEntry {
+            ends_positive: true,
+        };
+        (none, true)
+    } else {
+        (search_window(gap, length, previous_positive), false)
+    }
 }
 
 /// Whether the balls are apart at the window's start (`g(0) > 0`), decided in the unit of

@@ -24,7 +24,6 @@
 //! | `first_contact_one_window` | two paths of one segment each | the walk's shortcut |
 
 use super::chord_normals::apart_across_chords;
-use super::eighth_entry::window_eighth;
 use super::length_unit::LengthUnit;
 use super::path_bounds::{PathBounds, SEGMENT_BOXES};
 use super::stage_counts::{Stage, count};
@@ -32,7 +31,7 @@ use super::straight::straight_window;
 use super::window_box::apart_on_window;
 use super::window_chord::apart_across_window_chord;
 use super::{
-    CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_length, search_window,
+    CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_length, eighth_then_search,
 };
 use crate::error::{InputError, check_contact_distance, check_horizon};
 use crate::gap::Gap;
@@ -388,18 +387,11 @@ impl<const D: usize> Window<'_, D> {
             count(Stage::WindowSearched);
             // Most entries are isolated on the window's first open eighth, and most windows
             // without one too: settled there by a few Newton steps, the rest searched.
-            let eighth = window_eighth(&gap, bounded_length(&gap, length), before);
-            if eighth.found {
+            let (answer, on_eighth) = eighth_then_search(&gap, length, before);
+            if on_eighth {
                 count(Stage::WindowEighth);
-                WindowSearch::Entry(eighth.entry)
-            } else if eighth.screened_out {
-                count(Stage::WindowEighth);
-                WindowSearch::NoEntry {
-                    ends_positive: true,
-                }
-            } else {
-                search_window(&gap, length, before)
             }
+            answer
         };
         match answer {
             WindowSearch::Entry(s) => {
