@@ -15,7 +15,7 @@ use crate::collision::exclusion::MARGIN_PER_SQUARE;
 use crate::collision::length_unit::PRE;
 use crate::collision::long_window::LONG;
 use crate::collision::narrow_dip::NARROW;
-use crate::simd::{Mask, Simd};
+use crate::simd::Simd;
 
 /// A window's relative motion in lanes, as [`Gap`](crate::Gap) holds one.
 #[derive(Clone, Copy)]
@@ -30,8 +30,8 @@ pub(super) struct GapLanes<S: Simd, const D: usize> {
 /// [`EighthEntry`](crate::collision::eighth_entry::EighthEntry).
 pub(super) struct EighthLanes<S: Simd> {
     pub entry: S::V,
-    pub found: Mask,
-    pub screened_out: Mask,
+    pub found: S::M,
+    pub screened_out: S::M,
 }
 
 /// `Σ aᵢ·bᵢ`, left to right.
@@ -242,7 +242,7 @@ impl<S: Simd, const D: usize> GapLanes<S, D> {
     /// The lanes whose gap is positive at the start, in the unit of the offset and radius
     /// (`apart_at_start`).
     #[inline(always)]
-    pub(super) fn apart_at_start(&self, s: S) -> Mask {
+    pub(super) fn apart_at_start(&self, s: S) -> S::M {
         let most = bigger(
             s,
             bigger(s, s.zero(), largest(s, &self.offset)),
@@ -312,8 +312,8 @@ fn mid<S: Simd>(s: S, x: S::V, y: S::V) -> S::V {
 
 /// The lanes where every coefficient is above `margin`.
 #[inline(always)]
-fn above<S: Simd>(s: S, b: &[S::V; 5], margin: S::V) -> Mask {
-    let mut all = Mask::MAX;
+fn above<S: Simd>(s: S, b: &[S::V; 5], margin: S::V) -> S::M {
+    let mut all = s.all();
     for &x in b {
         all &= s.gt(x, margin);
     }
@@ -322,8 +322,8 @@ fn above<S: Simd>(s: S, b: &[S::V; 5], margin: S::V) -> Mask {
 
 /// The lanes where exactly one of `masks` is set.
 #[inline(always)]
-fn exactly_one<const N: usize>(masks: [Mask; N]) -> Mask {
-    let (mut one, mut two) = (0, 0);
+fn exactly_one<S: Simd, const N: usize>(s: S, masks: [S::M; N]) -> S::M {
+    let (mut one, mut two) = (s.none(), s.none());
     for m in masks {
         two |= one & m;
         one |= m;
@@ -333,18 +333,18 @@ fn exactly_one<const N: usize>(masks: [Mask; N]) -> Mask {
 
 /// The lanes where the signs (`> 0` or not) of consecutive values change exactly once.
 #[inline(always)]
-fn one_sign_change<S: Simd, const N: usize, const M: usize>(s: S, x: &[S::V; N]) -> Mask {
-    let mut changes = [0; M];
+fn one_sign_change<S: Simd, const N: usize, const M: usize>(s: S, x: &[S::V; N]) -> S::M {
+    let mut changes = [s.none(); M];
     for (k, change) in changes.iter_mut().enumerate() {
         *change = s.gt(x[k], s.zero()) ^ s.gt(x[k + 1], s.zero());
     }
-    exactly_one(changes)
+    exactly_one(s, changes)
 }
 
 /// `exclusion::one_root` in each lane.
 #[inline(always)]
-fn one_root<S: Simd>(s: S, b: &[S::V; 5], margin: S::V) -> Mask {
-    let mut clear = Mask::MAX;
+fn one_root<S: Simd>(s: S, b: &[S::V; 5], margin: S::V) -> S::M {
+    let mut clear = s.all();
     for &x in b {
         clear &= s.gt(s.abs(x), margin);
     }
@@ -353,7 +353,7 @@ fn one_root<S: Simd>(s: S, b: &[S::V; 5], margin: S::V) -> Mask {
 
 /// `exclusion::one_dip` in each lane.
 #[inline(always)]
-fn one_dip<S: Simd>(s: S, b: &[S::V; 5], margin: S::V) -> Mask {
+fn one_dip<S: Simd>(s: S, b: &[S::V; 5], margin: S::V) -> S::M {
     let slopes = [
         s.sub(b[1], b[0]),
         s.sub(b[2], b[1]),
@@ -361,7 +361,7 @@ fn one_dip<S: Simd>(s: S, b: &[S::V; 5], margin: S::V) -> Mask {
         s.sub(b[4], b[3]),
     ];
     let twice = s.mul(s.splat(2.0), margin);
-    let mut steep = Mask::MAX;
+    let mut steep = s.all();
     for &x in &slopes {
         steep &= s.gt(s.abs(x), twice);
     }
@@ -371,9 +371,9 @@ fn one_dip<S: Simd>(s: S, b: &[S::V; 5], margin: S::V) -> Mask {
 /// `exclusion::OpenEighth` in lanes.
 pub(super) struct OpenEighthLanes<S: Simd> {
     index: S::V,
-    one_root: Mask,
-    one_dip: Mask,
-    rest_positive: Mask,
+    one_root: S::M,
+    one_dip: S::M,
+    rest_positive: S::M,
 }
 
 /// `exclusion::first_open_eighth` in each lane.
@@ -391,7 +391,7 @@ pub(super) fn first_open_eighth<S: Simd, const D: usize>(
     let eighths = [e0, e1, e2, e3, e4, e5, e6, e7];
     // From the last to the first, so that the first open eighth is the one kept.
     let (mut index, mut piece) = (s.splat(8.0), e7);
-    let (mut open, mut two_open) = (0, 0);
+    let (mut open, mut two_open) = (s.none(), s.none());
     for k in (0..8).rev() {
         let closed = !above(s, &eighths[k], margin);
         index = s.blend(closed, index, s.splat(k as f64));
@@ -454,26 +454,26 @@ struct NewtonLanes<S: Simd> {
     best: S::V,
     best_value: S::V,
     best_step: S::V,
-    improved: Mask,
+    improved: S::M,
 }
 
 impl<S: Simd> NewtonLanes<S> {
     /// Converged: the correction at the best iterate is within `ulps` ulps.
     #[inline(always)]
-    fn within(&self, s: S, ulps: f64) -> Mask {
+    fn within(&self, s: S, ulps: f64) -> S::M {
         let bound = s.mul(s.splat(ulps * f64::EPSILON), self.best);
         s.eq(self.best_value, s.zero()) | s.ge(bound, self.best_step)
     }
 
     /// Stalled: within `noise` of zero, the last step did not lower `|f|`.
     #[inline(always)]
-    fn stalled(&self, s: S, noise: S::V) -> Mask {
+    fn stalled(&self, s: S, noise: S::V) -> S::M {
         !self.improved & s.ge(noise, self.best_value)
     }
 
     /// One step on `f` where not converged; the converged lanes keep their state.
     #[inline(always)]
-    fn step(self, s: S, f: &impl WithDerivative<S>, lo_positive: Mask, noise: S::V) -> Self {
+    fn step(self, s: S, f: &impl WithDerivative<S>, lo_positive: S::M, noise: S::V) -> Self {
         let x = self.x;
         let (fx, dfx) = f.at(s, x);
         let zero = s.zero();
@@ -513,7 +513,7 @@ fn fixed_newton<S: Simd>(
     f_lo: S::V,
     start: S::V,
     noise: S::V,
-) -> (S::V, Mask) {
+) -> (S::V, S::M) {
     let lo_positive = s.gt(f_lo, s.zero());
     let infinity = s.splat(f64::INFINITY);
     let mut state = NewtonLanes {
@@ -523,7 +523,7 @@ fn fixed_newton<S: Simd>(
         best: start,
         best_value: infinity,
         best_step: infinity,
-        improved: Mask::MAX,
+        improved: s.all(),
     };
     for _ in 0..6 {
         state = state.step(s, f, lo_positive, noise);
@@ -538,7 +538,7 @@ pub(super) fn eighth_entry<S: Simd, const D: usize>(
     gap: &GapLanes<S, D>,
     end: S::V,
     eighth: &OpenEighthLanes<S>,
-    qualifies: Mask,
+    qualifies: S::M,
 ) -> EighthLanes<S> {
     let zero = s.zero();
     let (root, dip) = (eighth.one_root, eighth.one_dip);
@@ -602,7 +602,7 @@ pub(super) fn window_eighth<S: Simd, const D: usize>(
     s: S,
     gap: &GapLanes<S, D>,
     length: S::V,
-    before: Mask,
+    before: S::M,
 ) -> EighthLanes<S> {
     let short = s.ge(length, s.splat(f64::MIN_POSITIVE)) & !long_window(s, gap, length);
     // `normal_time_unit`: the power of two below the length, doubled unless it is that power.
@@ -635,7 +635,7 @@ pub(super) fn long_window<S: Simd, const D: usize>(
     s: S,
     gap: &GapLanes<S, D>,
     length: S::V,
-) -> Mask {
+) -> S::M {
     const LONG2: f64 = LONG * LONG;
     let (p, v, a) = (&gap.offset, &gap.velocity, &gap.acceleration);
     let size2 = s.add(dot(s, p, p), s.mul(gap.radius, gap.radius));

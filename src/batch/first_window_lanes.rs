@@ -97,7 +97,7 @@ pub(super) fn eighth_contacts<S: Simd, const D: usize, const K: usize>(
     };
     // `window_gap`: each segment evaluated in time since its own start.
     let (since_a, since_b) = (s.sub(start, a.start), s.sub(start, b.start));
-    let mut accelerating: Mask = 0;
+    let mut accelerating = s.none();
     for i in 0..D {
         gap.offset[i] = s.sub(a.position_at(s, i, since_a), b.position_at(s, i, since_b));
         gap.velocity[i] = s.sub(a.velocity_at(s, i, since_a), b.velocity_at(s, i, since_b));
@@ -111,7 +111,7 @@ pub(super) fn eighth_contacts<S: Simd, const D: usize, const K: usize>(
     let t = s.add(start, eighth.entry);
     let contact = s.blend(s.lt(t, t_max), s.splat(f64::INFINITY), t);
     let found = s.blend(eighth.found & accelerating, s.splat(f64::NAN), contact);
-    (s.store(found), eighth.screened_out & accelerating)
+    (s.store(found), s.bits(eighth.screened_out & accelerating))
 }
 
 /// A segment of each lane's path, as rows of lanes.

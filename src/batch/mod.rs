@@ -467,7 +467,7 @@ fn screen<S: Simd>(s: S, pairs: &Pairs<'_>, start: usize, len: usize) -> Screene
     let one_at_rest = rests_a ^ rests_b;
     // A block where every pair has one ball at rest (a cue ball against the others, say)
     // goes to the closed form alone, which settles misses as well as the screening does.
-    if one_at_rest == Mask::MAX {
+    if s.every(one_at_rest) {
         let inputs = lanes.inputs(s);
         return Screened {
             answers: at_rest_answers(|k| inputs[k], &first_lanes(len)),
@@ -476,12 +476,12 @@ fn screen<S: Simd>(s: S, pairs: &Pairs<'_>, start: usize, len: usize) -> Screene
         };
     }
     let (in_range, apart) = screen_runs(s, &lanes);
-    let plain = in_range & first_lanes_mask(len);
+    let plain = in_range & s.mask(first_lanes_mask(len));
     let open = plain & !apart;
     Screened {
         answers: s.store(s.blend(plain & apart, s.splat(f64::NAN), s.splat(f64::INFINITY))),
-        crossing: open & !rests_a & !rests_b,
-        at_rest: open & one_at_rest,
+        crossing: s.bits(open & !rests_a & !rests_b),
+        at_rest: s.bits(open & one_at_rest),
     }
 }
 

@@ -18,7 +18,7 @@ use crate::simd::{LANES, Mask, Simd};
 /// `FirstWindow` in lanes: the friction pair's first window, `[0, min(τ_A, τ_B)]`.
 struct FirstWindowLanes<S: Simd> {
     /// The lanes that qualify for the lane-wise stage (`FirstWindow::qualifies`).
-    qualifies: Mask,
+    qualifies: S::M,
     /// The relative motion from time 0, in seconds.
     initial: GapLanes<S, 2>,
     /// The same, time in units of `unit`.
@@ -31,20 +31,20 @@ struct FirstWindowLanes<S: Simd> {
 
 /// `lo ≤ x ≤ hi`, as two ordered compares (NaN fails both).
 #[inline(always)]
-fn within<S: Simd>(s: S, x: S::V, lo: f64, hi: f64) -> Mask {
+fn within<S: Simd>(s: S, x: S::V, lo: f64, hi: f64) -> S::M {
     s.ge(x, s.splat(lo)) & s.ge(s.splat(hi), x)
 }
 
 /// The lanes where `x` is finite (`|x| ≤ MAX`; NaN fails).
 #[inline(always)]
-fn finite<S: Simd>(s: S, x: S::V) -> Mask {
+fn finite<S: Simd>(s: S, x: S::V) -> S::M {
     s.ge(s.splat(f64::MAX), s.abs(x))
 }
 
 /// The lanes where both coordinates are at most [`LIMIT`] in magnitude (`FirstWindow::of`'s
 /// `max(|x|, |y|) ≤ LIMIT`, which differs only where one is NaN, a pair `valid` refuses).
 #[inline(always)]
-fn near<S: Simd>(s: S, [x, y]: [S::V; 2]) -> Mask {
+fn near<S: Simd>(s: S, [x, y]: [S::V; 2]) -> S::M {
     s.ge(s.splat(LIMIT), s.abs(x)) & s.ge(s.splat(LIMIT), s.abs(y))
 }
 
@@ -56,9 +56,9 @@ fn pull<S: Simd>(s: S, v: S::V, tau: S::V) -> S::V {
 
 /// `prefilter::valid` in each lane.
 #[inline(always)]
-fn valid<S: Simd>(s: S, p: &PairLanes<S>) -> Mask {
+fn valid<S: Simd>(s: S, p: &PairLanes<S>) -> S::M {
     let zero = s.zero();
-    let mut all = Mask::MAX;
+    let mut all = s.all();
     for x in [
         p.pos_a[0],
         p.pos_a[1],
@@ -125,7 +125,7 @@ impl<S: Simd> FirstWindowLanes<S> {
 /// other (the first non-zero derivative of the gap is negative), in the unit of the motion's
 /// own largest length.
 #[inline(always)]
-fn approaching<S: Simd>(s: S, gap: &GapLanes<S, 2>) -> Mask {
+fn approaching<S: Simd>(s: S, gap: &GapLanes<S, 2>) -> S::M {
     let mut size = bigger(s, s.zero(), largest(s, &gap.offset));
     size = bigger(s, size, largest(s, &gap.velocity));
     size = bigger(s, size, largest(s, &gap.acceleration));
@@ -158,7 +158,10 @@ pub(super) fn while_moving<S: Simd>(s: S, p: &PairLanes<S>) -> ([f64; LANES], Ma
         & s.ge(zero, window.initial.value(s, zero))
         & approaching(s, &window.initial);
     let now = s.blend(s.gt(p.t_max, zero), infinity, zero);
-    (s.store(s.blend(touching, entry, now)), found.screened_out)
+    (
+        s.store(s.blend(touching, entry, now)),
+        s.bits(found.screened_out),
+    )
 }
 
 #[cfg(test)]

@@ -67,9 +67,9 @@ pub(super) struct LaneBoxes<S: Simd, const D: usize, const K: usize> {
 ///
 /// [`PathBounds`]: crate::collision::path_bounds::PathBounds
 struct LaneBounds<S: Simd, const D: usize, const K: usize> {
-    taken: Mask,
+    taken: S::M,
     /// The lanes whose path ends at rest ([`rests_at_end`]).
-    rests: Mask,
+    rests: S::M,
     lo: [S::V; D],
     hi: [S::V; D],
     size: S::V,
@@ -112,7 +112,7 @@ pub(crate) fn settled<S: Simd, const D: usize, const K: usize>(
     let spread = s.add(a.spread, b.spread);
     let floor = s.mul(s.splat(NORMAL_FLOOR), spread);
     let plain_reach = !s.lt(reach, floor);
-    let mut apart: Mask = 0;
+    let mut apart = s.none();
     for i in 0..D {
         apart |= s.gt(s.sub(a.lo[i], b.hi[i]), reach);
         apart |= s.gt(s.sub(b.lo[i], a.hi[i]), reach);
@@ -122,21 +122,21 @@ pub(crate) fn settled<S: Simd, const D: usize, const K: usize>(
     let taken = a.taken & b.taken & valid & plain_reach;
     // The chords, only where some lane is left for them.
     let open = taken & !apart & a.rests & b.rests;
-    let chords = if open != 0 {
+    let chords = if s.any(open) {
         // B's chord only where A's leaves a lane open (each costs a division and a root).
         let first = open & apart_across_chord(s, &rows_a, &rows_b, reach);
         let rest = open & !first;
-        if rest != 0 {
+        if s.any(rest) {
             first | (rest & apart_across_chord(s, &rows_b, &rows_a, reach))
         } else {
             first
         }
     } else {
-        0
+        s.none()
     };
     // The windows, only where some lane is left for them.
     let left = taken & !apart & !chords;
-    let windows = if left != 0 {
+    let windows = if s.any(left) {
         let (side_a, side_b) = (
             LaneSide {
                 rows: &rows_a,
@@ -149,20 +149,20 @@ pub(crate) fn settled<S: Simd, const D: usize, const K: usize>(
         );
         windows_apart(s, &side_a, &side_b, radius, reach, left)
     } else {
-        0
+        s.none()
     };
     Settled {
-        bounds: taken & apart,
-        chords,
-        windows,
-        taken,
+        bounds: s.bits(taken & apart),
+        chords: s.bits(chords),
+        windows: s.bits(windows),
+        taken: s.bits(taken),
     }
 }
 
 /// Lanes whose value is finite.
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline(never))]
-fn finite<S: Simd>(s: S, x: S::V) -> Mask {
+fn finite<S: Simd>(s: S, x: S::V) -> S::M {
     s.lt(s.abs(x), s.splat(f64::INFINITY))
 }
 
@@ -343,7 +343,7 @@ fn lane_bounds<S: Simd, const D: usize, const K: usize>(
     for i in 0..D {
         let (p, v, a) = (p[K - 1][i], v[K - 1][i], a[K - 1][i]);
         bounds.size = s.add(bounds.size, s.abs(p));
-        if rests == Mask::MAX {
+        if s.every(rests) {
             (bounds.segments.lo[K - 1][i], bounds.segments.hi[K - 1][i]) = (p, p);
             bounds.lo[i] = s.min(bounds.lo[i], p);
             bounds.hi[i] = s.max(bounds.hi[i], p);
@@ -378,9 +378,9 @@ fn bernstein_hull<S: Simd>(s: S, p: S::V, v: S::V, a: S::V, length: S::V) -> [S:
 /// Lanes whose path ends at rest (`rests_at_end` in `collision::chord_normals`).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline(never))]
-fn rests_at_end<S: Simd, const D: usize, const K: usize>(s: S, rows: &LaneRows<S, D, K>) -> Mask {
+fn rests_at_end<S: Simd, const D: usize, const K: usize>(s: S, rows: &LaneRows<S, D, K>) -> S::M {
     let zero = s.zero();
-    let mut rests: Mask = !0;
+    let mut rests = s.all();
     for i in 0..D {
         rests &= s.eq(rows.v[K - 1][i], zero);
         rests &= s.eq(rows.a[K - 1][i], zero);
@@ -397,7 +397,7 @@ fn apart_across_chord<S: Simd, const D: usize, const K: usize>(
     own: &LaneRows<S, D, K>,
     other: &LaneRows<S, D, K>,
     reach: S::V,
-) -> Mask {
+) -> S::M {
     let (dx, dy) = (
         s.sub(own.p[K - 1][0], own.p[0][0]),
         s.sub(own.p[K - 1][1], own.p[0][1]),

@@ -13,7 +13,7 @@
 use super::eighth_lanes::bigger;
 use super::{Pairs, PerPair};
 use crate::collision::prefilter::{LIMIT, MARGIN, PairInput};
-use crate::simd::{LANES, Mask, Simd};
+use crate::simd::{LANES, Simd};
 
 /// A block of pairs in lanes, each in its own unit of length (lane `l`: pair `start + l`;
 /// zeros past the block's length, which fail the range test: a radius must be positive).
@@ -111,7 +111,7 @@ impl<S: Simd> PairLanes<S> {
 
     /// The lanes whose ball A, or B, is at rest (both velocity components zero).
     #[inline(always)]
-    pub(super) fn at_rest(&self, s: S) -> (Mask, Mask) {
+    pub(super) fn at_rest(&self, s: S) -> (S::M, S::M) {
         (rests(s, self.vel_a), rests(s, self.vel_b))
     }
 
@@ -141,7 +141,7 @@ impl<S: Simd> PairLanes<S> {
 
 /// The lanes where a ball with these velocities is at rest.
 #[inline(always)]
-fn rests<S: Simd>(s: S, [x, y]: [S::V; 2]) -> Mask {
+fn rests<S: Simd>(s: S, [x, y]: [S::V; 2]) -> S::M {
     s.eq(x, s.zero()) & s.eq(y, s.zero())
 }
 
@@ -165,7 +165,7 @@ fn square<S: Simd>(s: S, [x, y]: [S::V; 2]) -> S::V {
 
 /// `lo ≤ x ≤ hi`, as two ordered compares (NaN fails both).
 #[inline(always)]
-fn within<S: Simd>(s: S, x: S::V, lo: f64, hi: f64) -> Mask {
+fn within<S: Simd>(s: S, x: S::V, lo: f64, hi: f64) -> S::M {
     s.ge(x, s.splat(lo)) & s.ge(s.splat(hi), x)
 }
 
@@ -210,7 +210,7 @@ fn scalars<S: Simd>(s: S, src: PerPair<'_>, start: usize, len: usize) -> S::V {
 /// (valid, bounded, magnitudes in `[1/LIMIT, LIMIT]`), and those whose balls are proven never
 /// to touch (meaningless where not in range). The same operations in the same order.
 #[inline(always)]
-pub(super) fn screen_runs<S: Simd>(s: S, p: &PairLanes<S>) -> (Mask, Mask) {
+pub(super) fn screen_runs<S: Simd>(s: S, p: &PairLanes<S>) -> (S::M, S::M) {
     let ([pax, pay], [vax, vay]) = (p.pos_a, p.vel_a);
     let ([pbx, pby], [vbx, vby]) = (p.pos_b, p.vel_b);
     let (square_a, square_b) = (square(s, p.vel_a), square(s, p.vel_b));
@@ -257,7 +257,7 @@ pub(super) fn screen_runs<S: Simd>(s: S, p: &PairLanes<S>) -> (Mask, Mask) {
 /// [`screen_runs`](crate::collision::prefilter::screen_runs) asks: at rest with a friction
 /// ≥ 0, or moving at a speed in range with a friction in range.
 #[inline(always)]
-fn bounded<S: Simd>(s: S, rests: Mask, square: S::V, mu: S::V) -> Mask {
+fn bounded<S: Simd>(s: S, rests: S::M, square: S::V, mu: S::V) -> S::M {
     s.ge(s.splat(LIMIT), mu)
         & ((rests & s.ge(mu, s.zero()))
             | (within(s, square, 1.0 / (LIMIT * LIMIT), LIMIT * LIMIT)
@@ -277,7 +277,7 @@ fn line_side<S: Simd>(
     mu: S::V,
     radius: S::V,
     size: S::V,
-) -> Mask {
+) -> S::M {
     let rests = s.eq(speed, s.zero());
     let scale = s.blend(rests, s.mul(s.splat(2.0), mu), s.splat(1.0));
     let start = s.mul(scale, cross(s, line, offset));

@@ -31,7 +31,7 @@
 use super::path_lanes::{LaneBoxes, LaneRows};
 use crate::collision::LONGEST_WINDOW;
 use crate::collision::window_box::{MARGIN, NORMAL_FLOOR};
-use crate::simd::{Mask, Simd};
+use crate::simd::Simd;
 
 /// One side of a block for the window screens: its rows and its segment boxes.
 pub(super) struct LaneSide<'a, S: Simd, const D: usize, const K: usize> {
@@ -56,8 +56,8 @@ pub(super) fn windows_apart<S: Simd, const D: usize, const K: usize>(
     b: &LaneSide<'_, S, D, K>,
     radius: S::V,
     reach: S::V,
-    open: Mask,
-) -> Mask {
+    open: S::M,
+) -> S::M {
     let infinity = s.splat(f64::INFINITY);
     let mut proven = open;
     for i in 0..K {
@@ -65,11 +65,11 @@ pub(super) fn windows_apart<S: Simd, const D: usize, const K: usize>(
             let from = s.max(a.rows.s[i], b.rows.s[j]);
             let to = s.min(end(a, i, infinity), end(b, j, infinity));
             let left = proven & s.lt(from, to);
-            if left == 0 {
+            if !s.any(left) {
                 continue;
             }
             let left = left & !segments_apart(s, a.boxes, i, b.boxes, j, reach);
-            if left == 0 {
+            if !s.any(left) {
                 continue;
             }
             if i == K - 1 && j == K - 1 {
@@ -81,12 +81,12 @@ pub(super) fn windows_apart<S: Simd, const D: usize, const K: usize>(
             // `bounded_length`: the window's length up to the longest searched.
             let length = s.min(s.sub(to, from), s.splat(LONGEST_WINDOW));
             let mut left = left & !apart_on_window(s, &gap, radius, length);
-            if left != 0 {
+            if s.any(left) {
                 left &= !apart_across_window_chord(s, &gap, radius, length);
             }
             proven &= !left;
-            if proven == 0 {
-                return 0;
+            if !s.any(proven) {
+                return proven;
             }
         }
     }
@@ -135,8 +135,8 @@ fn segments_apart<S: Simd, const D: usize, const K: usize>(
     b: &LaneBoxes<S, D, K>,
     j: usize,
     reach: S::V,
-) -> Mask {
-    let mut apart: Mask = 0;
+) -> S::M {
+    let mut apart = s.none();
     for x in 0..D {
         apart |= s.gt(s.sub(a.lo[i][x], b.hi[j][x]), reach);
         apart |= s.gt(s.sub(b.lo[j][x], a.hi[i][x]), reach);
@@ -182,7 +182,7 @@ fn apart_on_window<S: Simd, const D: usize>(
     gap: &LaneGap<S, D>,
     radius: S::V,
     length: S::V,
-) -> Mask {
+) -> S::M {
     let (zero, one) = (s.zero(), s.splat(1.0));
     let (mut nearest2, mut size, mut spread) = (zero, radius, zero);
     for x in 0..D {
@@ -218,7 +218,7 @@ fn apart_across_window_chord<S: Simd, const D: usize>(
     gap: &LaneGap<S, D>,
     radius: S::V,
     length: S::V,
-) -> Mask {
+) -> S::M {
     let (d, v, a) = (&gap.offset, &gap.velocity, &gap.acceleration);
     let (zero, one) = (s.zero(), s.splat(1.0));
     let half_length = s.mul(s.splat(0.5), length);
@@ -273,13 +273,13 @@ fn apart_across_window_chord<S: Simd, const D: usize>(
 /// leaves it as it is).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline(never))]
-fn plain<S: Simd>(s: S, reach: S::V, spread: S::V) -> Mask {
+fn plain<S: Simd>(s: S, reach: S::V, spread: S::V) -> S::M {
     s.ge(reach, s.mul(s.splat(NORMAL_FLOOR), spread))
 }
 
 /// Lanes whose squared reach is above [`NORMAL_FLOOR`] (no slack for underflowing squares).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline(never))]
-fn square_normal<S: Simd>(s: S, far: S::V) -> Mask {
+fn square_normal<S: Simd>(s: S, far: S::V) -> S::M {
     s.gt(far, s.splat(NORMAL_FLOOR))
 }

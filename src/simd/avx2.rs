@@ -1,15 +1,18 @@
-//! The AVX2 level: [`Simd`] over two `__m256d` registers (lanes 0–3 and 4–7), masks packed
-//! from the compares' sign bits (`vmovmskpd`).
+//! The AVX2 level: [`Simd`] over two `__m256d` registers (lanes 0–3 and 4–7), masks as the
+//! compares give them (`Lanes`: two registers of all-ones or all-zeros lanes), packed into
+//! bits (`vmovmskpd`) only where a stage hands its lanes on.
 
 use core::arch::x86_64::{
     __m128d, __m256d, _CMP_EQ_OQ, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm_loadu_pd,
-    _mm256_add_pd, _mm256_and_si256, _mm256_andnot_pd, _mm256_blendv_pd, _mm256_castpd_si256,
-    _mm256_castpd128_pd256, _mm256_castsi256_pd, _mm256_cmp_pd, _mm256_cmpeq_epi64, _mm256_div_pd,
-    _mm256_fmadd_pd, _mm256_insertf128_pd, _mm256_loadu_pd, _mm256_max_pd, _mm256_min_pd,
-    _mm256_movemask_pd, _mm256_mul_pd, _mm256_permute2f128_pd, _mm256_set_pd, _mm256_set1_epi64x,
-    _mm256_set1_pd, _mm256_setr_epi64x, _mm256_setzero_pd, _mm256_sqrt_pd, _mm256_storeu_pd,
-    _mm256_sub_epi64, _mm256_sub_pd, _mm256_unpackhi_pd, _mm256_unpacklo_pd,
+    _mm256_add_pd, _mm256_and_pd, _mm256_and_si256, _mm256_andnot_pd, _mm256_blendv_pd,
+    _mm256_castpd_si256, _mm256_castpd128_pd256, _mm256_castsi256_pd, _mm256_cmp_pd,
+    _mm256_cmpeq_epi64, _mm256_div_pd, _mm256_fmadd_pd, _mm256_insertf128_pd, _mm256_loadu_pd,
+    _mm256_max_pd, _mm256_min_pd, _mm256_movemask_pd, _mm256_mul_pd, _mm256_or_pd,
+    _mm256_permute2f128_pd, _mm256_set_pd, _mm256_set1_epi64x, _mm256_set1_pd, _mm256_setr_epi64x,
+    _mm256_setzero_pd, _mm256_sqrt_pd, _mm256_storeu_pd, _mm256_sub_epi64, _mm256_sub_pd,
+    _mm256_unpackhi_pd, _mm256_unpacklo_pd, _mm256_xor_pd,
 };
+use core::ops::{BitAnd, BitAndAssign, BitOr, BitOrAssign, BitXor, Not};
 
 use super::Level;
 use super::lanes::{EXPONENT, FRACTION, LANES, MOST, Mask, Simd};
@@ -36,10 +39,61 @@ type V = [__m256d; 2];
 // (No closures here or in the stages: a closure the compiler leaves out of line is compiled
 // without the level's features, and every intrinsic in it becomes a call.)
 
-/// Two halves' compare results as the mask's bits: lanes 0–3 from the low half's sign bits,
-/// 4–7 from the high half's.
+/// The AVX2 level's mask: lanes 0–3 and 4–7, each all ones where set and all zeros where
+/// not (what `vcmppd` gives and `vblendvpd` takes). Made only by `Avx2`'s methods, so that a
+/// value of it is, like the token, the proof that the CPU runs AVX.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Lanes([__m256d; 2]);
+
+/// Lane-wise `$op` on both halves of two masks.
+macro_rules! mask_op {
+    ($trait:ident, $method:ident, $assign:ident, $assign_method:ident, $op:ident) => {
+        impl $trait for Lanes {
+            type Output = Lanes;
+
+            #[inline(always)]
+            fn $method(self, other: Lanes) -> Lanes {
+                let (x, y) = (self.0, other.0);
+                Lanes(unsafe { [$op(x[0], y[0]), $op(x[1], y[1])] })
+            }
+        }
+
+        impl $assign for Lanes {
+            #[inline(always)]
+            fn $assign_method(&mut self, other: Lanes) {
+                *self = $trait::$method(*self, other);
+            }
+        }
+    };
+}
+
+mask_op!(BitAnd, bitand, BitAndAssign, bitand_assign, _mm256_and_pd);
+mask_op!(BitOr, bitor, BitOrAssign, bitor_assign, _mm256_or_pd);
+
+impl BitXor for Lanes {
+    type Output = Lanes;
+
+    #[inline(always)]
+    fn bitxor(self, other: Lanes) -> Lanes {
+        let (x, y) = (self.0, other.0);
+        Lanes(unsafe { [_mm256_xor_pd(x[0], y[0]), _mm256_xor_pd(x[1], y[1])] })
+    }
+}
+
+impl Not for Lanes {
+    type Output = Lanes;
+
+    #[inline(always)]
+    fn not(self) -> Lanes {
+        let ones = unsafe { _mm256_castsi256_pd(_mm256_set1_epi64x(-1)) };
+        self ^ Lanes([ones, ones])
+    }
+}
+
+/// The mask's bits: lanes 0–3 from the low half's sign bits, 4–7 from the high half's.
 #[inline(always)]
-fn bits(low: __m256d, high: __m256d) -> Mask {
+fn bits(mask: Lanes) -> Mask {
+    let [low, high] = mask.0;
     let (low, high) = unsafe { (_mm256_movemask_pd(low), _mm256_movemask_pd(high)) };
     (low | high << 4) as Mask
 }
@@ -133,21 +187,22 @@ macro_rules! both {
     }};
 }
 
-/// The compare `$cmp` on both halves, as bits.
+/// The compare `$cmp` on both halves, as a mask.
 macro_rules! compare {
     ($cmp:ident, $x:expr, $y:expr) => {{
         let (x, y) = ($x, $y);
-        unsafe {
-            bits(
+        Lanes(unsafe {
+            [
                 _mm256_cmp_pd::<$cmp>(x[0], y[0]),
                 _mm256_cmp_pd::<$cmp>(x[1], y[1]),
-            )
-        }
+            ]
+        })
     }};
 }
 
 impl Simd for Avx2 {
     type V = V;
+    type M = Lanes;
     const RUNS_LANE_STAGES: bool = true;
 
     #[inline(always)]
@@ -225,14 +280,36 @@ impl Simd for Avx2 {
     }
 
     #[inline(always)]
-    fn blend(self, bits: Mask, x: V, y: V) -> V {
-        let (low, high) = (lanes_of_bits(bits & 15), lanes_of_bits(bits >> 4));
+    fn blend(self, mask: Lanes, x: V, y: V) -> V {
+        let [low, high] = mask.0;
         unsafe {
             [
                 _mm256_blendv_pd(x[0], y[0], low),
                 _mm256_blendv_pd(x[1], y[1], high),
             ]
         }
+    }
+
+    #[inline(always)]
+    fn bits(self, mask: Lanes) -> Mask {
+        bits(mask)
+    }
+
+    #[inline(always)]
+    fn mask(self, bits: Mask) -> Lanes {
+        Lanes([lanes_of_bits(bits & 15), lanes_of_bits(bits >> 4)])
+    }
+
+    #[inline(always)]
+    fn none(self) -> Lanes {
+        let zero = unsafe { _mm256_setzero_pd() };
+        Lanes([zero, zero])
+    }
+
+    #[inline(always)]
+    fn all(self) -> Lanes {
+        let ones = unsafe { _mm256_castsi256_pd(_mm256_set1_epi64x(-1)) };
+        Lanes([ones, ones])
     }
 
     #[inline(always)]
@@ -257,27 +334,27 @@ impl Simd for Avx2 {
     }
 
     #[inline(always)]
-    fn lt(self, x: V, y: V) -> Mask {
+    fn lt(self, x: V, y: V) -> Lanes {
         compare!(_CMP_LT_OQ, x, y)
     }
 
     #[inline(always)]
-    fn gt(self, x: V, y: V) -> Mask {
+    fn gt(self, x: V, y: V) -> Lanes {
         compare!(_CMP_GT_OQ, x, y)
     }
 
     #[inline(always)]
-    fn ge(self, x: V, y: V) -> Mask {
+    fn ge(self, x: V, y: V) -> Lanes {
         compare!(_CMP_GE_OQ, x, y)
     }
 
     #[inline(always)]
-    fn eq(self, x: V, y: V) -> Mask {
+    fn eq(self, x: V, y: V) -> Lanes {
         compare!(_CMP_EQ_OQ, x, y)
     }
 
     #[inline(always)]
-    fn ne(self, x: V, y: V) -> Mask {
+    fn ne(self, x: V, y: V) -> Lanes {
         compare!(_CMP_NEQ_UQ, x, y)
     }
 

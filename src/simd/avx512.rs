@@ -11,7 +11,7 @@ use core::arch::x86_64::{
 };
 
 use super::Level;
-use super::lanes::{EXPONENT, FRACTION, LANES, MOST, Mask, Simd};
+use super::lanes::{EXPONENT, FRACTION, LANES, MOST, Mask, Simd, masks_are_bits};
 
 /// The AVX-512 level's token: a value of it is the proof that the CPU has AVX-512 F, VL and
 /// DQ, AVX2 and FMA ([`Level::Avx512`]).
@@ -31,6 +31,7 @@ impl Avx512 {
 
 impl Simd for Avx512 {
     type V = __m512d;
+    type M = Mask;
     const RUNS_LANE_STAGES: bool = true;
 
     #[inline(always)]
@@ -100,6 +101,8 @@ impl Simd for Avx512 {
     fn blend(self, bits: Mask, x: __m512d, y: __m512d) -> __m512d {
         unsafe { _mm512_mask_blend_pd(bits as __mmask8, x, y) }
     }
+
+    masks_are_bits!();
 
     #[inline(always)]
     fn unit_scale(self, x: __m512d) -> __m512d {

@@ -1,7 +1,7 @@
 //! [`Simd`]: the operations the lane stages are written in, on a block of [`LANES`] pairs (one
-//! `f64` per pair in a vector, one bit per pair in a [`Mask`]), with one implementation per
-//! level (`Portable`, `Avx2`, `Avx512`,
-//! `Neon`).
+//! `f64` per pair in a vector, one truth value per pair in a mask: the level's own form,
+//! [`Simd::M`], inside a stage, and a [`Mask`] of bits where a stage hands its lanes on), with
+//! one implementation per level (`Portable`, `Avx2`, `Avx512`, `Neon`).
 //!
 //! Every operation gives the same bits at every level, to the NaN and the signed zero:
 //!
@@ -20,11 +20,30 @@
 //!
 //! The portable level is the reference; the tests compare every level the CPU has with it.
 
+use core::ops::{BitAnd, BitAndAssign, BitOr, BitOrAssign, BitXor, Not};
+
 /// Pairs per block: one AVX-512 register, two AVX2 registers, four NEON registers.
 pub(crate) const LANES: usize = 8;
 
-/// A bit per lane (bit `l` for lane `l`).
+/// A bit per lane (bit `l` for lane `l`): a mask as the stages hand it on, and as the
+/// portable, AVX-512 and NEON levels hold it.
 pub(crate) type Mask = u8;
+
+/// [`Simd::bits`] and [`Simd::mask`] for a level whose [`Simd::M`] is the [`Mask`] itself.
+macro_rules! masks_are_bits {
+    () => {
+        #[inline(always)]
+        fn bits(self, mask: Mask) -> Mask {
+            mask
+        }
+
+        #[inline(always)]
+        fn mask(self, bits: Mask) -> Mask {
+            bits
+        }
+    };
+}
+pub(super) use masks_are_bits;
 
 /// The values of the block's lanes, widest value type first: row `c` of a block read by
 /// [`Simd::transposed`] is at most this many values wide (3 segments of 3-D rows).
@@ -40,6 +59,20 @@ pub(crate) const MOST: usize = 9;
 pub(crate) trait Simd: Copy {
     /// `LANES` values.
     type V: Copy;
+
+    /// A truth value per lane, in the level's own form: what its compares give and its
+    /// [`blend`](Simd::blend) takes, so that a compare feeding a select costs no conversion.
+    /// The bits of a [`Mask`] at the portable, AVX-512 (a `k` register) and NEON levels;
+    /// at AVX2 a vector of all-ones or all-zeros lanes, which a conversion to bits
+    /// (`vmovmskpd`) and back (a broadcast and a compare) would cost several instructions
+    /// each way. [`bits`](Simd::bits) and [`mask`](Simd::mask) convert.
+    type M: Copy
+        + BitAnd<Output = Self::M>
+        + BitOr<Output = Self::M>
+        + BitXor<Output = Self::M>
+        + Not<Output = Self::M>
+        + BitAndAssign
+        + BitOrAssign;
 
     /// Whether the batches run their lane stages at this level: where the vectors are 16
     /// bytes (the portable level's SSE2 on x86-64, NEON) a block of eight pairs spills out
@@ -72,23 +105,27 @@ pub(crate) trait Simd: Copy {
     fn mul_add(self, x: Self::V, y: Self::V, z: Self::V) -> Self::V;
     /// Lanes `√x`.
     fn sqrt(self, x: Self::V) -> Self::V;
-    /// `y` where the mask's bit is set, else `x`.
-    fn blend(self, bits: Mask, x: Self::V, y: Self::V) -> Self::V;
+    /// `y` where the mask is set, else `x`.
+    fn blend(self, mask: Self::M, x: Self::V, y: Self::V) -> Self::V;
+    /// The mask's bits, bit `l` for lane `l`.
+    fn bits(self, mask: Self::M) -> Mask;
+    /// The mask whose bits are `bits`.
+    fn mask(self, bits: Mask) -> Self::M;
     /// Lanes [`unit_scale`]`(x)`: the power of two that brings a normal `|x|` into `[2, 4)`.
     fn unit_scale(self, x: Self::V) -> Self::V;
     /// Lanes [`fraction_cleared`]`(x)`: for a normal `x`, the signed power of two at or below
     /// `|x|`.
     fn fraction_cleared(self, x: Self::V) -> Self::V;
     /// Lanes `x < y`.
-    fn lt(self, x: Self::V, y: Self::V) -> Mask;
+    fn lt(self, x: Self::V, y: Self::V) -> Self::M;
     /// Lanes `x > y`.
-    fn gt(self, x: Self::V, y: Self::V) -> Mask;
+    fn gt(self, x: Self::V, y: Self::V) -> Self::M;
     /// Lanes `x ≥ y`.
-    fn ge(self, x: Self::V, y: Self::V) -> Mask;
+    fn ge(self, x: Self::V, y: Self::V) -> Self::M;
     /// Lanes `x = y`.
-    fn eq(self, x: Self::V, y: Self::V) -> Mask;
+    fn eq(self, x: Self::V, y: Self::V) -> Self::M;
     /// Lanes `x ≠ y`, or unordered (true with a NaN operand).
-    fn ne(self, x: Self::V, y: Self::V) -> Mask;
+    fn ne(self, x: Self::V, y: Self::V) -> Self::M;
 
     /// `LANES` records of `W` values, stored one after another from `values[0]`, as `W`
     /// vectors: lane `l` of vector `c` is `values[l·W + c]` (the first `W` of the array; the
@@ -102,6 +139,30 @@ pub(crate) trait Simd: Copy {
     #[inline(always)]
     fn zero(self) -> Self::V {
         self.splat(0.0)
+    }
+
+    /// The mask set in no lane.
+    #[inline(always)]
+    fn none(self) -> Self::M {
+        self.mask(0)
+    }
+
+    /// The mask set in every lane.
+    #[inline(always)]
+    fn all(self) -> Self::M {
+        self.mask(Mask::MAX)
+    }
+
+    /// Whether the mask is set in any lane.
+    #[inline(always)]
+    fn any(self, mask: Self::M) -> bool {
+        self.bits(mask) != 0
+    }
+
+    /// Whether the mask is set in every lane.
+    #[inline(always)]
+    fn every(self, mask: Self::M) -> bool {
+        self.bits(mask) == Mask::MAX
     }
 }
 
@@ -181,7 +242,7 @@ mod tests {
                 s.max(x, y),
                 s.abs(x),
                 s.sqrt(x),
-                s.blend(self.bits, x, y),
+                s.blend(s.mask(self.bits), x, y),
                 s.unit_scale(x),
                 s.fraction_cleared(x),
                 s.mul_add(
@@ -190,7 +251,20 @@ mod tests {
                     s.load(self.records[..LANES].try_into().unwrap_or_default()),
                 ),
             ];
-            let masks = [s.lt(x, y), s.gt(x, y), s.ge(x, y), s.eq(x, y), s.ne(x, y)];
+            let masks =
+                [s.lt(x, y), s.gt(x, y), s.ge(x, y), s.eq(x, y), s.ne(x, y)].map(|m| s.bits(m));
+            let m = s.mask(self.bits);
+            let n = s.lt(x, y);
+            let logic = [
+                s.bits(m & n),
+                s.bits(m | n),
+                s.bits(m ^ n),
+                s.bits(!m),
+                u8::from(s.any(m)),
+                u8::from(s.every(m)),
+                s.bits(s.none()),
+                s.bits(s.all()),
+            ];
             let records = &self.records;
             let transposed = [
                 s.transposed::<1>(records),
@@ -218,6 +292,7 @@ mod tests {
             for v in transposed.into_iter().flatten() {
                 out.extend(s.store(v).map(f64::to_bits));
             }
+            out.extend(logic.map(u64::from));
             out.extend(masks.map(u64::from));
             out
         }

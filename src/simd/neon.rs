@@ -10,7 +10,9 @@ use core::arch::aarch64::{
 };
 
 use super::Level;
-use super::lanes::{EXPONENT, FRACTION, LANES, MOST, Mask, Simd, transposed_by_reads};
+use super::lanes::{
+    EXPONENT, FRACTION, LANES, MOST, Mask, Simd, masks_are_bits, transposed_by_reads,
+};
 
 /// The NEON level's token: a value of it is the proof that the CPU has NEON
 /// ([`Level::Neon`]; every aarch64 CPU does).
@@ -56,6 +58,7 @@ fn select_lt(x: float64x2_t, y: float64x2_t) -> float64x2_t {
 
 impl Simd for Neon {
     type V = V;
+    type M = Mask;
     const RUNS_LANE_STAGES: bool = false;
 
     #[inline(always)]
@@ -126,6 +129,8 @@ impl Simd for Neon {
             vbslq_f64(lanes, y[q], x[q])
         })
     }
+
+    masks_are_bits!();
 
     #[inline(always)]
     fn unit_scale(self, x: V) -> V {

@@ -2,7 +2,9 @@
 //! lanes branch-free (the compiler vectorises it for the target's baseline: SSE2 on x86-64,
 //! NEON on aarch64). The reference the other levels are tested against.
 
-use super::lanes::{LANES, MOST, Mask, Simd, fraction_cleared, transposed_by_reads, unit_scale};
+use super::lanes::{
+    LANES, MOST, Mask, Simd, fraction_cleared, masks_are_bits, transposed_by_reads, unit_scale,
+};
 
 /// The portable level's token (every CPU runs it).
 #[derive(Clone, Copy, Debug, Default)]
@@ -23,6 +25,7 @@ fn mask(x: [f64; LANES], y: [f64; LANES], f: impl Fn(f64, f64) -> bool) -> Mask 
 
 impl Simd for Portable {
     type V = [f64; LANES];
+    type M = Mask;
     const RUNS_LANE_STAGES: bool = false;
 
     #[inline(always)]
@@ -84,6 +87,8 @@ impl Simd for Portable {
     fn blend(self, bits: Mask, x: Self::V, y: Self::V) -> Self::V {
         std::array::from_fn(|l| if bits >> l & 1 != 0 { y[l] } else { x[l] })
     }
+
+    masks_are_bits!();
 
     #[inline(always)]
     fn unit_scale(self, x: Self::V) -> Self::V {
