@@ -39,6 +39,7 @@ pub mod interrupt;
 pub mod motion;
 pub mod path;
 pub mod poly;
+mod prefetch;
 #[cfg(feature = "python")]
 mod python;
 pub mod scene;

@@ -29,6 +29,7 @@ use super::PerPair;
 use super::paths::{PathPairs, PathRows};
 use super::window_lanes::{LaneSide, windows_apart};
 use crate::collision::window_box::{MARGIN, NORMAL_FLOOR};
+use crate::prefetch::prefetch;
 use crate::simd::{LANES, MOST, Mask, Simd};
 
 /// The pairs of a block that the lanes settle, by screen (bit `l` for the block's pair `l`).
@@ -187,29 +188,17 @@ fn lanes_of<S: Simd>(s: S, values: PerPair<'_>, first: usize) -> S::V {
 const AHEAD: usize = 2 * LANES;
 
 /// Asks for the `width·LANES` values from `at + width·AHEAD` in the cache (nothing past the
-/// end; a hint, on x86-64 only).
+/// end; a hint).
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[cfg_attr(debug_assertions, inline(never))]
 fn ahead(values: &[f64], at: usize, width: usize) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use core::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
-        let from = at + width * AHEAD;
-        if from + width * LANES <= values.len() {
-            for line in 0..width {
-                // SAFETY: in range (checked above); a hint, it reads nothing (SSE, which
-                // every x86-64 CPU has).
-                unsafe {
-                    _mm_prefetch(
-                        values.as_ptr().add(from + 8 * line).cast::<i8>(),
-                        _MM_HINT_T0,
-                    )
-                };
-            }
+    let from = at + width * AHEAD;
+    if from + width * LANES <= values.len() {
+        for line in 0..width {
+            // (In range, checked above; a pointer, not an index: no bounds check per line.)
+            prefetch(values.as_ptr().wrapping_add(from + 8 * line));
         }
     }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = (values, at, width, AHEAD);
 }
 
 /// The rows of paths `first..first + LANES` of `side`, a lane each (and those [`AHEAD`] asked
