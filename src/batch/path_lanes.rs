@@ -326,13 +326,13 @@ fn lane_bounds<S: Simd, const D: usize, const K: usize>(
         }
     }
     // The last segment lasts for ever: unbounded on each side it drifts to. Where every lane
-    // rests (most blocks: balls that stop), its box is its point: what the selects below
-    // give at a velocity and acceleration of exactly 0, without them (each a round trip
-    // between a mask and the lanes).
+    // rests (most blocks: balls that stop), its box is its point: what the compares and
+    // selects below give at a velocity and acceleration of exactly 0, without them.
+    let all_rest = s.every(rests);
     for i in 0..D {
         let (p, v, a) = (p[K - 1][i], v[K - 1][i], a[K - 1][i]);
         bounds.size = s.add(bounds.size, s.abs(p));
-        if s.every(rests) {
+        if all_rest {
             (bounds.segments.lo[K - 1][i], bounds.segments.hi[K - 1][i]) = (p, p);
             bounds.lo[i] = s.min(bounds.lo[i], p);
             bounds.hi[i] = s.max(bounds.hi[i], p);

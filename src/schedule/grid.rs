@@ -25,11 +25,15 @@ use crate::prefetch::prefetch;
 /// need more.
 const CELLS_PER_BALL: usize = 2;
 
-/// The fewest cells for which a search asks for its lines ahead ([`Grid::asks_ahead`]): about
-/// 2¹⁶ balls, whose cells, lists, boxes and paths (some 10 MB) outgrow a core's second-level
-/// cache. In a smaller scene, held in the caches, the prefetches cost more than they save
-/// (3 % more per event at 1,024 balls, `schedule_timing`).
-const PREFETCH_CELLS: usize = 1 << 17;
+/// The fewest balls for which the searches ask for their lines ahead ([`Grid::asks_ahead`]):
+/// 2¹⁶ balls' boxes, lists and paths (some 10 MB) outgrow a core's second-level cache. In a
+/// smaller scene, held in the caches, the prefetches cost more than they save (3 % more per
+/// event at 1,024 balls, `schedule_timing`).
+const PREFETCH_BALLS: usize = 1 << 16;
+
+/// The most cells a search asks for ahead: a wider range (a box up to an eighth of the
+/// grid) would ask for more lines than the first-level cache keeps until they are read.
+const PREFETCH_RANGE: usize = 64;
 
 /// Up to this many balls, one cell: each ball's boxes are compared with every other's, which
 /// costs less than listing them in cells (measured on the benchmark's frictionless disks).
@@ -44,6 +48,15 @@ pub(crate) struct CellRange<const D: usize> {
     hi: [u32; D],
 }
 
+impl<const D: usize> CellRange<D> {
+    /// How many cells the range covers (saturating).
+    fn cells(&self) -> usize {
+        (0..D).fold(1usize, |n, k| {
+            n.saturating_mul(self.hi[k].saturating_sub(self.lo[k]) as usize + 1)
+        })
+    }
+}
+
 /// The grid: cell size, origin, cells per axis, each cell's balls, and the wide boxes' balls.
 #[derive(Clone, Debug)]
 pub(crate) struct Grid<const D: usize> {
@@ -52,6 +65,8 @@ pub(crate) struct Grid<const D: usize> {
     counts: [usize; D],
     cells: Vec<Vec<u32>>,
     wide: Vec<u32>,
+    /// Whether the searches ask for their lines ahead ([`PREFETCH_BALLS`]).
+    asks_ahead: bool,
 }
 
 impl<const D: usize> Grid<D> {
@@ -79,6 +94,7 @@ impl<const D: usize> Grid<D> {
             counts,
             cells: vec![Vec::new(); total],
             wide: Vec::new(),
+            asks_ahead: balls >= PREFETCH_BALLS && total > 1,
         }
     }
 
@@ -104,10 +120,7 @@ impl<const D: usize> Grid<D> {
     /// Whether a box of this range is listed among the wide ones (see the module's notes):
     /// it covers more than an eighth of the cells.
     fn is_wide(&self, range: &CellRange<D>) -> bool {
-        let covered = (0..D)
-            .map(|k| range.hi[k].saturating_sub(range.lo[k]) as usize + 1)
-            .fold(1usize, usize::saturating_mul);
-        covered > self.cells.len() / 8
+        range.cells() > self.cells.len() / 8
     }
 
     /// Lists `ball` in the cells of `range` (or among the wide boxes).
@@ -136,15 +149,11 @@ impl<const D: usize> Grid<D> {
     /// Calls `visit` with every ball listed in the cells of `range` (a ball once per cell it
     /// shares with the range), and with every ball of a wide box.
     pub(crate) fn for_each_ball(&self, range: &CellRange<D>, mut visit: impl FnMut(u32)) {
-        let mut index = range.lo;
-        loop {
-            for &ball in &self.cells[self.flat(&index)] {
+        self.for_each_cell_in(range, |_, cell| {
+            for &ball in cell {
                 visit(ball);
             }
-            if !next_index(&mut index, range) {
-                break;
-            }
-        }
+        });
         for &ball in &self.wide {
             visit(ball);
         }
@@ -167,27 +176,23 @@ impl<const D: usize> Grid<D> {
         // each list's address is read from its cell: the lines are asked for a step at a
         // time over the whole range (the cells, then their lists, then the boxes), so that
         // the misses of a step overlap, before the boxes are compared.
-        if self.asks_ahead() {
-            self.for_each_cell_in(range, |cell| prefetch(cell));
-            self.for_each_cell_in(range, |cell| prefetch(cell.as_ptr()));
-            self.for_each_cell_in(range, |cell| {
+        if self.asks_ahead && range.cells() <= PREFETCH_RANGE {
+            self.for_each_cell_in(range, |_, cell| prefetch(cell));
+            self.for_each_cell_in(range, |_, cell| prefetch(cell.as_ptr()));
+            self.for_each_cell_in(range, |_, cell| {
                 for &ball in cell {
                     prefetch(&boxes[ball as usize]);
                 }
             });
         }
-        let mut index = range.lo;
-        loop {
-            for &ball in &self.cells[self.flat(&index)] {
+        self.for_each_cell_in(range, |index, cell| {
+            for &ball in cell {
                 let other = &boxes[ball as usize];
-                if other.overlaps(own) && self.first_shared(&index, range, other) {
+                if other.overlaps(own) && self.first_shared(index, range, other) {
                     visit(ball);
                 }
             }
-            if !next_index(&mut index, range) {
-                break;
-            }
-        }
+        });
         for &ball in &self.wide {
             if boxes[ball as usize].overlaps(own) {
                 visit(ball);
@@ -195,19 +200,19 @@ impl<const D: usize> Grid<D> {
         }
     }
 
-    /// Whether the grid is large enough for its searches (and the pair searches after them)
-    /// to ask for their lines ahead: see [`PREFETCH_CELLS`].
+    /// Whether the scene is large enough for the searches (the grid's, and the pair searches
+    /// after them) to ask for their lines ahead: see [`PREFETCH_BALLS`].
     #[inline(always)]
     pub(crate) fn asks_ahead(&self) -> bool {
-        self.cells.len() >= PREFETCH_CELLS
+        self.asks_ahead
     }
 
-    /// Each cell of `range`.
+    /// Each cell of `range`, with its index, in order.
     #[inline(always)]
-    fn for_each_cell_in(&self, range: &CellRange<D>, mut visit: impl FnMut(&Vec<u32>)) {
+    fn for_each_cell_in(&self, range: &CellRange<D>, mut visit: impl FnMut(&[u32; D], &Vec<u32>)) {
         let mut index = range.lo;
         loop {
-            visit(&self.cells[self.flat(&index)]);
+            visit(&index, &self.cells[self.flat(&index)]);
             if !next_index(&mut index, range) {
                 break;
             }
@@ -367,11 +372,22 @@ mod tests {
     }
 
     #[test]
+    fn only_a_large_scene_asks_for_its_lines_ahead() {
+        let grid = |balls| Grid::<2>::new([0.0, 0.0], [1000.0, 1000.0], 1.0, balls);
+        assert!(grid(PREFETCH_BALLS).asks_ahead());
+        assert!(!grid(PREFETCH_BALLS - 1).asks_ahead());
+        assert!(!grid(1024).asks_ahead());
+    }
+
+    #[test]
     fn every_overlapping_box_is_visited_once() {
         let mut rng = crate::test_rng::Rng(3);
         for round in 0..200 {
             let n = 2 + rng.below(80) as usize;
             let mut grid = Grid::<2>::new([0.0, 0.0], [10.0, 10.0], 0.7, n);
+            // Every other round as in a large scene, the lines asked for ahead (the same
+            // visits, whatever the hint).
+            grid.asks_ahead = round % 2 == 1;
             // Boxes of every size, some past the region, some unbounded, some NaN (retired).
             let boxes: Vec<Reach<2>> = (0..n)
                 .map(|k| {

@@ -12,7 +12,7 @@ use core::arch::x86_64::{
     _mm256_setzero_pd, _mm256_sqrt_pd, _mm256_storeu_pd, _mm256_sub_epi64, _mm256_sub_pd,
     _mm256_unpackhi_pd, _mm256_unpacklo_pd, _mm256_xor_pd,
 };
-use core::ops::{BitAnd, BitAndAssign, BitOr, BitOrAssign, BitXor, Not};
+use core::ops::{BitAnd, BitAndAssign, BitOr, BitOrAssign, BitXor, BitXorAssign, Not};
 
 use super::Level;
 use super::lanes::{EXPONENT, FRACTION, LANES, MOST, Mask, Simd};
@@ -33,8 +33,10 @@ impl Avx2 {
 type V = [__m256d; 2];
 
 // SAFETY (every `unsafe` block below): a value of `Avx2` exists only where the CPU has AVX2
-// and FMA (`Avx2::new`), which is all these intrinsics need; the loads and stores read and
-// write only the arrays and slices named, in range.
+// and FMA (`Avx2::new`), and a value of `Lanes` only where an `Avx2` made it (its field is
+// private to this module, and only `Avx2`'s methods and the operators on two `Lanes` make
+// one), which is all these intrinsics need; the loads and stores read and write only the
+// arrays and slices named, in range.
 
 // (No closures here or in the stages: a closure the compiler leaves out of line is compiled
 // without the level's features, and every intrinsic in it becomes a call.)
@@ -69,25 +71,22 @@ macro_rules! mask_op {
 
 mask_op!(BitAnd, bitand, BitAndAssign, bitand_assign, _mm256_and_pd);
 mask_op!(BitOr, bitor, BitOrAssign, bitor_assign, _mm256_or_pd);
-
-impl BitXor for Lanes {
-    type Output = Lanes;
-
-    #[inline(always)]
-    fn bitxor(self, other: Lanes) -> Lanes {
-        let (x, y) = (self.0, other.0);
-        Lanes(unsafe { [_mm256_xor_pd(x[0], y[0]), _mm256_xor_pd(x[1], y[1])] })
-    }
-}
+mask_op!(BitXor, bitxor, BitXorAssign, bitxor_assign, _mm256_xor_pd);
 
 impl Not for Lanes {
     type Output = Lanes;
 
     #[inline(always)]
     fn not(self) -> Lanes {
-        let ones = unsafe { _mm256_castsi256_pd(_mm256_set1_epi64x(-1)) };
-        self ^ Lanes([ones, ones])
+        self ^ ones()
     }
+}
+
+/// Every lane set.
+#[inline(always)]
+fn ones() -> Lanes {
+    let ones = unsafe { _mm256_castsi256_pd(_mm256_set1_epi64x(-1)) };
+    Lanes([ones, ones])
 }
 
 /// The mask's bits: lanes 0–3 from the low half's sign bits, 4–7 from the high half's.
@@ -308,8 +307,7 @@ impl Simd for Avx2 {
 
     #[inline(always)]
     fn all(self) -> Lanes {
-        let ones = unsafe { _mm256_castsi256_pd(_mm256_set1_epi64x(-1)) };
-        Lanes([ones, ones])
+        ones()
     }
 
     #[inline(always)]

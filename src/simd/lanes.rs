@@ -14,7 +14,8 @@
 //!   stages' proofs are written for these;
 //! - the comparisons are ordered (false with a NaN operand), but [`Simd::ne`], which is true
 //!   with a NaN operand;
-//! - [`Simd::blend`] takes the second operand where the mask's bit is set;
+//! - [`Simd::blend`] takes the second operand where the mask is set; the masks' logic
+//!   (`&`, `|`, `^`, `!`, [`Simd::any`], [`Simd::every`]) is lane-wise, as on a mask's bits;
 //! - [`Simd::unit_scale`] and [`Simd::fraction_cleared`] work on the bits (exact, NaN
 //!   included): [`unit_scale`] and [`fraction_cleared`].
 //!
@@ -250,6 +251,8 @@ mod tests {
                     y,
                     s.load(self.records[..LANES].try_into().unwrap_or_default()),
                 ),
+                // A mask made by logic on a compare, through a select.
+                s.blend(!s.lt(x, y) ^ s.mask(self.bits), x, y),
             ];
             let masks =
                 [s.lt(x, y), s.gt(x, y), s.ge(x, y), s.eq(x, y), s.ne(x, y)].map(|m| s.bits(m));
@@ -366,6 +369,17 @@ mod tests {
         let mask = |k: usize| out[out.len() - 5 + k] as Mask;
         assert_eq!(mask(0), 0b1000_0000, "lt: ordered");
         assert_eq!(mask(4), 0b1101_0011, "ne: unordered");
+        // The mask logic on `m` = bits 0b1010_1010 and `n` = lt; `any`, `every`, `none`
+        // and `all` are the trait's defaults at most levels, so they are checked here.
+        let logic = |k: usize| out[out.len() - 13 + k] as Mask;
+        assert_eq!(logic(0), 0b1000_0000, "m & n");
+        assert_eq!(logic(1), 0b1010_1010, "m | n");
+        assert_eq!(logic(2), 0b0010_1010, "m ^ n");
+        assert_eq!(logic(3), 0b0101_0101, "!m");
+        assert_eq!([logic(4), logic(5)], [1, 0], "any, every");
+        assert_eq!([logic(6), logic(7)], [0, Mask::MAX], "none, all");
+        // `!lt ^ m` selects y where exactly one of `x ≥ y or unordered` and m holds.
+        assert_eq!(lanes(14), bits([1.0, 1.0, -0.0, -0.0, nan, 2.0, 1.0, 3.0]));
         // The unit scale: a normal number times it is in `[2, 4)`; `+∞` for a zero of either
         // sign, `+0` for a NaN.
         let inf = f64::INFINITY;
@@ -389,7 +403,7 @@ mod tests {
             "the product's rounding error"
         );
         // Records of 3: lane `l` of vector `c` is value `3·l + c`.
-        let three = 14 + MOST * 2;
+        let three = 15 + MOST * 2;
         assert_eq!(
             lanes(three + 1),
             bits(std::array::from_fn(|l| (3 * l + 1) as f64))

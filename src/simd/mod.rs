@@ -5,7 +5,8 @@
 //!   (aarch64); detected once, forced by `BALLCOLLIDE_SIMD=portable|avx2|avx512|neon` or
 //!   [`with_level`].
 //! - `Simd` (`lanes.rs`): the operations on a block of eight pairs, one `f64` per pair in a
-//!   vector and a bit per pair in a mask, with the semantics the stages' proofs rely on
+//!   vector and a truth value per pair in a mask (the level's own form, packed into bits
+//!   where a stage hands its lanes on), with the semantics the stages' proofs rely on
 //!   (`min`/`max` as `x < y ? x : y`, ordered compares, `ne` unordered, `mul_add` fused, two
 //!   exact operations on the bits for the power-of-two units). One implementation
 //!   per level, each a token type that only a CPU check makes: `Portable` (`[f64; 8]`
