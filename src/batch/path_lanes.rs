@@ -332,18 +332,18 @@ fn lane_bounds<S: Simd, const D: usize, const K: usize>(
     for i in 0..D {
         let (p, v, a) = (p[K - 1][i], v[K - 1][i], a[K - 1][i]);
         bounds.size = s.add(bounds.size, s.abs(p));
-        if all_rest {
-            (bounds.segments.lo[K - 1][i], bounds.segments.hi[K - 1][i]) = (p, p);
-            bounds.lo[i] = s.min(bounds.lo[i], p);
-            bounds.hi[i] = s.max(bounds.hi[i], p);
-            continue;
-        }
-        let accelerates = s.ne(a, zero);
-        let towards = s.blend(accelerates, v, a);
-        let down = s.lt(towards, zero) | (s.gt(a, zero) & s.lt(v, zero));
-        let up = s.gt(towards, zero) | (s.lt(a, zero) & s.gt(v, zero));
-        let lo = s.blend(down, p, s.splat(f64::NEG_INFINITY));
-        let hi = s.blend(up, p, infinity);
+        let (lo, hi) = if all_rest {
+            (p, p)
+        } else {
+            let accelerates = s.ne(a, zero);
+            let towards = s.blend(accelerates, v, a);
+            let down = s.lt(towards, zero) | (s.gt(a, zero) & s.lt(v, zero));
+            let up = s.gt(towards, zero) | (s.lt(a, zero) & s.gt(v, zero));
+            (
+                s.blend(down, p, s.splat(f64::NEG_INFINITY)),
+                s.blend(up, p, infinity),
+            )
+        };
         (bounds.segments.lo[K - 1][i], bounds.segments.hi[K - 1][i]) = (lo, hi);
         bounds.lo[i] = s.min(bounds.lo[i], lo);
         bounds.hi[i] = s.max(bounds.hi[i], hi);

@@ -224,17 +224,11 @@ impl<'py> TableReader<'py> {
         for p in dict_values(&table.getattr(intern!(py, "pockets"))?)? {
             // A pocket is copied with its table (its `contains` is mutable), its centre not.
             let centre = p.getattr(intern!(py, "center"))?;
-            let [x, y] = match self.centres.get(&(centre.as_ptr() as usize)) {
-                Some((_, xy)) => *xy,
-                None => {
-                    let [x, y, _] = xyz_of("center", &centre)
-                        .map_err(|e| prefixed(py, e, &format!("pocket {}", id_of(&p))))?;
-                    let read = [x, y];
-                    self.centres
-                        .insert(centre.as_ptr() as usize, (centre, read));
-                    read
-                }
-            };
+            let [x, y] = *by_identity(&mut self.centres, &centre, |centre| {
+                let [x, y, _] = xyz_of("center", centre)
+                    .map_err(|e| prefixed(py, e, &format!("pocket {}", id_of(&p))))?;
+                Ok([x, y])
+            })?;
             pockets.extend([
                 x,
                 y,
@@ -263,6 +257,20 @@ impl<'py> TableReader<'py> {
     }
 }
 
+/// What `read` gives for `obj`, from `cache` by `obj`'s identity, read the first time (and
+/// `obj` kept, so that its address is not reused during the call).
+fn by_identity<'m, 'py, T>(
+    cache: &'m mut HashMap<usize, (Bound<'py, PyAny>, T)>,
+    obj: &Bound<'py, PyAny>,
+    read: impl FnOnce(&Bound<'py, PyAny>) -> PyResult<T>,
+) -> PyResult<&'m T> {
+    let entry = match cache.entry(obj.as_ptr() as usize) {
+        std::collections::hash_map::Entry::Occupied(e) => e.into_mut(),
+        std::collections::hash_map::Entry::Vacant(e) => e.insert((obj.clone(), read(obj)?)),
+    };
+    Ok(&entry.1)
+}
+
 /// The row of cushion segment `c` (frozen in pooltool) from `rows`, by `read` the first time
 /// (a point that is not `(x, y, z)` named with the segment's id).
 fn segment<'m, 'py>(
@@ -270,15 +278,10 @@ fn segment<'m, 'py>(
     c: &Bound<'py, PyAny>,
     read: impl FnOnce(&Bound<'py, PyAny>) -> PyResult<Vec<f64>>,
 ) -> PyResult<&'m [f64]> {
-    let entry = match rows.entry(c.as_ptr() as usize) {
-        std::collections::hash_map::Entry::Occupied(e) => e.into_mut(),
-        std::collections::hash_map::Entry::Vacant(e) => {
-            let row = read(c)
-                .map_err(|err| prefixed(c.py(), err, &format!("cushion segment {}", id_of(c))))?;
-            e.insert((c.clone(), row))
-        }
-    };
-    Ok(&entry.1)
+    let row = by_identity(rows, c, |c| {
+        read(c).map_err(|err| prefixed(c.py(), err, &format!("cushion segment {}", id_of(c))))
+    })?;
+    Ok(row)
 }
 
 /// `obj.id`'s repr (`?` if it has none), for errors.

@@ -210,13 +210,27 @@ impl<const D: usize> Grid<D> {
     /// Each cell of `range`, with its index, in order.
     #[inline(always)]
     fn for_each_cell_in(&self, range: &CellRange<D>, mut visit: impl FnMut(&[u32; D], &Vec<u32>)) {
-        let mut index = range.lo;
-        loop {
-            visit(&index, &self.cells[self.flat(&index)]);
-            if !next_index(&mut index, range) {
-                break;
-            }
+        for (index, c) in self.cells_of(range) {
+            visit(&index, &self.cells[c]);
         }
+    }
+
+    /// The cells of `range`, in order: each one's index and its place in `cells` (the
+    /// iterator holds no borrow of the grid, so that the cells can be changed meanwhile).
+    #[inline(always)]
+    fn cells_of(&self, range: &CellRange<D>) -> impl Iterator<Item = ([u32; D], usize)> + use<D> {
+        let (counts, range) = (self.counts, *range);
+        let mut next = Some(range.lo);
+        std::iter::from_fn(move || {
+            let index = next?;
+            let mut following = index;
+            next = next_index(&mut following, &range).then_some(following);
+            let mut c = 0;
+            for k in (0..D).rev() {
+                c = c * counts[k] + index[k] as usize;
+            }
+            Some((index, c))
+        })
     }
 
     /// Whether the cell at `index` (in `range`, and in the range of `other`, a box listed
@@ -253,22 +267,9 @@ impl<const D: usize> Grid<D> {
         range: &CellRange<D>,
         mut visit: impl FnMut(&mut [Vec<u32>], usize),
     ) {
-        let mut index = range.lo;
-        loop {
-            let c = self.flat(&index);
+        for (_, c) in self.cells_of(range) {
             visit(&mut self.cells, c);
-            if !next_index(&mut index, range) {
-                return;
-            }
         }
-    }
-
-    fn flat(&self, index: &[u32; D]) -> usize {
-        let mut c = 0;
-        for k in (0..D).rev() {
-            c = c * self.counts[k] + index[k] as usize;
-        }
-        c
     }
 }
 
