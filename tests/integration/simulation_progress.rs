@@ -33,7 +33,7 @@ fn run(
         mass,
         restitution,
         t_end,
-        max_events: Some(2_000_000),
+        max_events: Some(4_000_000),
         ..Default::default()
     };
     simulate(balls, radii, walls, &options).expect("a valid simulation")
@@ -305,6 +305,37 @@ fn masses_over_the_whole_float_range_give_finite_states_that_move_on() {
             let first = run.events[0];
             assert_eq!((first.i, first.j), (0, Some(1)));
         }
+    }
+}
+
+#[test]
+fn a_light_ball_squeezed_against_a_wall_counts_the_digits_of_pi() {
+    // Galperin's billiard: a ball of mass 100^k into one of mass 1 at rest before a wall,
+    // elastic, along a line. The light ball shuttles between the heavy one and the wall
+    // until the heavy one turns back; the collisions (both kinds) number the first k + 1
+    // digits of π, ⌊π·10^k⌋, an independent reference for the event order of a squeeze.
+    // (Past a ratio of ~2^52 the bounces crowd closer than float64 time resolves before the
+    // heavy ball turns: such a run ends with no_progress; see the contract, § 4.5.)
+    let walls = Walls::new([0.0, 0.0], [4.0, 1.0]).expect("a box");
+    let digits = [3, 31, 314, 3_141, 31_415, 314_159, 3_141_592];
+    for (k, &count) in digits.iter().enumerate() {
+        let heavy = 100f64.powi(i32::try_from(k).expect("small"));
+        let balls = [
+            ball([0.5, 0.5], [-1.0, 0.0], 0.0),
+            ball([0.2, 0.5], [0.0, 0.0], 0.0),
+        ];
+        let run = run(&balls, &[0.1; 2], walls, 1.0, vec![heavy, 1.0], 1.0);
+        assert_eq!(run.events.len(), count, "mass ratio 100^{k}");
+        let walls_hit = run.events.iter().filter(|e| e.wall.is_some()).count();
+        assert_eq!(walls_hit, count / 2, "mass ratio 100^{k}");
+        // The heavy ball leaves as fast as it came (energy kept), the light one slower.
+        let [v_heavy, v_light] = [0, 1].map(|b| run.balls[b].velocity());
+        assert!(v_heavy.x > 0.0 && v_light.x >= 0.0 && v_light.x < v_heavy.x);
+        let energy = heavy * v_heavy.norm_squared() + v_light.norm_squared();
+        assert!(
+            (energy / heavy - 1.0).abs() < 1e-9,
+            "mass ratio 100^{k}: {energy:e}"
+        );
     }
 }
 
