@@ -207,8 +207,8 @@ fn describe(name: &str, set: &PathSet) {
              ({:.1} %); the {left} left: {} windows ({:.2} a pair), {} ({:.1} %) proven apart by their \
              segments' boxes, {} ({:.1} %) by the window box, {} ({:.1} %) across the window's \
              chord, {} ({:.1} %) in closed form \
-             (straight), {} ({:.1} %) searched ({} of them settled on their first open eighth); \
-             {} contacts",
+             (straight), {} ({:.1} %) searched ({} of them settled on their first open eighth, {} \
+             as parting throughout); {} contacts",
             stages.path_pairs,
             stages.bounds_apart,
             of(stages.bounds_apart, stages.path_pairs),
@@ -229,6 +229,7 @@ fn describe(name: &str, set: &PathSet) {
             stages.windows_searched,
             of(stages.windows_searched, stages.windows),
             stages.windows_eighth,
+            stages.windows_parting,
             stages.contacts,
         );
     }

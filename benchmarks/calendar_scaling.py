@@ -4,8 +4,10 @@ one thread, in one run.
 
 - ``friction``: ``N`` balls in the unit box on a grid (``√N × √N``), radius ``¼/√N``,
   velocities normal(0, 1) seeded by ``N``, ``max_events=5N``, friction ``μ`` from 0 to 5:
-  µs per event (median of ``--repeats`` runs, the calendar's build included), and each
-  friction's ratio to the frictionless run at the same ``N``.
+  µs per event (median of ``--repeats`` runs, and of as many more as fill 0.2 s), and each
+  friction's ratio to the frictionless run at the same ``N``; once with the calendar's build
+  (and the call) included, once after them (the same run less one with ``max_events=0``):
+  a strong friction stops the balls within a few events, over which the build is shared.
 - ``horizons``: balls that never meet: one to 200 balls moving in parallel in a box (no
   ``t_end``, against ``t_end=100``), and 100 or 400 balls moving in parallel in open space,
   the first ``next_collision()`` with ``t_max=inf`` against ``t_max=1e3``.
@@ -27,9 +29,11 @@ from machine import cpu_model
 import ballcollide as bc
 
 
-def median_time(f, repeats: int):
+def median_time(f, repeats: int, least: float = 0.2):
+    """The median time of `repeats` calls of `f`, or of as many more as take `least` seconds
+    (short runs on a shared machine), and the last result."""
     times, result = [], None
-    for _ in range(repeats):
+    while len(times) < repeats or sum(times) < least:
         t0 = time.perf_counter()
         result = f()
         times.append(time.perf_counter() - t0)
@@ -44,21 +48,34 @@ def grid_scene(n: int):
 
 
 def friction(sizes, frictions, repeats: int) -> None:
-    print("\n| N | " + " | ".join(f"μ = {mu} µs/event (× μ=0)" for mu in frictions) + " |")
-    print("|---:|" + "---:|" * len(frictions))
+    tables = {"the build included": [], "after the build": []}
     for n in sizes:
         pos, r = grid_scene(n)
         vel = np.random.default_rng(n).normal(size=(n, 2))
-        cells = []
-        base = None
+        rows = {name: [] for name in tables}
+        base = {}
         for mu in frictions:
-            run = partial(bc.simulate, pos, vel, mu, r, box=([0, 0], [1, 1]), max_events=5 * n)
-            seconds, result = median_time(run, repeats)
-            per = seconds / max(1, len(result[0])) * 1e6
-            base = per if mu == 0 else base
-            ratio = f" ({per / base:.1f}×)" if base and mu != 0 else ""
-            cells.append(f"{per:.1f}{ratio}")
-        print(f"| {n:,} | " + " | ".join(cells) + " |", flush=True)
+            run = partial(bc.simulate, pos, vel, mu, r, box=([0, 0], [1, 1]))
+            seconds, result = median_time(partial(run, max_events=5 * n), repeats)
+            build, _ = median_time(partial(run, max_events=0), repeats)
+            events = max(1, len(result[0]))
+            per = {
+                "the build included": seconds / events * 1e6,
+                "after the build": max(0.0, seconds - build) / events * 1e6,
+            }
+            for name, value in per.items():
+                if mu == 0:
+                    base[name] = value
+                ratio = f" ({value / base[name]:.1f}×)" if mu != 0 and base.get(name) else ""
+                rows[name].append(f"{value:.1f}{ratio}")
+            rows["after the build"][-1] += f", {events} events"
+        for name in tables:
+            tables[name].append(f"| {n:,} | " + " | ".join(rows[name]) + " |")
+    for name, lines in tables.items():
+        print(f"\nµs per event, {name}:\n")
+        print("| N | " + " | ".join(f"μ = {mu} (× μ=0)" for mu in frictions) + " |")
+        print("|---:|" + "---:|" * len(frictions))
+        print("\n".join(lines), flush=True)
 
 
 def first_collision(pos, vel, t_max):

@@ -29,6 +29,7 @@
 //! | **every window that is left** | | | |
 //! | eighth entry | `eighth_entry.rs`; lane-wise, `batch/eighth_lanes.rs` (`window_eighth`) | a window whose first open eighth is isolated (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`); the first-window lanes below |
 //! | (first-window lanes) | `batch/first_window_lanes.rs` | the eighth entry (`batch/eighth_lanes.rs`) on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window screened out (the walk starts after it) | `path_collision_times` at the SIMD levels that run the lane stages, rows of 2 and 3 segments |
+//! | parting | `parting.rs` | a window on which the distance grows throughout (a pair just after its collision, touching and parting): no entry, by one Bernstein bound of `d·d′` | `eighth_then_search`, for the windows the eighth leaves, before the window search |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
 //! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `entry` (for `search_window`), `crossing`, `moving_entry` |
@@ -69,6 +70,7 @@ pub(crate) mod length_unit;
 pub(crate) mod long_window;
 pub(crate) mod moving_entry;
 pub(crate) mod narrow_dip;
+pub(crate) mod parting;
 pub(crate) mod path_bounds;
 pub(crate) mod path_contact;
 pub(crate) mod prefilter;
@@ -90,6 +92,7 @@ use length_unit::{LengthUnit, largest, normalised_balls};
 use long_window::{first_piece, long_window, next_piece, short_piece};
 use moving_entry::{WhileMoving, while_moving_one};
 use nalgebra::SVector;
+use parting::parting_window;
 pub use path_contact::path_collision_time;
 #[doc(hidden)]
 pub use path_contact::path_collision_time_unscreened;
@@ -293,28 +296,45 @@ fn first_contact_in_unit(
     None
 }
 
-/// A window's first entry: its first open eighth first, then the window search. An entry
-/// isolated on the eighth is settled by Newton steps to the floor of its own time, where the
-/// search's steps are sized by the window (a contact at 2⁻²² of the window's length, at a
-/// radius of 2⁻⁵² of the distance, came 85 floors late). Both pair queries search their
-/// windows here, so they take the same steps on one pair. Also whether the eighth settled it.
+/// A window's first entry: its first open eighth first, then (balls parting throughout the
+/// window, [`parting_window`]) none, then the window search. An entry isolated on the eighth
+/// is settled by Newton steps to the floor of its own time, where the search's steps are
+/// sized by the window (a contact at 2⁻²² of the window's length, at a radius of 2⁻⁵² of the
+/// distance, came 85 floors late). Both pair queries search their windows here, so they take
+/// the same steps on one pair. Also which of the three settled it.
 #[inline(always)]
 pub(crate) fn eighth_then_search<const D: usize>(
     gap: &Gap<D>,
     length: f64,
     previous_positive: bool,
-) -> (WindowSearch, bool) {
+) -> (WindowSearch, SettledBy) {
     let eighth = window_eighth(gap, bounded_length(gap, length), previous_positive);
     if eighth.found {
-        (WindowSearch::Entry(eighth.entry), true)
+        (WindowSearch::Entry(eighth.entry), SettledBy::Eighth)
     } else if eighth.screened_out {
         let none = WindowSearch::NoEntry {
             ends_positive: true,
         };
-        (none, true)
+        (none, SettledBy::Eighth)
+    } else if let Some(none) = parting_window(gap, bounded_length(gap, length), previous_positive) {
+        (none, SettledBy::Parting)
     } else {
-        (search_window(gap, length, previous_positive), false)
+        (
+            search_window(gap, length, previous_positive),
+            SettledBy::Search,
+        )
     }
+}
+
+/// Which stage of [`eighth_then_search`] settled a window (for the stage counts).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum SettledBy {
+    /// The first open eighth ([`window_eighth`]).
+    Eighth,
+    /// The distance growing throughout ([`parting_window`]).
+    Parting,
+    /// The window search.
+    Search,
 }
 
 /// Whether the balls are apart at the window's start (`g(0) > 0`), decided in the unit of

@@ -31,7 +31,8 @@ use super::straight::straight_window;
 use super::window_box::apart_on_window;
 use super::window_chord::apart_across_window_chord;
 use super::{
-    CollisionOptions, WindowSearch, apart_at_start, approaching, bounded_length, eighth_then_search,
+    CollisionOptions, SettledBy, WindowSearch, apart_at_start, approaching, bounded_length,
+    eighth_then_search,
 };
 use crate::error::{InputError, check_contact_distance, check_horizon};
 use crate::gap::Gap;
@@ -387,9 +388,11 @@ impl<const D: usize> Window<'_, D> {
             count(Stage::WindowSearched);
             // Most entries are isolated on the window's first open eighth, and most windows
             // without one too: settled there by a few Newton steps, the rest searched.
-            let (answer, on_eighth) = eighth_then_search(&gap, length, before);
-            if on_eighth {
-                count(Stage::WindowEighth);
+            let (answer, settled_by) = eighth_then_search(&gap, length, before);
+            match settled_by {
+                SettledBy::Eighth => count(Stage::WindowEighth),
+                SettledBy::Parting => count(Stage::WindowParting),
+                SettledBy::Search => {}
             }
             answer
         };

@@ -43,6 +43,9 @@ pub struct StageCounts {
     /// Of those, the windows settled on their first open eighth (`eighth_entry`), an entry
     /// or none; the others go through the search's own stages.
     pub windows_eighth: u64,
+    /// Of those, the windows on which the distance grows throughout (`parting`: a pair
+    /// touching and parting after its collision): no entry, without the search.
+    pub windows_parting: u64,
     /// Contacts found (at the first time or in a window; one at or past the horizon, reported
     /// as none, included).
     pub contacts: u64,
@@ -62,11 +65,12 @@ pub(crate) enum Stage {
     WindowStraight,
     WindowSearched,
     WindowEighth,
+    WindowParting,
     Contact,
 }
 
 #[cfg(feature = "stage-counts")]
-static COUNTS: [AtomicU64; 12] = [const { AtomicU64::new(0) }; 12];
+static COUNTS: [AtomicU64; 13] = [const { AtomicU64::new(0) }; 13];
 
 /// Counts one event of `stage` (nothing without the feature).
 #[inline(always)]
@@ -104,9 +108,9 @@ pub(crate) fn count(stage: Stage) {
 /// ```
 pub fn take() -> StageCounts {
     #[cfg(feature = "stage-counts")]
-    let c: [u64; 12] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
+    let c: [u64; 13] = std::array::from_fn(|i| COUNTS[i].swap(0, Ordering::Relaxed));
     #[cfg(not(feature = "stage-counts"))]
-    let c = [0u64; 12];
+    let c = [0u64; 13];
     StageCounts {
         path_pairs: c[Stage::PathPair as usize],
         bounds_apart: c[Stage::BoundsApart as usize],
@@ -119,6 +123,7 @@ pub fn take() -> StageCounts {
         windows_straight: c[Stage::WindowStraight as usize],
         windows_searched: c[Stage::WindowSearched as usize],
         windows_eighth: c[Stage::WindowEighth as usize],
+        windows_parting: c[Stage::WindowParting as usize],
         contacts: c[Stage::Contact as usize],
     }
 }
