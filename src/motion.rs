@@ -2,6 +2,7 @@
 
 use nalgebra::Vector2;
 
+use crate::collision::length_unit::norm_in_range;
 use crate::error::{InputError, check_friction, finite};
 
 /// A ball's state at time 0: its centre, its velocity, and the magnitude `μ ≥ 0` of the
@@ -262,13 +263,14 @@ impl Ball {
     }
 }
 
-/// `|v|`: `√(x² + y²)` where the squares neither overflow nor lose bits to underflow (a few
-/// times faster than `hypot`, and within an ulp), `hypot` elsewhere.
+/// `|v|`: `√(x² + y²)` where the squares neither overflow nor lose bits to underflow, and
+/// the same in a power-of-two unit elsewhere ([`norm_in_range`]): `2^k·v` has `2^k·|v|` to
+/// the bit over the whole float range (contract §1), where `hypot` rounds differently.
 fn norm(v: Vector2<f64>) -> f64 {
     let sum = v.x * v.x + v.y * v.y;
     if (1e-290..=1e290).contains(&sum) {
         sum.sqrt()
     } else {
-        v.x.hypot(v.y)
+        norm_in_range(&v)
     }
 }

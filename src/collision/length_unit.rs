@@ -64,6 +64,26 @@ impl LengthUnit {
     pub(crate) fn friction(self, mu: f64) -> f64 {
         self.apply(mu) + 0.0
     }
+
+    /// A length in this unit back in the caller's: exact where the result is normal (the
+    /// two powers of two divided out one after the other, as their product may overflow).
+    #[inline(always)]
+    pub(crate) fn restore(self, x: f64) -> f64 {
+        x / self.scale / self.pre
+    }
+}
+
+/// `|v|` without overflow or underflow of the squares, for any finite `v`: formed in the unit
+/// of `v`'s largest component, so that `2^k·v` has `2^k·|v|` to the bit (a scene scaled by a
+/// power of two keeps its bits, contract §1). A zero, infinite or NaN `v` as `v.norm()`.
+#[inline]
+pub(crate) fn norm_in_range<const D: usize>(v: &SVector<f64, D>) -> f64 {
+    let big = v.amax();
+    if !(big > 0.0 && big.is_finite()) {
+        return v.norm();
+    }
+    let unit = LengthUnit::of(big);
+    unit.restore(v.map(|x| unit.apply(x)).norm())
 }
 
 impl<const D: usize> Gap<D> {

@@ -1,6 +1,7 @@
 //! A scene's static objects together: [`Table`], the kinds of object ([`ObjectKind`]) and a
 //! ball's contact with one of them ([`ObjectContact`]).
 
+use crate::collision::length_unit::norm_in_range;
 use nalgebra::Vector2;
 
 use super::shapes::{Circle, LineSegment, Plane, Target};
@@ -253,7 +254,7 @@ impl Table<2> {
         x: Vector2<f64>,
     ) -> Vector2<f64> {
         let unit = |v: Vector2<f64>| {
-            let length = v.norm();
+            let length = norm_in_range(&v);
             if length > 0.0 && length.is_finite() {
                 v / length
             } else {

@@ -949,7 +949,8 @@ pub(super) fn out_of<'py, T: OutElement, D: Dimension>(
                 || source.is_fortran_contiguous()
                 || shares_memory(source, array)?;
             if shared {
-                return Err(fail("the array shares memory with an input"));
+                let reason = "the array shares memory with an input";
+                return Err(input_error(py, "out", at, kind::SHARED_MEMORY, reason));
             }
         }
     }

@@ -31,6 +31,7 @@ use super::calendar::{CollisionSchedule, ScheduleOptions};
 use super::event::Event;
 use super::objects::ObjectCounts;
 use super::walls::{Side, Walls};
+use crate::collision::length_unit::{LengthUnit, norm_in_range};
 use crate::error::{InputError, InputErrorKind, check_horizon, finite};
 use crate::geometry::{ObjectKind, Table};
 use crate::motion::Ball;
@@ -424,8 +425,8 @@ fn collide_pair(
     // their difference, and each change followed up the balls' other pairs of the instant:
     // along a touching train of k balls (a Newton's cradle) that ran to O(k³) events at
     // one instant.
-    let as_one =
-        frictions[0] == frictions[1] && (a.1 - b.1).norm() <= AS_ONE * (a.1.norm() + b.1.norm());
+    let as_one = frictions[0] == frictions[1]
+        && norm_in_range(&(a.1 - b.1)) <= AS_ONE * (norm_in_range(&a.1) + norm_in_range(&b.1));
     let (va, vb) = match (as_one, follow_up) {
         (true, true) => return Ok(false),
         (true, false) => {
@@ -478,7 +479,7 @@ fn check_progress(
 /// the rounding of its position (at `e = 0` it would slide along the object, touching it).
 fn reflected(v: Vector2<f64>, n: Vector2<f64>, e: f64) -> Vector2<f64> {
     let normal = v.dot(&n);
-    let target = (-e * normal).max(ROUNDING * v.norm());
+    let target = (-e * normal).max(ROUNDING * norm_in_range(&v));
     if normal >= target {
         v
     } else {
@@ -527,6 +528,11 @@ fn at(calendar: &CollisionSchedule<2>, i: usize, t: f64) -> (Vector2<f64>, Vecto
 /// faster than both. Each ball takes its share of the change by the other's mass fraction,
 /// `m_j/(m_i + m_j) = 1/(1 + m_i/m_j)`, which neither overflows nor vanishes for masses
 /// anywhere in the float range (`1/m` would overflow for `m` below `1/f64::MAX`).
+///
+/// Resolved in the pair's unit of length (a power of two, from the largest of the separation,
+/// the velocities and the contact distance): no square overflows or underflows, and a scene
+/// scaled by a power of two collides to the same bits (contract §1); velocities kept are
+/// returned as given.
 fn collide(
     a: (Vector2<f64>, Vector2<f64>),
     b: (Vector2<f64>, Vector2<f64>),
@@ -536,21 +542,66 @@ fn collide(
     e: f64,
 ) -> (Vector2<f64>, Vector2<f64>) {
     let d = a.0 - b.0;
+    let unit = unit_of([d, a.1, b.1], contact);
+    let scaled = |v: Vector2<f64>| v.map(|x| unit.apply(x));
+    let (va, vb) = (scaled(a.1), scaled(b.1));
+    let frictions = frictions.map(|f| unit.friction(f));
+    let (na, nb) = collide_in_unit(
+        scaled(d),
+        [va, vb],
+        masses,
+        frictions,
+        unit.apply(contact),
+        e,
+    );
+    let back = |new: Vector2<f64>, given: Vector2<f64>, original: Vector2<f64>| {
+        if new == given {
+            original
+        } else {
+            new.map(|x| unit.restore(x))
+        }
+    };
+    (back(na, va, a.1), back(nb, vb, b.1))
+}
+
+/// The unit of length of a pair's collision: a power of two from the largest component of
+/// `vectors` and `contact` (a unit of 1 where that is 0, infinite or NaN).
+fn unit_of(vectors: [Vector2<f64>; 3], contact: f64) -> LengthUnit {
+    let big = vectors
+        .iter()
+        .map(|v| v.amax())
+        .fold(contact.abs(), f64::max);
+    LengthUnit::of(if big > 0.0 && big.is_finite() {
+        big
+    } else {
+        1.0
+    })
+}
+
+/// [`collide`] in the pair's unit of length: `d` the separation, `[va, vb]` the velocities.
+fn collide_in_unit(
+    d: Vector2<f64>,
+    [va, vb]: [Vector2<f64>; 2],
+    masses: [f64; 2],
+    frictions: [f64; 2],
+    contact: f64,
+    e: f64,
+) -> (Vector2<f64>, Vector2<f64>) {
     let distance = d.norm();
     if !(distance > 0.0 && distance.is_finite()) {
-        return (a.1, b.1);
+        return (va, vb);
     }
     let n = d / distance;
     // The normal speed at which they part (negative: approach).
-    let parting = (a.1 - b.1).dot(&n);
+    let parting = (va - vb).dot(&n);
     let [share_a, share_b] = shares(masses);
     let part_at = |target: f64| {
         let change = target - parting;
-        (a.1 + n * (change * share_a), b.1 - n * (change * share_b))
+        (va + n * (change * share_a), vb - n * (change * share_b))
     };
     // The frictions that press them together are those of their velocities after the
     // collision: from the restitution's first, then the least parting speed of those.
-    let speeds = a.1.norm() + b.1.norm();
+    let speeds = va.norm() + vb.norm();
     let rounding = ROUNDING * speeds;
     // Balls that already part faster keep their velocities, unless friction presses them
     // together and they part slower than its least speed. Within `SLACK` of the target is
@@ -561,8 +612,8 @@ fn collide(
     // restitution 0 stopped with "no progress" after 1,000 + 64·N such events at one
     // instant).
     let target = (e * -parting).max(rounding);
-    let (va, vb) = if parting >= target * (1.0 - SLACK) {
-        (a.1, b.1)
+    let (after_a, after_b) = if parting >= target * (1.0 - SLACK) {
+        (va, vb)
     } else {
         part_at(target)
     };
@@ -573,11 +624,11 @@ fn collide(
     // Within `SLACK` of it is enough: rounding puts the parting speed formed from the new
     // velocities up to `2⁻¹²` below `least` where `least` is just above `rounding`, and a
     // pair followed up again for that would never be done.
-    let least = parting_speed(va, vb, n, frictions, contact).min(speeds);
+    let least = parting_speed(after_a, after_b, n, frictions, contact).min(speeds);
     if least * (1.0 - SLACK) > target.max(parting) {
         part_at(least)
     } else {
-        (va, vb)
+        (after_a, after_b)
     }
 }
 
@@ -747,7 +798,7 @@ fn first_overlap(
                     continue;
                 }
                 let contact = radii[a] + radii[b];
-                let distance = (balls[a].position() - balls[b].position()).norm();
+                let distance = norm_in_range(&(balls[a].position() - balls[b].position()));
                 if distance < contact * keep {
                     worst = Some((a, b, distance, contact));
                 }

@@ -689,3 +689,102 @@ fn a_dense_gas_at_low_restitution_moves_on_and_never_overlaps() {
         }
     }
 }
+
+/// A scene to scale: its name, balls (centre, velocity, friction), radius, box `[lo, hi]²`,
+/// restitution and `t_end`.
+type Scene = (
+    &'static str,
+    Vec<([f64; 2], [f64; 2], f64)>,
+    f64,
+    [f64; 2],
+    f64,
+    f64,
+);
+
+/// `simulate` of `balls` (centre, velocity, friction) of `radius` in the box `[lo, hi]²`,
+/// with every length scaled by `2^e`.
+fn scaled_run(
+    balls: &[([f64; 2], [f64; 2], f64)],
+    radius: f64,
+    [lo, hi]: [f64; 2],
+    options: &SimulationOptions,
+    e: i32,
+) -> Simulation {
+    let s = 2f64.powi(e);
+    let scaled: Vec<Ball> = balls
+        .iter()
+        .map(|&(p, v, f)| ball(p.map(|x| x * s), v.map(|x| x * s), f * s))
+        .collect();
+    let walls = Walls::new([lo * s; 2], [hi * s; 2]).expect("a box");
+    let radii = vec![radius * s; balls.len()];
+    simulate(&scaled, &radii, walls, options).expect("a valid simulation")
+}
+
+#[test]
+fn a_scene_scaled_by_a_power_of_two_runs_to_the_same_bits_over_the_float_range() {
+    // Contract §1: scaling every length by 2^e changes no time. The collisions were resolved
+    // with squares of the caller's lengths: from 2^512 up they overflowed (two elastic balls
+    // stuck together, or kept their velocities and collided at one instant without end),
+    // from 2^-537 down they underflowed (balls sank into each other with no event; apart
+    // balls were refused as overlapping at the start).
+    let mut rng = Rng(0x5ca1e);
+    let gas: Vec<_> = (0..36)
+        .map(|k| {
+            let (x, y) = (1.1 + 0.16 * f64::from(k % 6), 1.1 + 0.16 * f64::from(k / 6));
+            (
+                [x, y],
+                [rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)],
+                0.3,
+            )
+        })
+        .collect();
+    let scenes: [Scene; 4] = [
+        (
+            "elastic pair",
+            vec![([0.0, 0.0], [1.0, 0.0], 0.0), ([1.0, 0.3], [0.0, 0.0], 0.0)],
+            0.25,
+            [-2.0, 3.0],
+            1.0,
+            20.0,
+        ),
+        (
+            "resting contact",
+            vec![([0.0, 0.0], [1.0, 0.1], 1.0), ([0.5, 0.0], [0.5, 0.0], 1.0)],
+            0.125,
+            [-4.0, 4.0],
+            0.0,
+            f64::INFINITY,
+        ),
+        (
+            "pressed pair",
+            vec![
+                ([0.0, 0.0], [1.0, 0.0], 1.0),
+                ([0.5, 0.0], [0.0, 0.05], 1.0),
+            ],
+            0.125,
+            [-4.0, 4.0],
+            0.0,
+            f64::INFINITY,
+        ),
+        ("gas", gas, 0.05, [1.0, 2.0], 0.0, 3.0),
+    ];
+    for (name, balls, radius, walls, restitution, t_end) in &scenes {
+        let options = SimulationOptions {
+            restitution: *restitution,
+            t_end: *t_end,
+            max_events: Some(20_000),
+            ..Default::default()
+        };
+        let reference = scaled_run(balls, *radius, *walls, &options, 0);
+        assert!(reference.events.len() > 1, "{name}");
+        for e in [-900, -600, -538, -520, -300, 300, 488, 512, 600, 900] {
+            let run = scaled_run(balls, *radius, *walls, &options, e);
+            assert_eq!(run.events, reference.events, "{name} at 2^{e}");
+            let s = 2f64.powi(e);
+            for (got, want) in run.balls.iter().zip(&reference.balls) {
+                assert_eq!(got.position(), want.position() * s, "{name} at 2^{e}");
+                assert_eq!(got.velocity(), want.velocity() * s, "{name} at 2^{e}");
+            }
+        }
+    }
+}

@@ -704,8 +704,9 @@ def out_aliasing_cases(n: int) -> list[tuple[str, np.ndarray, np.ndarray]]:
 def test_out_sharing_memory_with_an_input_that_is_converted_is_refused(n: int, case: int) -> None:
     argument, value, out = out_aliasing_cases(n)[case]
     kept = value.copy()
-    with pytest.raises(bc.InputError, match=r"^out: the array shares memory with an input$"):
+    with pytest.raises(bc.InputError, match=r"^out: the array shares memory with an input$") as e:
         bc.collision_times(**{**pair_batch(n), argument: value}, out=out)
+    assert (e.value.argument, e.value.kind) == ("out", "shared_memory")  # contract § 6
     np.testing.assert_array_equal(value, kept)  # the caller's input untouched
 
 

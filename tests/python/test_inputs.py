@@ -158,8 +158,11 @@ def test_reading_any_layout_of_any_real_dtype() -> None:
 def test_out_sharing_memory_with_an_input_is_refused_at_any_size(n: int) -> None:
     args = {**batch(n), "friction_a": np.zeros(n), "contact_distance": np.full(n, 0.5)}
     for shared in (args["friction_a"], args["contact_distance"], args["pos_b"].reshape(-1)[:n]):
-        with pytest.raises(bc.InputError, match=r"^out: the array shares memory with an input"):
+        with pytest.raises(
+            bc.InputError, match=r"^out: the array shares memory with an input"
+        ) as e:
             bc.collision_times(**args, out=shared)
+        assert e.value.kind == "shared_memory"
     out = np.empty(n)
     assert bc.collision_times(**args, out=out) is out
     np.testing.assert_array_equal(out, 0.5)

@@ -137,3 +137,39 @@ def test_a_dense_gas_at_restitution_0_moves_on(seed, friction):
     times = run[0]
     assert len(times) > 1000 and times[-1] <= 1.0
     assert overlap(run[3], r) <= 1e-9
+
+
+@pytest.mark.parametrize("e", [-1000, -600, -538, -528, -300, 300, 512, 600, 1000])
+@pytest.mark.parametrize(
+    "scene",
+    [
+        # The reported resting contact (restitution 0 with friction), a pressed pair, and
+        # two elastic balls: each run at 2^e is the run at 1, every length times 2^e.
+        ([[0, 0], [0.5, 0]], [[1, 0.1], [0.5, 0]], 1.0, 0.125, BIG_BOX, 0.0),
+        ([[0, 0], [0.5, 0]], [[1, 0], [0, 0.05]], 1.0, 0.125, BIG_BOX, 0.0),
+        ([[0, 0], [1, 0.3]], [[1, 0], [0, 0]], 0.0, 0.25, ([-2, -2], [3, 3]), 1.0),
+    ],
+)
+def test_a_run_scaled_by_a_power_of_two_is_the_same_run(e, scene):
+    pos, vel, friction, radius, (lo, hi), restitution = scene
+    s = 2.0**e
+
+    def run(s):
+        box = ([x * s for x in lo], [x * s for x in hi])
+        return bc.simulate(
+            np.array(pos, float) * s,
+            np.array(vel, float) * s,
+            friction * s,
+            radius * s,
+            box=box,
+            restitution=restitution,
+            t_end=20.0,
+            max_events=5_000,
+        )
+
+    ref, got = run(1.0), run(s)
+    np.testing.assert_array_equal(got.times, ref.times)
+    np.testing.assert_array_equal(got.i, ref.i)
+    np.testing.assert_array_equal(got.j, ref.j)
+    np.testing.assert_array_equal(got.pos, ref.pos * s)
+    np.testing.assert_array_equal(got.vel, ref.vel * s)
