@@ -47,8 +47,9 @@
 //! - Every real root is finally refined by guarded Newton steps on the (exactly scaled)
 //!   original quartic with a compensated residual.
 
+use super::bracketed::bracketed_newton;
 use super::cubic::{merge, push_quadratic_roots, split_or_scale};
-use super::horner::{RootBuf, polish_roots};
+use super::horner::{RootBuf, abs_sum, eval_compensated, polish_roots};
 use super::newton_polygon::monic_quartic_envelope;
 use super::{RealRoots, solve_cubic};
 
@@ -136,7 +137,117 @@ fn quartic_scaled(p: [f64; 5]) -> RootBuf {
     push_quadratic_roots(&p, 1.0, f[0], f[1], &mut roots);
     push_quadratic_roots(&p, 1.0, f[2], f[3], &mut roots);
     polish_roots(&p, roots.as_mut_slice());
+    if all_vanish(&p, &mut roots) {
+        roots
+    } else {
+        roots_by_pieces(&p)
+    }
+}
+
+/// Whether `p` vanishes at each of `roots` as far as its coefficients can tell (a residual,
+/// compensated, within [`RESIDUAL_ROUNDINGS`] roundings of the size of its terms; a NaN root
+/// passes), and they are as many as a quartic's real roots can be (an even number). Where
+/// the coefficients span nearly the 64 bits at which the Newton polygon splits the quartic
+/// (`848.9375·x⁴ + c·x³ + c·x² + c·x − 13.625`, `c = 4.2e19`), the factorisation can get a
+/// factor wrong: a complex pair near `x² + x + 1` came out as the real `x² + x + 0.0032`,
+/// two roots at which `p` is as large as its terms, or a real pair with one root wrong.
+fn all_vanish(p: &[f64; 5], roots: &mut RootBuf) -> bool {
+    let roots = roots.as_mut_slice();
+    roots.len().is_multiple_of(2) && roots.iter().all(|&x| vanishes_at(p, x))
+}
+
+/// Whether `p` vanishes at `x` as far as its coefficients can tell: its compensated value
+/// within [`RESIDUAL_ROUNDINGS`] roundings of the size of its terms (a NaN passes).
+fn vanishes_at(p: &[f64; 5], x: f64) -> bool {
+    let (value, _) = eval_compensated(p, x);
+    let allowed = RESIDUAL_ROUNDINGS * f64::EPSILON * abs_sum(p, x);
+    value.abs().partial_cmp(&allowed) != Some(std::cmp::Ordering::Greater)
+}
+
+/// See [`all_vanish`]: far above the few roundings a rounded root leaves, far below the size
+/// of the terms a wrong root leaves.
+const RESIDUAL_ROUNDINGS: f64 = 4096.0;
+
+/// The roots of the scaled quartic `p` (`p[0] ∈ [1, 2)`, all `|p[k]| < 2`, `p[4] ≠ 0`: every
+/// root within `(−3, 3)`, none within `L = |p[4]|/(|p[4]| + 2)` of 0) piece by piece, where
+/// its factorisation failed [`all_vanish`]: between consecutive critical points (the cubic
+/// `p′`'s roots) and 0, `p` is monotone, and a sign change there holds one root: the bracket
+/// narrowed geometrically to a factor of 4 (its ends may be 2⁻²⁰⁰ apart in magnitude), then
+/// bracketed Newton on the compensated value. A critical point where `p` vanishes within its
+/// rounding without a sign change is a double root. Slower than the factorisation, and as
+/// sure as the cubic's roots.
+fn roots_by_pieces(p: &[f64; 5]) -> RootBuf {
+    const BOUND: f64 = 4.0;
+    let value = |x: f64| eval_compensated(p, x);
+    let least = p[4].abs() / (p[4].abs() + 2.0);
+    let critical = solve_cubic(4.0 * p[0], 3.0 * p[1], 2.0 * p[2], p[3]);
+    // The ends of the monotone pieces, ascending: −BOUND, the critical points, ±least
+    // (around 0, where no root lies), BOUND.
+    let mut marks = [0.0; 7];
+    let mut count = 0;
+    let mut add = |x: f64| {
+        if x > -BOUND && x <= BOUND && (count == 0 || x > marks[count - 1]) {
+            marks[count] = x;
+            count += 1;
+        }
+    };
+    let mut inner = critical.as_slice().iter().copied().peekable();
+    for zero_side in [-least, least] {
+        while let Some(&x) = inner.peek().filter(|&&x| x < zero_side) {
+            add(x);
+            inner.next();
+        }
+        add(zero_side);
+    }
+    inner.for_each(&mut add);
+    add(BOUND);
+    let mut roots = RootBuf::default();
+    let (mut lo, mut f_lo) = (-BOUND, value(-BOUND).0);
+    for (k, &hi) in marks[..count].iter().enumerate() {
+        let f_hi = value(hi).0;
+        if (f_lo < 0.0 && f_hi > 0.0) || (f_lo > 0.0 && f_hi < 0.0) {
+            roots.push(root_in(&value, (lo, f_lo), (hi, f_hi)));
+        } else if f_hi == 0.0 || (k + 1 < count && hi.abs() != least && vanishes_at(p, hi)) {
+            // At a critical point, touching zero: a double root (or a root exactly there).
+            let after = value(marks.get(k + 1).copied().unwrap_or(BOUND)).0;
+            let crosses = (f_hi == 0.0) && (f_lo < 0.0) != (after < 0.0);
+            roots.push(hi);
+            if !crosses {
+                roots.push(hi);
+            }
+        }
+        (lo, f_lo) = (hi, f_hi);
+    }
+    polish_roots(p, roots.as_mut_slice());
     roots
+}
+
+/// The root of `f` between `a` and `b` (of one sign, `f` of opposite signs there): the
+/// bracket halved at the geometric mean of its ends' magnitudes until they are within a
+/// factor of 4, then bracketed Newton.
+fn root_in(
+    f: &impl Fn(f64) -> (f64, f64),
+    (mut a, mut fa): (f64, f64),
+    (mut b, mut fb): (f64, f64),
+) -> f64 {
+    let sign = if a + b < 0.0 { -1.0 } else { 1.0 };
+    for _ in 0..64 {
+        let (small, large) = (a.abs().min(b.abs()), a.abs().max(b.abs()));
+        if large <= 4.0 * small {
+            break;
+        }
+        let mid = sign * (small.sqrt() * large.sqrt());
+        let fm = f(mid).0;
+        if fm == 0.0 {
+            return mid;
+        }
+        if (fm < 0.0) == (fa < 0.0) {
+            (a, fa) = (mid, fm);
+        } else {
+            (b, fb) = (mid, fm);
+        }
+    }
+    bracketed_newton(f, a, b, fa, fb, 0.5 * (a + b), 0.0)
 }
 
 /// A monic quartic `x⁴ + a·x³ + b·x² + c·x + d`, with the yardsticks its backward errors are
@@ -620,7 +731,7 @@ fn csqrt(z: C) -> C {
 
 #[cfg(test)]
 mod tests {
-    use super::super::horner::eval_compensated;
+
     use super::*;
 
     /// `|p(x)|` within a few roundings of the size of its terms.
@@ -639,6 +750,43 @@ mod tests {
         for (x, y) in f.iter().zip([-3.0, 2.0, 1.0, 5.0]) {
             assert!((x - y).abs() <= 4.0 * f64::EPSILON * y.abs(), "{f:?}");
         }
+    }
+
+    #[test]
+    fn a_quartic_whose_factorisation_fails_is_solved_piece_by_piece() {
+        // Found by the fuzz target `poly`: coefficients spanning 62 bits (the Newton polygon
+        // splits at 64), c·x·(x² + x + 1) between a huge and a tiny root; the factorisation
+        // made the complex pair the real factor x² + x + 0.0032 (two roots that are none).
+        let c = 4.224376450473525e19;
+        let close = |r: &RealRoots, exact: &[f64]| {
+            r.as_slice().len() == exact.len()
+                && (r.as_slice().iter().zip(exact))
+                    .all(|(x, y)| (x - y).abs() <= 2.0 * f64::EPSILON * y.abs())
+        };
+        let r = solve_quartic(848.9375, c, c, c, -13.625);
+        // (mpmath, 80 digits: −4.9760747410422144e16, 3.2253280832660465e-19.)
+        assert!(
+            close(
+                &r,
+                &[-4.976_074_741_042_214e16, 3.225_328_083_266_046_5e-19]
+            ),
+            "{r:?}"
+        );
+        // A real pair with one root wrong: −0.528 for −1.839 (mpmath's four roots below).
+        let r = solve_quartic(
+            212.234375,
+            1.0560941126183813e19,
+            4.239238329243848e19,
+            c,
+            4690.0,
+        );
+        let exact = [
+            -4.976_074_741_042_214e16,
+            -2.174_948_421_150_638,
+            -1.839_124_073_518_871_5,
+            -1.110_223_024_625_156_7e-16,
+        ];
+        assert!(close(&r, &exact), "{r:?}");
     }
 
     #[test]

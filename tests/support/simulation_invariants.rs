@@ -9,7 +9,10 @@
 //!   distance (or radius), at the end nor at the end of the same run cut at earlier times
 //!   (a horizon only cuts: those are states of one trajectory): fractions of `t_end`, some
 //!   events' times and halfway to the next event (`cut_times`);
-//! - a run cut at any of those times logs exactly the events of the whole run before it.
+//! - a run cut at any of those times logs exactly the events of the whole run before it;
+//! - the case with every length scaled by `2^±300` (toward the middle of the float range)
+//!   runs to the same bits: the same events, each ball's final centre and velocity scaled
+//!   (contract §1).
 //!
 //! On a table ([`TableCase`], [`table_simulation`]; the fuzz target `simulate_table`) also:
 //! no ball in play overlaps a circle, a plane or a two-sided segment's flat part beyond
@@ -319,6 +322,56 @@ pub fn simulation(case: &SimulationCase) -> Result<(), String> {
                 return Err(format!("the run cut at {t} logs other events: {case:?}"));
             }
         }
+    }
+    same_run_scaled(case, &full, &options)
+}
+
+/// The case with every length scaled by `2^k`, `k = ±300` toward the middle of the float
+/// range (none if the scaled lengths would leave `2^±900`, where a run's small velocities
+/// could turn subnormal): the run of `full` to the bit, each length scaled.
+fn same_run_scaled(
+    case: &SimulationCase,
+    full: &Simulation,
+    options: &SimulationOptions,
+) -> Result<(), String> {
+    let lengths = case
+        .balls
+        .iter()
+        .flatten()
+        .chain(&case.radii)
+        .chain(&case.lo)
+        .chain(&case.hi)
+        .map(|x| x.abs())
+        .filter(|&x| x > 0.0);
+    let (least, most) = lengths.fold((f64::INFINITY, 0.0f64), |(l, m), x| (l.min(x), m.max(x)));
+    let k = if most < 2f64.powi(600) { 300 } else { -300 };
+    let s = 2f64.powi(k);
+    if !(least * s >= 2f64.powi(-900) && most * s <= 2f64.powi(900)) {
+        return Ok(());
+    }
+    let scaled = SimulationCase {
+        balls: case.balls.iter().map(|b| b.map(|x| x * s)).collect(),
+        radii: case.radii.iter().map(|r| r * s).collect(),
+        lo: case.lo.map(|x| x * s),
+        hi: case.hi.map(|x| x * s),
+        ..case.clone()
+    };
+    let Some((balls, walls)) = balls_and_walls(&scaled) else {
+        return Err(format!("scaled by 2^{k}, not a valid input: {case:?}"));
+    };
+    let run = simulate(&balls, &scaled.radii, walls, options)
+        .map_err(|e| format!("scaled by 2^{k}: {e}: {case:?}"))?;
+    let scaled_balls = full
+        .balls
+        .iter()
+        .map(|b| (b.position() * s, b.velocity() * s));
+    let same_balls = run
+        .balls
+        .iter()
+        .map(|b| (b.position(), b.velocity()))
+        .eq(scaled_balls);
+    if run.events != full.events || !same_balls {
+        return Err(format!("scaled by 2^{k}, another run: {case:?}"));
     }
     Ok(())
 }
