@@ -73,6 +73,17 @@ impl LengthUnit {
     }
 }
 
+/// The unit of length of the largest magnitude `big` ([`LengthUnit::of`]), or a unit of 1
+/// where `big` is 0, infinite or NaN (nothing to scale, or nothing scaling can save).
+#[inline]
+pub(crate) fn unit_of_largest(big: f64) -> LengthUnit {
+    LengthUnit::of(if big > 0.0 && big.is_finite() {
+        big
+    } else {
+        1.0
+    })
+}
+
 /// `|v|` without overflow or underflow of the squares, for any finite `v`: formed in the unit
 /// of `v`'s largest component, so that `2^k·v` has `2^k·|v|` to the bit (a scene scaled by a
 /// power of two keeps its bits, contract §1). A zero, infinite or NaN `v` as `v.norm()`.

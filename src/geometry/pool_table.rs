@@ -131,6 +131,12 @@ impl PoolTable {
             for (m, (at, other)) in [(first, second), (second, first)].into_iter().enumerate() {
                 let nose = self.nose(at, other, axis, angle, side_pocket);
                 let (tip, on_rail, on_jaw) = tangent_circle(&nose, self.jaw_radius);
+                if !(tip.x.is_finite() && tip.y.is_finite()) {
+                    // (A jaw nearly along its rail: the tip tangent to both lies far out.)
+                    let rule =
+                        "puts a jaw tip's centre beyond the float range, with the jaw angles";
+                    return Err(dimension("jaw_radius", self.jaw_radius, rule));
+                }
                 table.circles.push(Circle::new(tip, self.jaw_radius)?);
                 let far = on_jaw + nose.jaw * self.jaw_length;
                 if far == on_jaw {
@@ -342,6 +348,25 @@ mod tests {
             let (a, b) = (table.segments[6 + 2 * k], table.segments[7 + 2 * k]);
             assert!((a.q() - b.q()).norm() > 2.0 * 0.028575, "pocket {k}");
         }
+    }
+
+    #[test]
+    fn a_jaw_tip_beyond_the_float_range_is_refused_naming_its_radius() {
+        // Found by the property test below: a side jaw at 2.2e-308° to its rail puts the tip
+        // tangent to both at infinity, which was refused as a `centre`, no dimension.
+        let spec = PoolTable {
+            width: f64::MAX,
+            length: f64::MAX,
+            corner_mouth: f64::MAX,
+            side_mouth: f64::MAX,
+            jaw_length: f64::MAX / 2.0,
+            jaw_radius: 9.9792015476736e291,
+            corner_jaw_angle: 7.0,
+            side_jaw_angle: f64::MIN_POSITIVE,
+            pocket_radius: 0.045,
+        };
+        let error = spec.table().expect_err("no table");
+        assert_eq!(error.argument(), "jaw_radius", "{error}");
     }
 
     /// A dimension: the default, or any float of either sign and any exponent (the table's

@@ -1,7 +1,7 @@
 //! A scene's static objects together: [`Table`], the kinds of object ([`ObjectKind`]) and a
 //! ball's contact with one of them ([`ObjectContact`]).
 
-use crate::collision::length_unit::norm_in_range;
+use crate::collision::length_unit::{norm_in_range, unit_of_largest};
 use nalgebra::Vector2;
 
 use super::shapes::{Circle, LineSegment, Plane, Target};
@@ -222,8 +222,12 @@ impl Table<2> {
             ObjectKind::Segment => {
                 let s = &self.segments[index];
                 let (e, w) = (s.q() - s.p(), x - s.p());
+                // In the unit of the larger (a power of two: the same bits at every scale,
+                // no square overflowing or underflowing).
+                let unit = unit_of_largest(e.amax().max(w.amax()));
+                let (e, w) = (e.map(|c| unit.apply(c)), w.map(|c| unit.apply(c)));
                 let along = w.dot(&e) / e.norm_squared();
-                let d = (e.x * w.y - e.y * w.x) / e.norm();
+                let d = unit.restore((e.x * w.y - e.y * w.x) / e.norm());
                 let sign = if d > 0.0 {
                     1
                 } else if d < 0.0 {
@@ -235,12 +239,13 @@ impl Table<2> {
             }
             ObjectKind::Circle => {
                 let c = &self.circles[index];
-                Some((x - c.centre()).norm() - c.rho())
+                Some(norm_in_range(&(x - c.centre())) - c.rho())
             }
-            ObjectKind::Target => Some((x - self.targets[index].centre()).norm()),
+            ObjectKind::Target => Some(norm_in_range(&(x - self.targets[index].centre()))),
             ObjectKind::Plane => {
                 let p = &self.planes[index];
-                Some(p.normal().dot(&(x - p.point())) / p.normal().norm())
+                let n = p.normal();
+                Some((n / norm_in_range(&n)).dot(&(x - p.point())))
             }
         }
     }

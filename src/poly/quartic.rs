@@ -145,8 +145,7 @@ fn quartic_scaled(p: [f64; 5]) -> RootBuf {
 }
 
 /// Whether `p` vanishes at each of `roots` as far as its coefficients can tell (a residual,
-/// compensated, within [`RESIDUAL_ROUNDINGS`] roundings of the size of its terms; a NaN root
-/// passes), and they are as many as a quartic's real roots can be (an even number). Where
+/// compensated, within [`RESIDUAL_ROUNDINGS`] roundings of the size of its terms), and they are as many as a quartic's real roots can be (an even number). Where
 /// the coefficients span nearly the 64 bits at which the Newton polygon splits the quartic
 /// (`848.9375·x⁴ + c·x³ + c·x² + c·x − 13.625`, `c = 4.2e19`), the factorisation can get a
 /// factor wrong: a complex pair near `x² + x + 1` came out as the real `x² + x + 0.0032`,
@@ -157,7 +156,7 @@ fn all_vanish(p: &[f64; 5], roots: &mut RootBuf) -> bool {
 }
 
 /// Whether `p` vanishes at `x` as far as its coefficients can tell: its compensated value
-/// within [`RESIDUAL_ROUNDINGS`] roundings of the size of its terms (a NaN passes).
+/// within [`RESIDUAL_ROUNDINGS`] roundings of the size of its terms.
 fn vanishes_at(p: &[f64; 5], x: f64) -> bool {
     let (value, _) = eval_compensated(p, x);
     let allowed = RESIDUAL_ROUNDINGS * f64::EPSILON * abs_sum(p, x);
@@ -168,7 +167,7 @@ fn vanishes_at(p: &[f64; 5], x: f64) -> bool {
 /// of the terms a wrong root leaves.
 const RESIDUAL_ROUNDINGS: f64 = 4096.0;
 
-/// The roots of the scaled quartic `p` (`p[0] ∈ [1, 2)`, all `|p[k]| < 2`, `p[4] ≠ 0`: every
+/// The roots of the scaled quartic `p` (`|p[0]| ∈ [1, 2)`, all `|p[k]| < 2`, `p[4] ≠ 0`: every
 /// root within `(−3, 3)`, none within `L = |p[4]|/(|p[4]| + 2)` of 0) piece by piece, where
 /// its factorisation failed [`all_vanish`]: between consecutive critical points (the cubic
 /// `p′`'s roots) and 0, `p` is monotone, and a sign change there holds one root: the bracket
@@ -209,7 +208,7 @@ fn roots_by_pieces(p: &[f64; 5]) -> RootBuf {
             roots.push(root_in(&value, (lo, f_lo), (hi, f_hi)));
         } else if f_hi == 0.0 || (k + 1 < count && hi.abs() != least && vanishes_at(p, hi)) {
             // At a critical point, touching zero: a double root (or a root exactly there).
-            let after = value(marks.get(k + 1).copied().unwrap_or(BOUND)).0;
+            let after = value(marks[..count].get(k + 1).copied().unwrap_or(BOUND)).0;
             let crosses = (f_hi == 0.0) && (f_lo < 0.0) != (after < 0.0);
             roots.push(hi);
             if !crosses {

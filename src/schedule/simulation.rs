@@ -31,7 +31,7 @@ use super::calendar::{CollisionSchedule, ScheduleOptions};
 use super::event::Event;
 use super::objects::ObjectCounts;
 use super::walls::{Side, Walls};
-use crate::collision::length_unit::{LengthUnit, norm_in_range};
+use crate::collision::length_unit::{LengthUnit, norm_in_range, unit_of_largest};
 use crate::error::{InputError, InputErrorKind, check_horizon, finite};
 use crate::geometry::{ObjectKind, Table};
 use crate::motion::Ball;
@@ -530,7 +530,8 @@ fn at(calendar: &CollisionSchedule<2>, i: usize, t: f64) -> (Vector2<f64>, Vecto
 /// anywhere in the float range (`1/m` would overflow for `m` below `1/f64::MAX`).
 ///
 /// Resolved in the pair's unit of length (a power of two, from the largest of the separation,
-/// the velocities and the contact distance): no square overflows or underflows, and a scene
+/// the velocities and the contact distance; the line of centres in the separation's own):
+/// no square overflows or underflows, and a scene
 /// scaled by a power of two collides to the same bits (contract §1); velocities kept are
 /// returned as given.
 fn collide(
@@ -567,15 +568,12 @@ fn collide(
 /// The unit of length of a pair's collision: a power of two from the largest component of
 /// `vectors` and `contact` (a unit of 1 where that is 0, infinite or NaN).
 fn unit_of(vectors: [Vector2<f64>; 3], contact: f64) -> LengthUnit {
-    let big = vectors
-        .iter()
-        .map(|v| v.amax())
-        .fold(contact.abs(), f64::max);
-    LengthUnit::of(if big > 0.0 && big.is_finite() {
-        big
-    } else {
-        1.0
-    })
+    unit_of_largest(
+        vectors
+            .iter()
+            .map(|v| v.amax())
+            .fold(contact.abs(), f64::max),
+    )
 }
 
 /// [`collide`] in the pair's unit of length: `d` the separation, `[va, vb]` the velocities.
@@ -587,7 +585,9 @@ fn collide_in_unit(
     contact: f64,
     e: f64,
 ) -> (Vector2<f64>, Vector2<f64>) {
-    let distance = d.norm();
+    // (In `d`'s own unit: the pair's unit may come from speeds far above the separation,
+    // whose square would then underflow.)
+    let distance = norm_in_range(&d);
     if !(distance > 0.0 && distance.is_finite()) {
         return (va, vb);
     }
