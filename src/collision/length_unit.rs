@@ -86,14 +86,11 @@ pub(crate) fn unit_of_largest(big: f64) -> LengthUnit {
 
 /// `|v|` without overflow or underflow of the squares, for any finite `v`: formed in the unit
 /// of `v`'s largest component, so that `2^k·v` has `2^k·|v|` to the bit (a scene scaled by a
-/// power of two keeps its bits, contract §1). A zero, infinite or NaN `v` as `v.norm()`.
+/// power of two keeps its bits, contract §1). A zero, infinite or NaN `v` gives what `v.norm()`
+/// gives (in a unit of 1).
 #[inline]
 pub(crate) fn norm_in_range<const D: usize>(v: &SVector<f64, D>) -> f64 {
-    let big = v.amax();
-    if !(big > 0.0 && big.is_finite()) {
-        return v.norm();
-    }
-    let unit = LengthUnit::of(big);
+    let unit = unit_of_largest(v.amax());
     unit.restore(v.map(|x| unit.apply(x)).norm())
 }
 

@@ -308,7 +308,8 @@ pub(crate) fn eighth_then_search<const D: usize>(
     length: f64,
     previous_positive: bool,
 ) -> (WindowSearch, SettledBy) {
-    let eighth = window_eighth(gap, bounded_length(gap, length), previous_positive);
+    let bounded = bounded_length(gap, length);
+    let eighth = window_eighth(gap, bounded, previous_positive);
     if eighth.found {
         (WindowSearch::Entry(eighth.entry), SettledBy::Eighth)
     } else if eighth.screened_out {
@@ -316,7 +317,7 @@ pub(crate) fn eighth_then_search<const D: usize>(
             ends_positive: true,
         };
         (none, SettledBy::Eighth)
-    } else if let Some(none) = parting_window(gap, bounded_length(gap, length), previous_positive) {
+    } else if let Some(none) = parting_window(gap, bounded, previous_positive) {
         (none, SettledBy::Parting)
     } else {
         (

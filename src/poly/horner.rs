@@ -163,6 +163,11 @@ impl RootBuf {
     }
 
     /// The roots so far.
+    pub(crate) fn as_slice(&self) -> &[f64] {
+        &self.values[..self.len]
+    }
+
+    /// The roots so far, to be changed in place.
     pub(crate) fn as_mut_slice(&mut self) -> &mut [f64] {
         &mut self.values[..self.len]
     }

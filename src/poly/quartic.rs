@@ -137,7 +137,7 @@ fn quartic_scaled(p: [f64; 5]) -> RootBuf {
     push_quadratic_roots(&p, 1.0, f[0], f[1], &mut roots);
     push_quadratic_roots(&p, 1.0, f[2], f[3], &mut roots);
     polish_roots(&p, roots.as_mut_slice());
-    if all_vanish(&p, &mut roots) {
+    if all_vanish(&p, &roots) {
         roots
     } else {
         roots_by_pieces(&p)
@@ -150,8 +150,8 @@ fn quartic_scaled(p: [f64; 5]) -> RootBuf {
 /// (`848.9375·x⁴ + c·x³ + c·x² + c·x − 13.625`, `c = 4.2e19`), the factorisation can get a
 /// factor wrong: a complex pair near `x² + x + 1` came out as the real `x² + x + 0.0032`,
 /// two roots at which `p` is as large as its terms, or a real pair with one root wrong.
-fn all_vanish(p: &[f64; 5], roots: &mut RootBuf) -> bool {
-    let roots = roots.as_mut_slice();
+fn all_vanish(p: &[f64; 5], roots: &RootBuf) -> bool {
+    let roots = roots.as_slice();
     roots.len().is_multiple_of(2) && roots.iter().all(|&x| vanishes_at(p, x))
 }
 
