@@ -52,6 +52,32 @@ impl Quadratic {
         self.b < 0.0 || (self.b == 0.0 && self.q < 0.0)
     }
 
+    /// Whether the function is proven positive on the whole segment `[0, length]`, by signs
+    /// alone and without its roots: `c > 0` and rising at the start (`b ≥ 0`), and either not
+    /// curving down (`q ≥ 0`: rising throughout) or curving down so little that it is still
+    /// positive at the end (`q < 0` and `b ≥ 1.5·|q|·length`: then `f(length) > c`, and a
+    /// concave function positive at both ends is positive between them). The `1.5` covers the
+    /// rounding of the product, which must be normal (a product that underflowed bounds
+    /// nothing). Then the segment holds no entry and ends positive, which is what its roots
+    /// say too: they are then well apart and away from the segment (both below 0 when
+    /// `q ≥ 0`; one below 0 and one beyond `b/|q| ≥ 1.5·length` when `q < 0`).
+    ///
+    /// What this saves: a ball decelerating to rest, against the plane behind it (a wall it
+    /// moves away from), or at rest, needs no roots.
+    #[inline(always)]
+    fn positive_throughout(self, length: f64) -> bool {
+        let (c, b, q) = (self.c, self.b, self.q);
+        let rising = c > 0.0 && c < f64::INFINITY && (0.0..f64::INFINITY).contains(&b);
+        if !rising {
+            return false;
+        }
+        if q >= 0.0 {
+            return true;
+        }
+        let fall = -q * length;
+        fall >= f64::MIN_POSITIVE && b >= 1.5 * fall
+    }
+
     /// The real roots, ascending (none for a constant; one for a line).
     #[inline(always)]
     fn roots(self) -> RealRoots {
@@ -175,14 +201,17 @@ pub(crate) fn first_entry<const D: usize, const N: usize, X>(
             }
         }
         let length = end - segment.start;
-        let roots = functions.map(Quadratic::roots);
+        // The functions proven positive throughout need no roots (`None`): no entry, and
+        // positive at the segment's end.
+        let roots = functions.map(|f| (!f.positive_throughout(length)).then(|| f.roots()));
         // Each function's entry inside the segment. A root of 0 from a positive value is an
         // entry that underflowed (a ball crossing its room faster than 2⁻¹⁰⁷⁴ time units): a
         // contact at the start, rounded.
         let mut entries = [None; N];
         for (function, f) in functions.iter().enumerate() {
-            entries[function] = f
-                .entry(&roots[function])
+            entries[function] = roots[function]
+                .as_ref()
+                .and_then(|roots| f.entry(roots))
                 .filter(|&s| (s > 0.0 || (s == 0.0 && f.c > 0.0)) && s < length)
                 .map(|s| (s, function));
         }
@@ -212,7 +241,9 @@ pub(crate) fn first_entry<const D: usize, const N: usize, X>(
         }
         let mut positive = [false; N];
         for (function, f) in functions.iter().enumerate() {
-            positive[function] = f.positive_before(&roots[function], length);
+            positive[function] = roots[function]
+                .as_ref()
+                .is_none_or(|roots| f.positive_before(roots, length));
         }
         positive_before = Some(positive);
     }
@@ -303,6 +334,48 @@ mod tests {
         assert!(!line.positive_before(&line.roots(), 1.5));
         let none = quadratic(-1.0, 0.0, -1.0);
         assert!(!none.positive_before(&none.roots(), 1.0));
+    }
+
+    #[test]
+    fn a_function_proven_positive_throughout_has_roots_that_say_so() {
+        // Over the whole float range of each coefficient, and at the boundary of the proof:
+        // a ball decelerating to rest against the plane behind it (b = 2·|q|·length).
+        let mut rng = crate::test_rng::Rng(11);
+        let mut proven = 0;
+        for n in 0..200_000 {
+            let magnitude = |rng: &mut crate::test_rng::Rng| {
+                rng.uniform(0.5, 1.0) * 2f64.powi(rng.uniform(-1070.0, 1020.0) as i32)
+            };
+            let c = magnitude(&mut rng);
+            let b = if n % 7 == 0 { 0.0 } else { magnitude(&mut rng) };
+            let q = -magnitude(&mut rng) * if n % 5 == 0 { -1.0 } else { 1.0 };
+            let length = match n % 3 {
+                0 => magnitude(&mut rng),
+                // At, or near, the stop of a deceleration from speed b: b = 2·|q|·length.
+                1 => b / (2.0 * q.abs()) * rng.uniform(0.9, 1.0),
+                _ => b / (1.5 * q.abs()) * rng.uniform(0.999, 1.001),
+            };
+            if !(length > 0.0 && length.is_finite()) {
+                continue;
+            }
+            let f = quadratic(c, b, q);
+            if f.positive_throughout(length) {
+                proven += 1;
+                let roots = f.roots();
+                let entry = f.entry(&roots).filter(|&s| s >= 0.0 && s < length);
+                assert_eq!(entry, None, "{f:?} on [0, {length}]");
+                assert!(f.positive_before(&roots, length), "{f:?} on [0, {length}]");
+            }
+        }
+        assert!(proven > 50_000, "only {proven} proven");
+        // Not proven: starting on the surface, falling, curving down too much, for ever.
+        assert!(!quadratic(0.0, 1.0, 0.0).positive_throughout(1.0));
+        assert!(!quadratic(1.0, -1e-300, 0.0).positive_throughout(1.0));
+        assert!(!quadratic(1.0, 1.0, -1.0).positive_throughout(1.0));
+        assert!(!quadratic(1.0, 1.0, -1e-300).positive_throughout(f64::INFINITY));
+        assert!(quadratic(1.0, 0.0, 0.0).positive_throughout(f64::INFINITY));
+        // A product that underflows bounds nothing.
+        assert!(!quadratic(1e-300, 0.0, -1e-300).positive_throughout(1e-20));
     }
 
     #[test]

@@ -62,6 +62,27 @@ pub fn solve_quadratic(a: f64, b: f64, c: f64) -> RealRoots {
     if c == 0.0 {
         return RealRoots::from_unsorted(&[0.0, -b / a]);
     }
+    if plain(a) && plain(c) && (b == 0.0 || plain(b)) {
+        // Every product and quotient below is a normal float: the rescaling would only
+        // multiply each by a power of two, which changes no bit of a root (see `plain`).
+        return roots_of(a, b, c, 0, |q| [q / a, c / q]);
+    }
+    solve_rescaled(a, b, c)
+}
+
+/// Whether `|x|` lies in `[2⁻²⁵⁰, 2²⁵¹)`. With `a`, `c` and a non-zero `b` there, `b²`, `4ac`,
+/// the discriminant's rounding errors where they matter (cancellation: then `b² ≈ 4ac`, of
+/// the same size), `√Δ`, `q`, `q/a` and `c/q` are all normal floats, so no rounding differs
+/// from that of the rescaled coefficients, whose every value is the same times a power of
+/// two: the roots are the same bits (a unit test compares the two on random coefficients).
+#[inline(always)]
+fn plain(x: f64) -> bool {
+    let biased = (x.to_bits() >> 52) & 0x7ff;
+    (1023 - 250..=1023 + 250).contains(&biased)
+}
+
+/// [`solve_quadratic`] for finite `a ≠ 0` and `c ≠ 0`, rescaled by powers of two.
+fn solve_rescaled(a: f64, b: f64, c: f64) -> RealRoots {
     let (Some(ea), Some(ec)) = (exponent(a), exponent(c)) else {
         return RealRoots::empty(); // unreachable: a and c are finite and non-zero here
     };
@@ -76,7 +97,28 @@ pub fn solve_quadratic(a: f64, b: f64, c: f64) -> RealRoots {
         .max()
         .unwrap_or(0);
     let (a1, b1, c1) = (scale(a, 2 * s - ek), scale(b, s - ek), scale(c, -ek));
+    // x₁ = q₁/a₁·2^s and x₂ = c₁/q₁·2^s. When the roots are far apart in magnitude, a₁ and c₁
+    // are tiny next to b₁ and may be subnormal (so may a and c themselves): a quotient by or of
+    // a subnormal loses bits or overflows although the root is an ordinary float (1.6e-320·x²
+    // + 8.8e-14·x − 1e-323 has a root at −5.7e306). So a and c enter through their mantissas
+    // in [1, 2) (exact), and the powers of two are applied once, to the quotients:
+    // a₁ = ma·2^(ea+2s−ek) and c₁ = mc·2^(ec−ek).
+    let (ma, mc) = (scale(a, -ea), scale(c, -ec));
+    roots_of(a1, b1, c1, s, |q| {
+        [scale(q / ma, ek - s - ea), scale(mc / q, ec + s - ek)]
+    })
+}
 
+/// The roots of `a₁·y² + b₁·y + c₁` (`a₁`, `c₁` non-zero) as roots `x = 2^s·y`, ascending;
+/// `quotients` forms the two roots `x₁ = q/a`, `x₂ = c/q` from `q = −(b₁ + sign(b₁)·√Δ)/2`.
+#[inline(always)]
+fn roots_of(
+    a1: f64,
+    b1: f64,
+    c1: f64,
+    s: i32,
+    quotients: impl FnOnce(f64) -> [f64; 2],
+) -> RealRoots {
     let disc = discriminant(a1, b1, c1);
     let mut roots = RealRoots::empty();
     if disc < 0.0 {
@@ -97,15 +139,9 @@ pub fn solve_quadratic(a: f64, b: f64, c: f64) -> RealRoots {
         return roots;
     }
     let q = -0.5 * (b1 + disc.sqrt().copysign(b1));
-    // x₁ = q₁/a₁·2^s and x₂ = c₁/q₁·2^s. When the roots are far apart in magnitude, a₁ and c₁
-    // are tiny next to b₁ and may be subnormal (so may a and c themselves): a quotient by or of
-    // a subnormal loses bits or overflows although the root is an ordinary float (1.6e-320·x²
-    // + 8.8e-14·x − 1e-323 has a root at −5.7e306). So a and c enter through their mantissas
-    // in [1, 2) (exact), and the powers of two are applied once, to the quotients:
-    // a₁ = ma·2^(ea+2s−ek) and c₁ = mc·2^(ec−ek).
-    let (ma, mc) = (scale(a, -ea), scale(c, -ec));
-    roots.push(scale(q / ma, ek - s - ea));
-    roots.push(scale(mc / q, ec + s - ek));
+    for x in quotients(q) {
+        roots.push(x);
+    }
     roots.sort();
     roots
 }
@@ -129,6 +165,43 @@ fn discriminant(a: f64, b: f64, c: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn coefficients_in_the_plain_range_get_the_rescaled_roots_to_the_bit() {
+        let mut rng = crate::test_rng::Rng(5);
+        let float = |rng: &mut crate::test_rng::Rng, lo: f64, hi: f64| {
+            let x = rng.uniform(1.0, 2.0) * rng.uniform(lo, hi).round().exp2();
+            if rng.uniform(0.0, 1.0) < 0.5 { -x } else { x }
+        };
+        let bits = |r: &RealRoots| r.as_slice().iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        let mut compared = 0;
+        for n in 0..300_000 {
+            let (a, c) = (
+                float(&mut rng, -250.0, 250.0),
+                float(&mut rng, -250.0, 250.0),
+            );
+            let b = match n % 4 {
+                0 => 0.0,
+                1 => float(&mut rng, -250.0, 250.0),
+                // Close or double roots: b² ≈ 4ac, to the last bits.
+                _ => {
+                    let b = 2.0 * (a * c).abs().sqrt() * (1.0 + rng.uniform(-1.0, 1.0) * 1e-12);
+                    if n % 8 < 4 {
+                        b
+                    } else {
+                        b * (1.0 + f64::EPSILON)
+                    }
+                }
+            };
+            if !(plain(a) && plain(c) && (b == 0.0 || plain(b))) {
+                continue;
+            }
+            compared += 1;
+            let (plain_roots, rescaled) = (solve_quadratic(a, b, c), solve_rescaled(a, b, c));
+            assert_eq!(bits(&plain_roots), bits(&rescaled), "{a:e} {b:e} {c:e}");
+        }
+        assert!(compared > 250_000, "only {compared} compared");
+    }
 
     #[test]
     fn double_root_is_reported_twice() {
