@@ -309,6 +309,15 @@ pub(crate) fn eighth_then_search<const D: usize>(
     previous_positive: bool,
 ) -> (WindowSearch, SettledBy) {
     let bounded = bounded_length(gap, length);
+    // A window that starts with the balls touching (within 2⁻¹⁰ of the contact distance's
+    // square: a pair searched again from its collision) has a root at its first eighth's
+    // start, which the eighth cannot isolate: the parting bound goes first. (Both prove what
+    // they settle, so their order changes no answer.)
+    let r2 = gap.contact_distance * gap.contact_distance;
+    let touching = (gap.offset.norm_squared() - r2).abs() <= r2 * (1.0 / 1024.0);
+    if touching && let Some(none) = parting_window(gap, bounded, previous_positive) {
+        return (none, SettledBy::Parting);
+    }
     let eighth = window_eighth(gap, bounded, previous_positive);
     if eighth.found {
         (WindowSearch::Entry(eighth.entry), SettledBy::Eighth)
@@ -317,7 +326,10 @@ pub(crate) fn eighth_then_search<const D: usize>(
             ends_positive: true,
         };
         (none, SettledBy::Eighth)
-    } else if let Some(none) = parting_window(gap, bounded, previous_positive) {
+    } else if let Some(none) = (!touching)
+        .then(|| parting_window(gap, bounded, previous_positive))
+        .flatten()
+    {
         (none, SettledBy::Parting)
     } else {
         (
