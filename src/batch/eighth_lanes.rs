@@ -550,24 +550,6 @@ pub(super) fn eighth_entry<S: Simd, const D: usize>(
     let (g_lo, g_hi) = (gap.value(s, lo), gap.value(s, hi));
     let (slope_lo, slope_hi) = (gap.half_slope(s, lo), gap.half_slope(s, hi));
     let dip = dip & s.lt(slope_lo, zero) & s.gt(slope_hi, zero);
-    let (lowest, lowest_found) = fixed_newton(
-        s,
-        &HalfSlope(gap),
-        (lo, hi),
-        slope_lo,
-        secant(s, (lo, hi), (slope_lo, slope_hi)),
-        gap.half_slope_noise(s),
-    );
-    let g_lowest = gap.value(s, lowest);
-    let starts_positive = qualifies & s.gt(gap.value(s, zero), zero) & s.gt(g_lo, zero);
-    let right = s.blend(root, lowest, hi);
-    let g_right = s.blend(root, g_lowest, g_hi);
-    let crossing = starts_positive & (root | dip) & s.lt(g_right, zero);
-    let minus_g_right = s.mul(s.splat(-1.0), g_right);
-    let model = s.sub(
-        right,
-        s.sqrt(s.div(minus_g_right, gap.half_curvature(s, right))),
-    );
     let curvature_lo = gap.half_curvature(s, lo);
     // `.max(0.0)` of a difference that is never −0: `x > 0 ? x : 0` (NaN to 0, as `f64::max`).
     let discriminant = s.max(
@@ -575,8 +557,37 @@ pub(super) fn eighth_entry<S: Simd, const D: usize>(
         zero,
     );
     let taylor = s.add(lo, s.div(g_lo, s.sub(s.sqrt(discriminant), slope_lo)));
-    let from_model = s.gt(model, lo) & s.lt(model, right) & !root;
-    let from_taylor = s.gt(taylor, lo) & s.lt(taylor, right) & root;
+    let probe = s.add(taylor, s.mul(s.sub(taylor, lo), s.splat(1.0 / 16.0)));
+    let probed = dip & !root & s.gt(taylor, lo) & s.lt(probe, hi);
+    let g_probe = gap.value(s, probe);
+    let bracketed = probed & s.lt(g_probe, zero);
+    // The minimum's steps only where some lane uses it (the scalar steps skip it elsewhere;
+    // the lanes that do not use it ignore it).
+    let lowest_used = dip & !(root & s.lt(g_hi, zero)) & !bracketed;
+    let (lowest, lowest_found) = if s.any(lowest_used) {
+        fixed_newton(
+            s,
+            &HalfSlope(gap),
+            (lo, hi),
+            slope_lo,
+            secant(s, (lo, hi), (slope_lo, slope_hi)),
+            gap.half_slope_noise(s),
+        )
+    } else {
+        (hi, s.none())
+    };
+    let g_lowest = gap.value(s, lowest);
+    let starts_positive = qualifies & s.gt(gap.value(s, zero), zero) & s.gt(g_lo, zero);
+    let right = s.blend(root, s.blend(bracketed, lowest, probe), hi);
+    let g_right = s.blend(root, s.blend(bracketed, g_lowest, g_probe), g_hi);
+    let crossing = starts_positive & (root | dip) & s.lt(g_right, zero);
+    let minus_g_right = s.mul(s.splat(-1.0), g_right);
+    let model = s.sub(
+        right,
+        s.sqrt(s.div(minus_g_right, gap.half_curvature(s, right))),
+    );
+    let from_model = s.gt(model, lo) & s.lt(model, right) & !root & !bracketed;
+    let from_taylor = s.gt(taylor, lo) & s.lt(taylor, right) & (root | bracketed);
     let start = s.blend(
         from_model,
         s.blend(from_taylor, secant(s, (lo, right), (g_lo, g_right)), taylor),
@@ -585,8 +596,13 @@ pub(super) fn eighth_entry<S: Simd, const D: usize>(
     let (entry, entry_found) =
         fixed_newton(s, &Value(gap), (lo, right), g_lo, start, gap.value_noise(s));
     let narrow = s.ge(s.mul(s.splat(NARROW), gap.size(s)), gap.radius);
-    let missed =
-        starts_positive & dip & lowest_found & s.ge(g_lowest, zero) & s.gt(g_hi, zero) & !narrow;
+    let missed = starts_positive
+        & dip
+        & !bracketed
+        & lowest_found
+        & s.ge(g_lowest, zero)
+        & s.gt(g_hi, zero)
+        & !narrow;
     EighthLanes {
         entry,
         found: crossing & entry_found,

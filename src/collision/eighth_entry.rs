@@ -60,10 +60,25 @@ pub(crate) fn eighth_entry<const D: usize>(
     let (g_lo, g_hi) = (gap.value(lo), gap.value(hi));
     let (slope_lo, slope_hi) = (gap.half_slope(lo), gap.half_slope(hi));
     let dip = dip & (slope_lo < 0.0) & (slope_hi > 0.0);
+    // From the eighth's start, towards a single root, the root of g's second-order Taylor
+    // model there (g is mostly convex near a contact): it starts Newton close enough for six
+    // steps where the chord often does not (on random table contacts, the chord left a third
+    // unsettled after six steps, this one in sixteen).
+    let curvature_lo = gap.half_curvature(lo);
+    let taylor =
+        lo + g_lo / ((slope_lo * slope_lo - curvature_lo * g_lo).max(0.0).sqrt() - slope_lo);
+    // A dip whose entry that model all but finds: g < 0 a sixteenth of the way further on.
+    // With g > 0 at the start and a single minimum, that brackets the first root (before the
+    // probe, g falls through 0 once, wherever the minimum lies), and its minimum is not
+    // needed: most contacts, a Newton search saved.
+    let probe = taylor + (taylor - lo) * (1.0 / 16.0);
+    let probed = dip & !root & (taylor > lo) & (probe < hi);
+    let g_probe = if probed { gap.value(probe) } else { f64::NAN };
+    let bracketed = probed & (g_probe < 0.0);
     // The steps whose results would be masked out below are skipped.
-    // The minimum is used for a dip, unless a single root with g < 0 at the eighth's end
-    // already brackets the entry (and rules out a miss).
-    let lowest_used = dip && !(root && g_hi < 0.0);
+    // The minimum is used for a dip, unless a single root with g < 0 at the eighth's end, or
+    // the probe, already brackets the entry (and rules out a miss).
+    let lowest_used = dip && !(root && g_hi < 0.0) && !bracketed;
     let (lowest, lowest_found) = if !lowest_used {
         (hi, false)
     } else {
@@ -77,35 +92,47 @@ pub(crate) fn eighth_entry<const D: usize>(
     };
     let g_lowest = gap.value(lowest);
     let starts_positive = qualifies & (gap.value(0.0) > 0.0) & (g_lo > 0.0);
-    // The entry lies between the eighth's start and its end (a single root) or its minimum.
-    let (right, g_right) = if root { (hi, g_hi) } else { (lowest, g_lowest) };
-    let crossing = starts_positive & (root | dip) & (g_right < 0.0);
-    // From a minimum, where the root may be near-double, the quadratic model there is
-    // already close (where a secant would crawl in): g(m) + c·(u − m)² = 0.
-    let model = right - (-g_right / gap.half_curvature(right)).sqrt();
-    // From the eighth's start, towards a single root, the root of g's second-order Taylor
-    // model there (g is mostly convex near a contact): it starts Newton close enough for six
-    // steps where the chord often does not (on random table contacts, the chord left a third
-    // unsettled after six steps, this one in sixteen).
-    let curvature_lo = gap.half_curvature(lo);
-    let taylor =
-        lo + g_lo / ((slope_lo * slope_lo - curvature_lo * g_lo).max(0.0).sqrt() - slope_lo);
-    let start = if (model > lo) & (model < right) & !root {
-        model
-    } else if (taylor > lo) & (taylor < right) & root {
-        taylor
+    // The entry lies between the eighth's start and its end (a single root), the probe, or
+    // its minimum.
+    let (right, g_right) = if root {
+        (hi, g_hi)
+    } else if bracketed {
+        (probe, g_probe)
     } else {
-        secant((lo, right), (g_lo, g_right))
+        (lowest, g_lowest)
     };
+    let crossing = starts_positive & (root | dip) & (g_right < 0.0);
     let (entry, entry_found) = if !crossing {
         (lo, false)
     } else {
+        let start = if root | bracketed {
+            // The Taylor model's root, where it lies inside.
+            if (taylor > lo) & (taylor < right) {
+                taylor
+            } else {
+                secant((lo, right), (g_lo, g_right))
+            }
+        } else {
+            // From a minimum, where the root may be near-double, the quadratic model there
+            // is already close (where a secant would crawl in): g(m) + c·(u − m)² = 0.
+            let model = right - (-g_right / gap.half_curvature(right)).sqrt();
+            if (model > lo) & (model < right) {
+                model
+            } else {
+                secant((lo, right), (g_lo, g_right))
+            }
+        };
         fixed_newton(&Value(gap), (lo, right), g_lo, start, gap.value_noise())
     };
     // A dip narrower than the float grid is not called a miss here: the window search decides
     // it on the closest approach (`narrow_dip`).
-    let missed =
-        starts_positive & dip & lowest_found & (g_lowest >= 0.0) & (g_hi > 0.0) & !narrow(gap);
+    let missed = starts_positive
+        & dip
+        & !bracketed
+        & lowest_found
+        & (g_lowest >= 0.0)
+        & (g_hi > 0.0)
+        & !narrow(gap);
     EighthEntry {
         entry,
         found: crossing & entry_found,
