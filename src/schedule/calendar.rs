@@ -159,6 +159,10 @@ pub struct CollisionSchedule<const D: usize> {
     pair_answer: Option<Option<f64>>,
     /// Scratch: segment buffers for [`update_balls`](Self::update_balls)'s new paths.
     spare: Scratch<Vec<Vec<Segment<D>>>>,
+    /// Whether the caller resolves every wall contact by updating the ball before the time
+    /// moves past it, as [`simulate`](super::simulate) does: each ball's pair searches then
+    /// stop at its next wall contact (see [`first_contact`](Self::first_contact)).
+    walls_resolved: bool,
 }
 
 /// Memory kept between calls only to be reused: no part of the calendar's state, so not
@@ -353,6 +357,21 @@ impl<const D: usize> CollisionSchedule<D> {
         radii: &[f64],
         options: ScheduleOptions<D>,
     ) -> Result<Self, InputError> {
+        Self::build(paths, radii, options, false)
+    }
+
+    /// [`new`](Self::new); with `walls_resolved`, for a caller that resolves every wall contact
+    /// (updates the ball) before the time moves past it, as [`simulate`](super::simulate)
+    /// does: each ball's pair searches then stop at its next wall contact, since a collision
+    /// after it never comes (the ball's path changes there, and its pairs are searched
+    /// again). A friction ball's path runs to rest, far beyond the walls: its later windows
+    /// are not formed.
+    pub(crate) fn build(
+        paths: Vec<Path<D>>,
+        radii: &[f64],
+        options: ScheduleOptions<D>,
+        walls_resolved: bool,
+    ) -> Result<Self, InputError> {
         let n = paths.len();
         if radii.len() != n {
             let kind = InputErrorKind::LengthMismatch {
@@ -415,6 +434,7 @@ impl<const D: usize> CollisionSchedule<D> {
             want: u32::MAX,
             pair_answer: None,
             spare: Scratch::default(),
+            walls_resolved,
             bounds: Vec::new(),
             radii: radii.to_vec(),
             walls: options.walls,
@@ -459,8 +479,9 @@ impl<const D: usize> CollisionSchedule<D> {
             interrupt.check()?;
             let end = (chunk + 1024).min(n);
             for i in chunk..end {
-                schedule.refresh(i, None);
+                // The wall first: the pair searches may stop at it (`walls_resolved`).
                 schedule.refresh_wall(i);
+                schedule.refresh(i, None);
                 schedule.refresh_object(i);
                 schedule.refresh_transition(i);
             }
@@ -859,8 +880,9 @@ impl<const D: usize> CollisionSchedule<D> {
                 self.pair_answer = None;
                 self.want = indices[1] as u32;
             }
-            self.refresh(i, Some(known));
+            // The wall first: the pair searches may stop at it (`walls_resolved`).
             self.refresh_wall(i);
+            self.refresh(i, Some(known));
             self.refresh_object(i);
             self.refresh_transition(i);
         }
@@ -1056,17 +1078,25 @@ impl<const D: usize> CollisionSchedule<D> {
         Ok(())
     }
 
-    /// The first contact of balls `i` and `j` (`i ≠ j`): the pair search on `(lo, hi)`, with
-    /// the paths' bounds (stored, or formed here: the same either way).
+    /// The first contact of balls `i` and `j` (`i ≠ j`) for ball `i`'s key: the pair search
+    /// on `(lo, hi)`, with the paths' bounds (stored, or formed here: the same either way).
     fn first_contact(&self, i: usize, j: usize) -> Option<f64> {
         let (a, b) = (i.min(j), i.max(j));
         let (pa, pb) = (self.paths[a].segments(), self.paths[b].segments());
         let radii = [self.radii[a] + self.radii[b], 0.0];
+        // Where the caller resolves wall contacts, up to ball `i`'s next one (a collision at
+        // that very time included: it may come first in the order of events). The search
+        // skips the windows that start beyond it and reports none beyond it; the contacts
+        // before it are the same bits (the windows keep their lengths).
+        let wall = self.wall_contacts.key(i).time;
+        let t_max = if self.walls_resolved && wall < self.t_max {
+            wall.next_up()
+        } else {
+            self.t_max
+        };
         match (self.bounds.get(a), self.bounds.get(b)) {
-            (Some(ba), Some(bb)) => {
-                first_contact_bounded_fma((pa, ba), (pb, bb), radii, self.t_max)
-            }
-            _ => first_contact_of_paths(pa, pb, radii, self.t_max),
+            (Some(ba), Some(bb)) => first_contact_bounded_fma((pa, ba), (pb, bb), radii, t_max),
+            _ => first_contact_of_paths(pa, pb, radii, t_max),
         }
     }
 
@@ -1406,7 +1436,7 @@ impl<const D: usize> CollisionSchedule<D> {
 }
 
 /// The paths of friction balls from time `t` (errors at the ball's index).
-fn friction_paths<const D: usize>(balls: &[Ball], t: f64) -> Result<Vec<Path<D>>, InputError>
+pub(crate) fn friction_paths<const D: usize>(balls: &[Ball], t: f64) -> Result<Vec<Path<D>>, InputError>
 where
     Ball: FrictionPath<D>,
 {

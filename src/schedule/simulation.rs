@@ -27,7 +27,7 @@
 //! of colliding again at the same instant for ever, or sinking into each other unseen. What
 //! is left, events piling up at one instant without end, is an error naming the balls.
 
-use super::calendar::{CollisionSchedule, ScheduleOptions};
+use super::calendar::{CollisionSchedule, ScheduleOptions, friction_paths};
 use super::event::Event;
 use super::objects::ObjectCounts;
 use super::walls::{Side, Walls};
@@ -192,7 +192,21 @@ pub fn simulate_observed(
     radii: &[f64],
     walls: Walls<2>,
     options: &SimulationOptions,
+    observe: impl FnMut(Progress) -> ControlFlow<()>,
+) -> Result<Simulation, InputError> {
+    simulate_in(balls, radii, walls, options, observe, true)
+}
+
+/// [`simulate_observed`], its calendar told that every wall contact is resolved
+/// (`walls_resolved`, what this loop does: its pair searches stop at the walls), or not (the
+/// same run, by the tests).
+fn simulate_in(
+    balls: &[Ball],
+    radii: &[f64],
+    walls: Walls<2>,
+    options: &SimulationOptions,
     mut observe: impl FnMut(Progress) -> ControlFlow<()>,
+    walls_resolved: bool,
 ) -> Result<Simulation, InputError> {
     let n = balls.len();
     let masses = masses(&options.mass, n)?;
@@ -221,7 +235,9 @@ pub fn simulate_observed(
         t_max: t_end,
         ..Default::default()
     };
-    let mut calendar = CollisionSchedule::<2>::from_balls(balls, radii, 0.0, calendar_options)?;
+    // `from_balls`, told that every wall contact is resolved below.
+    let paths = friction_paths(balls, 0.0)?;
+    let mut calendar = CollisionSchedule::build(paths, radii, calendar_options, walls_resolved)?;
     check_start(balls, radii, &walls)?;
     check_start_on_table(balls, radii, &options.table)?;
     let mut captured: Vec<Option<usize>> = vec![None; n];
@@ -887,6 +903,66 @@ mod tests {
             }
         }
         None
+    }
+
+    #[test]
+    fn pair_searches_stopped_at_the_walls_give_the_same_run_to_the_bit() {
+        // Friction balls roll far beyond the walls; the searches that stop at each ball's
+        // next wall contact must change no event. Dense and dilute, weak and strong friction,
+        // unequal radii and masses, a grid of one cell and of many.
+        let mut rng = Rng(23);
+        let mut events = 0;
+        for round in 0..60 {
+            let n = 2 + (rng.uniform(0.0, 120.0) as usize);
+            let side = (n as f64).sqrt().ceil();
+            let friction = [0.0, 0.01, 0.5, 5.0][round % 4];
+            let balls: Vec<Ball> = (0..n)
+                .map(|k| {
+                    let p = Vector2::new(
+                        (k as f64 % side + 0.5) / side,
+                        ((k as f64 / side).floor() + 0.5) / side,
+                    );
+                    let v = Vector2::new(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0));
+                    Ball::new(p, v, friction * rng.uniform(0.5, 1.5)).expect("valid")
+                })
+                .collect();
+            let radii: Vec<f64> = (0..n).map(|_| rng.uniform(0.05, 0.4) / side).collect();
+            let mass: Vec<f64> = (0..n).map(|_| rng.uniform(0.5, 2.0)).collect();
+            let walls = Walls::new([0.0, 0.0], [1.0, 1.0]).expect("valid");
+            let options = SimulationOptions {
+                max_events: Some(40 * n),
+                t_end: 50.0,
+                mass,
+                restitution: [1.0, 0.9][round % 2],
+                ..Default::default()
+            };
+            let run = |resolved| {
+                simulate_in(
+                    &balls,
+                    &radii,
+                    walls,
+                    &options,
+                    |_| ControlFlow::Continue(()),
+                    resolved,
+                )
+                .expect("a valid scene")
+            };
+            let (stopped, whole) = (run(true), run(false));
+            assert_eq!(stopped.events.len(), whole.events.len(), "round {round}");
+            for (x, y) in stopped.events.iter().zip(&whole.events) {
+                assert_eq!(
+                    (x.time.to_bits(), x.i, x.j, x.wall),
+                    (y.time.to_bits(), y.i, y.j, y.wall),
+                    "round {round}"
+                );
+            }
+            for (x, y) in stopped.balls.iter().zip(&whole.balls) {
+                assert_eq!(x.position(), y.position(), "round {round}");
+                assert_eq!(x.velocity(), y.velocity(), "round {round}");
+            }
+            events += whole.events.len();
+        }
+        assert!(events > 20_000, "only {events} events");
     }
 
     #[test]
