@@ -732,12 +732,54 @@ fn check_start(balls: &[Ball], radii: &[f64], walls: &Walls<2>) -> Result<(), In
 
 /// The overlapping pair `(a, b, distance, contact)` of balls inside the box `[lo, hi]`
 /// (centres at least `keep·r` from its walls) with the lowest `a`, then `b` (`a < b`):
-/// `distance < keep·contact`. Found through a grid of cells of about the median diameter,
-/// each listing the balls whose bounding squares meet it (two balls that overlap have
-/// bounding squares that meet, so share a cell): O(N) for balls that do not overlap, where a
-/// sweep along one axis meets a whole column of a ball grid per ball (O(N^1.5): 28 % of a
-/// 10⁶-ball `simulate` of 200,000 events).
+/// `distance < keep·contact`. Up to [`FEW_BALLS`] balls, by every pair; beyond, through a
+/// grid of cells of about the median diameter, each listing the balls whose bounding squares
+/// meet it (two balls that overlap have bounding squares that meet, so share a cell): O(N)
+/// for balls that do not overlap, where a sweep along one axis meets a whole column of a
+/// ball grid per ball (O(N^1.5): 28 % of a 10⁶-ball `simulate` of 200,000 events).
 fn first_overlap(
+    balls: &[Ball],
+    radii: &[f64],
+    walls: [[f64; 2]; 2],
+    keep: f64,
+) -> Option<(usize, usize, f64, f64)> {
+    if balls.len() <= FEW_BALLS {
+        first_overlap_of_few(balls, radii, keep)
+    } else {
+        first_overlap_in_grid(balls, radii, walls, keep)
+    }
+}
+
+/// Up to this many balls, [`first_overlap`] tries every pair in order: cheaper than a grid's
+/// allocations (16 balls: a fifth of a short run's fixed cost).
+const FEW_BALLS: usize = 32;
+
+/// [`first_overlap`] by every pair in order, the first found the lowest. A pair apart by a
+/// contact distance on an axis is skipped without its distance, which is at least that
+/// (`keep < 1` covers the distance's rounding).
+fn first_overlap_of_few(
+    balls: &[Ball],
+    radii: &[f64],
+    keep: f64,
+) -> Option<(usize, usize, f64, f64)> {
+    for a in 0..balls.len() {
+        for b in a + 1..balls.len() {
+            let contact = radii[a] + radii[b];
+            let d = balls[a].position() - balls[b].position();
+            if d.amax() >= contact {
+                continue;
+            }
+            let distance = norm_in_range(&d);
+            if distance < contact * keep {
+                return Some((a, b, distance, contact));
+            }
+        }
+    }
+    None
+}
+
+/// [`first_overlap`] through a grid (see there).
+fn first_overlap_in_grid(
     balls: &[Ball],
     radii: &[f64],
     [lo, hi]: [[f64; 2]; 2],
@@ -998,9 +1040,15 @@ mod tests {
                     Ball::at_rest(p).expect("finite")
                 })
                 .collect();
+            let every = all_pairs(&balls, &radii, keep);
             assert_eq!(
-                first_overlap(&balls, &radii, [lo, hi], keep),
-                all_pairs(&balls, &radii, keep),
+                first_overlap_in_grid(&balls, &radii, [lo, hi], keep),
+                every,
+                "round {round}"
+            );
+            assert_eq!(
+                first_overlap_of_few(&balls, &radii, keep),
+                every,
                 "round {round}"
             );
         }
