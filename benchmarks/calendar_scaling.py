@@ -7,7 +7,9 @@ one thread, in one run.
   µs per event (median of ``--repeats`` runs, and of as many more as fill 0.2 s), and each
   friction's ratio to the frictionless run at the same ``N``; once with the calendar's build
   (and the call) included, once after them (the same run less one with ``max_events=0``):
-  a strong friction stops the balls within a few events, over which the build is shared.
+  a strong friction stops the balls within a few events, over which the build is shared;
+  and once more with the build, against the frictionless run cut at the same number of
+  events (where a friction run ends sooner), so that both share the fixed cost alike.
 - ``horizons``: balls that never meet: one to 200 balls moving in parallel in a box (no
   ``t_end``, against ``t_end=100``), and 100 or 400 balls moving in parallel in open space,
   the first ``next_collision()`` with ``t_max=inf`` against ``t_max=1e3``.
@@ -47,8 +49,11 @@ def grid_scene(n: int):
     return pos, 0.25 / np.sqrt(n)
 
 
+SAME_LENGTH = "the build included, against the frictionless run cut at as many events"
+
+
 def friction(sizes, frictions, repeats: int) -> None:
-    tables = {"the build included": [], "after the build": []}
+    tables = {"the build included": [], "after the build": [], SAME_LENGTH: []}
     for n in sizes:
         pos, r = grid_scene(n)
         vel = np.random.default_rng(n).normal(size=(n, 2))
@@ -62,7 +67,17 @@ def friction(sizes, frictions, repeats: int) -> None:
             per = {
                 "the build included": seconds / events * 1e6,
                 "after the build": max(0.0, seconds - build) / events * 1e6,
+                SAME_LENGTH: seconds / events * 1e6,
             }
+            if mu != 0 and events < 5 * n:
+                # Balls at rest before the last event: the call's fixed cost (the build, the
+                # binding) is shared by fewer events than in the frictionless run; compare
+                # with that run cut at as many events.
+                cut = partial(bc.simulate, pos, vel, 0.0, r, box=([0, 0], [1, 1]))
+                same, _ = median_time(partial(cut, max_events=events), repeats)
+                base[SAME_LENGTH] = same / events * 1e6
+            elif mu != 0:
+                base[SAME_LENGTH] = base["the build included"]
             for name, value in per.items():
                 if mu == 0:
                     base[name] = value
