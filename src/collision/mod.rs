@@ -23,7 +23,7 @@
 //! | path contact | `path_contact.rs` | the window loop: windows between segment starts of either path, each formed from the two active segments in time since their own starts | `path_collision_time`, `path_collision_times` |
 //! | (counts) | `stage_counts.rs` | how many pairs and windows each path stage settles (cargo feature `stage-counts`) | the benchmarks |
 //! | window box | `window_box.rs` | the box the separation sweeps over one window keeps out of the contact distance | path windows; pieces of long windows |
-//! | window chord | `window_chord.rs` | across the chord of the separation's run over one window, its span keeps out of the contact distance on one side | path windows, after the window box |
+//! | window chord | `window_chord.rs` | across the chord of the separation's run over one window, its span keeps out of the contact distance on one side | path windows, after the window box (not the calendar's one-pair-at-a-time searches, where it costs more than it saves) |
 //! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` at the SIMD levels that run the lane stages, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
 //! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |

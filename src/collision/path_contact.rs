@@ -18,7 +18,7 @@
 //! | [`path_collision_time`] | paths, radius and horizon unchecked | the public query |
 //! | `first_contact_checked` | the same, with the screens on or off | it and [`path_collision_time_unscreened`] |
 //! | [`first_contact_of_paths`] | valid segments; the bounds formed here | geometry's circles and targets, the calendar |
-//! | [`first_contact_bounded_fma`] | valid segments with their bounds | the calendar (one pair at a time, FMA in hardware) |
+//! | [`first_contact_bounded_fma`] | valid segments with their bounds | the calendar (one pair at a time, FMA in hardware, no window chord) |
 //! | [`first_contact_bounded`] | the same, and what the lanes found ([`Prior`]) | the batches (inlined into each SIMD copy) |
 //! | `first_contact_walk` | the same, the screens on or off | all of the above: the walk over windows |
 //! | `first_contact_one_window` | two paths of one segment each | the walk's shortcut |
@@ -94,6 +94,7 @@ fn first_contact_checked<const D: usize, const SCREENS: bool>(
         [radius, 0.0],
         t_max,
         Prior::Nothing,
+        true,
     ))
 }
 
@@ -141,7 +142,18 @@ impl<const D: usize, const S: usize> crate::simd::Kernel for FirstContactBounded
 
     #[inline(always)]
     fn run<L: crate::simd::Simd>(self, _: L) -> Option<f64> {
-        first_contact_bounded(self.a, self.b, self.radii, self.t_max, Prior::Nothing)
+        // Without the window chord: on the calendar's pairs (friction balls, pool balls on
+        // shots) it settles about one window in ten of those it is asked about, and costs
+        // more than it saves (schedule_timing, 16 to 6,400 friction balls: 3-5 % less CPU per
+        // event without it; shot_timing: as fast or faster on every kind of shot).
+        first_contact_walk::<D, S, true>(
+            self.a,
+            self.b,
+            self.radii,
+            self.t_max,
+            Prior::Nothing,
+            false,
+        )
     }
 }
 
@@ -169,7 +181,7 @@ pub(crate) fn first_contact_bounded<const D: usize, const S: usize>(
     t_max: f64,
     prior: Prior,
 ) -> Option<f64> {
-    first_contact_walk::<D, S, true>(a, b, radii, t_max, prior)
+    first_contact_walk::<D, S, true>(a, b, radii, t_max, prior, true)
 }
 
 /// What a caller already knows of a pair when its search starts.
@@ -191,7 +203,8 @@ pub(crate) enum Prior {
 }
 
 /// The first contact: the whole-path screens, then the walk over windows, with the screens
-/// that prove balls apart (`SCREENS`) or without them.
+/// that prove balls apart (`SCREENS`) or without them, the window chord among them only with
+/// `window_chord`.
 #[inline(always)]
 fn first_contact_walk<const D: usize, const S: usize, const SCREENS: bool>(
     (a, bounds_a): (&[Segment<D>], &PathBounds<D, S>),
@@ -199,6 +212,7 @@ fn first_contact_walk<const D: usize, const S: usize, const SCREENS: bool>(
     radii: [f64; 2],
     t_max: f64,
     prior: Prior,
+    window_chord: bool,
 ) -> Option<f64> {
     count(Stage::PathPair);
     if let ([sa], [sb]) = (a, b) {
@@ -208,6 +222,7 @@ fn first_contact_walk<const D: usize, const S: usize, const SCREENS: bool>(
             (bounds_a, bounds_b),
             radii,
             t_max,
+            window_chord,
         );
     }
     // Paths whose boxes keep apart need no window: a proof (its margin far above the
@@ -253,7 +268,8 @@ fn first_contact_walk<const D: usize, const S: usize, const SCREENS: bool>(
                 start,
                 end,
             };
-            match window.search::<SCREENS>(unit, radius, previous_positive, screens) {
+            let chord = screens && window_chord;
+            match window.search::<SCREENS>(unit, radius, previous_positive, chord) {
                 // (At the window's start, which is before `t_max`, or on it.)
                 WindowStep::Contact(t) => return (t < t_max).then_some(t),
                 WindowStep::NoEntry { ends_positive } => previous_positive = Some(ends_positive),
@@ -282,6 +298,7 @@ fn first_contact_one_window<const D: usize, const S: usize, const SCREENS: bool>
     (bounds_a, bounds_b): (&PathBounds<D, S>, &PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
+    window_chord: bool,
 ) -> Option<f64> {
     let (unit, radius) = pair_unit(bounds_a, bounds_b, radii);
     let start = first_time(a, b);
@@ -295,7 +312,7 @@ fn first_contact_one_window<const D: usize, const S: usize, const SCREENS: bool>
         start,
         end: f64::INFINITY,
     };
-    match window.search::<SCREENS>(unit, radius, None, true) {
+    match window.search::<SCREENS>(unit, radius, None, window_chord) {
         WindowStep::Contact(t) => (t < t_max).then_some(t),
         WindowStep::NoEntry { .. } => None,
     }
