@@ -709,7 +709,13 @@ mod tests {
 
     /// The scalar search on two checked paths, `∞` for none.
     fn first_path_contact_of(a: &[Segment<2>], b: &[Segment<2>], radius: f64) -> f64 {
-        crate::collision::path_contact::first_contact_of_paths(a, b, [radius, 0.0], f64::INFINITY)
-            .unwrap_or(f64::INFINITY)
+        crate::collision::path_contact::first_contact_of_paths(
+            a,
+            b,
+            [radius, 0.0],
+            f64::INFINITY,
+            true,
+        )
+        .unwrap_or(f64::INFINITY)
     }
 }

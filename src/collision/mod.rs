@@ -23,13 +23,13 @@
 //! | path contact | `path_contact.rs` | the window loop: windows between segment starts of either path, each formed from the two active segments in time since their own starts | `path_collision_time`, `path_collision_times` |
 //! | (counts) | `stage_counts.rs` | how many pairs and windows each path stage settles (cargo feature `stage-counts`) | the benchmarks |
 //! | window box | `window_box.rs` | the box the separation sweeps over one window keeps out of the contact distance | path windows; pieces of long windows |
-//! | window chord | `window_chord.rs` | across the chord of the separation's run over one window, its span keeps out of the contact distance on one side | path windows, after the window box (not the calendar's one-pair-at-a-time searches, where it costs more than it saves) |
+//! | window chord | `window_chord.rs` | across the chord of the separation's run over one window, its span keeps out of the contact distance on one side | path windows, after the window box (not the calendar's pair searches, where it costs more than it saves) |
 //! | (window lanes) | `batch/window_lanes.rs` | the three window screens above on every window of a pair at once, eight pairs at a time: no window of the pair can hold a contact | `path_collision_times` at the SIMD levels that run the lane stages, for the pairs of rows of 2 and 3 segments that the whole-path lanes leave |
 //! | straight window | `straight.rs` (`straight_window`) | a window without relative acceleration: the separation runs along a line at constant speed, the entry in closed form where clear | path windows |
 //! | **every window that is left** | | | |
 //! | eighth entry | `eighth_entry.rs`; lane-wise, `batch/eighth_lanes.rs` (`window_eighth`) | a window whose first open eighth is isolated (one root, or one dip): its entry, or none, by fixed Newton steps, branch-free; a path window with every eighth proven positive: none | `moving_entry`; path windows, before the window search (`window_eighth`); the first-window lanes below |
 //! | (first-window lanes) | `batch/first_window_lanes.rs` | the eighth entry (`batch/eighth_lanes.rs`) on the first windows of the pairs the lanes above take and leave, eight at a time: the pair's contact, or its first window screened out (the walk starts after it) | `path_collision_times` at the SIMD levels that run the lane stages, rows of 2 and 3 segments |
-//! | parting | `parting.rs` | a window on which the distance grows throughout (a pair just after its collision, touching and parting): no entry, by one Bernstein bound of `d·d′` | `eighth_then_search`, for the windows the eighth leaves, before the window search |
+//! | parting | `parting.rs` | a window on which the distance grows throughout (a pair just after its collision, touching and parting): no entry, by one Bernstein bound of `d·d′` | `eighth_then_search`, for the windows the eighth leaves (before it, for windows that start touching), before the window search |
 //! | window search | `mod.rs` (`search_window`) | time scaled to the window, the first entry found by the stages below | friction windows, path windows |
 //! | long window | `long_window.rs` | windows far longer than the motion's time scale, in pieces, each proven apart or searched | `search_window`; `crossing` (which leaves long windows to the search) |
 //! | exclusion | `exclusion.rs` | Bernstein bounds of the gap quartic: pieces of a window with no contact, and the shape of the rest | `entry` (for `search_window`), `crossing`, `moving_entry` |
@@ -297,7 +297,8 @@ fn first_contact_in_unit(
 }
 
 /// A window's first entry: its first open eighth first, then (balls parting throughout the
-/// window, [`parting_window`]) none, then the window search. An entry isolated on the eighth
+/// window, [`parting_window`]) none, then the window search; a window that starts with the
+/// balls touching tries the parting bound before the eighth. An entry isolated on the eighth
 /// is settled by Newton steps to the floor of its own time, where the search's steps are
 /// sized by the window (a contact at 2⁻²² of the window's length, at a radius of 2⁻⁵² of the
 /// distance, came 85 floors late). Both pair queries search their windows here, so they take

@@ -18,7 +18,7 @@
 //! | [`path_collision_time`] | paths, radius and horizon unchecked | the public query |
 //! | `first_contact_checked` | the same, with the screens on or off | it and [`path_collision_time_unscreened`] |
 //! | [`first_contact_of_paths`] | valid segments; the bounds formed here | geometry's circles and targets, the calendar |
-//! | [`first_contact_bounded_fma`] | valid segments with their bounds | the calendar (one pair at a time, FMA in hardware, no window chord) |
+//! | [`first_contact_bounded_fma`] | valid segments with their bounds | the calendar (one pair at a time, FMA in hardware, without the window chord) |
 //! | [`first_contact_bounded`] | the same, and what the lanes found ([`Prior`]) | the batches (inlined into each SIMD copy) |
 //! | `first_contact_walk` | the same, the screens on or off | all of the above: the walk over windows |
 //! | `first_contact_one_window` | two paths of one segment each | the walk's shortcut |
@@ -99,33 +99,48 @@ fn first_contact_checked<const D: usize, const SCREENS: bool>(
 }
 
 /// The first contact on validated inputs, the paths' bounds formed here; the contact distance
-/// is the sum of `radii`, formed in the pair's unit of length.
+/// is the sum of `radii`, formed in the pair's unit of length; the window chord tried only
+/// with `window_chord` (see [`first_contact_bounded_fma`]).
 /// `a` and `b` are the segments of valid paths ([`Path::segments`]).
 pub(crate) fn first_contact_of_paths<const D: usize>(
     a: &[Segment<D>],
     b: &[Segment<D>],
     radii: [f64; 2],
     t_max: f64,
+    window_chord: bool,
 ) -> Option<f64> {
     first_contact_bounded_fma::<D, SEGMENT_BOXES>(
         (a, &PathBounds::of(a)),
         (b, &PathBounds::of(b)),
         radii,
         t_max,
+        window_chord,
     )
 }
 
-/// [`first_contact_bounded`] (without a prior) for one pair at a time (the calendar's), with fused
+/// [`first_contact_bounded`] (without a prior) for one pair at a time, with fused
 /// multiply-adds in hardware where the CPU has them: one instruction rather than a library
-/// call, the same exact result, so the same bits.
+/// call, the same exact result, so the same bits. The window chord, a proof like the other
+/// screens (so the same answer either way), is tried only with `window_chord`: the calendar's
+/// pair searches leave it out, as on their pairs (friction balls, pool balls on shots) it
+/// settles about one window in ten of those it is asked about and costs more than it saves
+/// (`schedule_timing`, 16 to 6,400 friction balls: 3–5 % less CPU per event without it;
+/// `shot_timing`: as fast or faster on every kind of shot).
 pub(crate) fn first_contact_bounded_fma<const D: usize, const S: usize>(
     a: (&[Segment<D>], &PathBounds<D, S>),
     b: (&[Segment<D>], &PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
+    window_chord: bool,
 ) -> Option<f64> {
     // The level of the batch (or the process): `simd`'s one dispatch point.
-    let contact = FirstContactBoundedFma { a, b, radii, t_max };
+    let contact = FirstContactBoundedFma {
+        a,
+        b,
+        radii,
+        t_max,
+        window_chord,
+    };
     crate::simd::dispatch_scalar(crate::simd::current(), contact)
 }
 
@@ -135,6 +150,7 @@ struct FirstContactBoundedFma<'a, const D: usize, const S: usize> {
     b: (&'a [Segment<D>], &'a PathBounds<D, S>),
     radii: [f64; 2],
     t_max: f64,
+    window_chord: bool,
 }
 
 impl<const D: usize, const S: usize> crate::simd::Kernel for FirstContactBoundedFma<'_, D, S> {
@@ -142,17 +158,13 @@ impl<const D: usize, const S: usize> crate::simd::Kernel for FirstContactBounded
 
     #[inline(always)]
     fn run<L: crate::simd::Simd>(self, _: L) -> Option<f64> {
-        // Without the window chord: on the calendar's pairs (friction balls, pool balls on
-        // shots) it settles about one window in ten of those it is asked about, and costs
-        // more than it saves (schedule_timing, 16 to 6,400 friction balls: 3-5 % less CPU per
-        // event without it; shot_timing: as fast or faster on every kind of shot).
         first_contact_walk::<D, S, true>(
             self.a,
             self.b,
             self.radii,
             self.t_max,
             Prior::Nothing,
-            false,
+            self.window_chord,
         )
     }
 }

@@ -60,5 +60,5 @@ pub(crate) fn first_circle_contact<const D: usize>(
 ) -> Option<f64> {
     let start = segments.first()?.start;
     let centre = [Segment::at_rest(start, circle.centre())];
-    first_contact_of_paths(segments, &centre, [radius, circle.rho()], t_max)
+    first_contact_of_paths(segments, &centre, [radius, circle.rho()], t_max, true)
 }

@@ -58,5 +58,5 @@ pub(crate) fn first_target_contact<const D: usize>(
 ) -> Option<f64> {
     let start = segments.first()?.start;
     let centre = [Segment::at_rest(start, target.centre())];
-    first_contact_of_paths(segments, &centre, [target.rho(), 0.0], t_max)
+    first_contact_of_paths(segments, &centre, [target.rho(), 0.0], t_max, true)
 }

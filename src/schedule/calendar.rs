@@ -1087,16 +1087,22 @@ impl<const D: usize> CollisionSchedule<D> {
         // Where the caller resolves wall contacts, up to ball `i`'s next one (a collision at
         // that very time included: it may come first in the order of events). The search
         // skips the windows that start beyond it and reports none beyond it; the contacts
-        // before it are the same bits (the windows keep their lengths).
+        // before it are the same bits (the windows keep their lengths). A collision's second
+        // ball takes the pair's answer as the first ball's search found it (`Known::Pair`),
+        // cut at the first ball's wall: a contact it misses comes after that wall, where the
+        // first ball's path changes and the pair is searched again.
         let wall = self.wall_contacts.key(i).time;
         let t_max = if self.walls_resolved && wall < self.t_max {
             wall.next_up()
         } else {
             self.t_max
         };
+        // Without the window chord (see `first_contact_bounded_fma`).
         match (self.bounds.get(a), self.bounds.get(b)) {
-            (Some(ba), Some(bb)) => first_contact_bounded_fma((pa, ba), (pb, bb), radii, t_max),
-            _ => first_contact_of_paths(pa, pb, radii, t_max),
+            (Some(ba), Some(bb)) => {
+                first_contact_bounded_fma((pa, ba), (pb, bb), radii, t_max, false)
+            }
+            _ => first_contact_of_paths(pa, pb, radii, t_max, false),
         }
     }
 
