@@ -176,6 +176,48 @@ mod tests {
     }
 
     #[test]
+    fn windows_that_start_touching_get_the_answer_of_the_eighth_first() {
+        // `eighth_then_search` tries the parting bound before the eighth on such windows:
+        // the answer must be what the eighth, then the parting bound, then the search give.
+        use crate::collision::eighth_entry::window_eighth;
+        use crate::collision::{SettledBy, eighth_then_search};
+        let mut rng = crate::test_rng::Rng(41);
+        let (mut parted, mut entered) = (0, 0);
+        for n in 0..20_000 {
+            let r = rng.uniform(0.01, 1.0);
+            let angle = rng.uniform(0.0, std::f64::consts::TAU);
+            // Touching, within 2⁻¹² of the contact distance either way.
+            let scale = r * (1.0 + rng.uniform(-1.0, 1.0) / 4096.0);
+            let d = [scale * angle.cos(), scale * angle.sin()];
+            let v = [rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)];
+            let a = [rng.uniform(-0.1, 0.1), rng.uniform(-0.1, 0.1)];
+            let length = rng.uniform(0.01, 100.0);
+            let g = gap(d, v, a, r);
+            let before = n % 2 == 0;
+            let (answer, by) = eighth_then_search(&g, length, before);
+            let eighth = window_eighth(&g, length, before);
+            let old = if eighth.found {
+                WindowSearch::Entry(eighth.entry)
+            } else if eighth.screened_out {
+                WindowSearch::NoEntry {
+                    ends_positive: true,
+                }
+            } else if let Some(none) = parting_window(&g, length, before) {
+                none
+            } else {
+                crate::collision::search_window(&g, length, before)
+            };
+            assert_eq!(answer, old, "{g:?} over {length}, before {before}");
+            parted += usize::from(by == SettledBy::Parting);
+            entered += usize::from(matches!(answer, WindowSearch::Entry(_)));
+        }
+        assert!(
+            parted > 2_000 && entered > 2_000,
+            "{parted} parted, {entered} entered"
+        );
+    }
+
+    #[test]
     fn random_windows_it_settles_grow_and_agree_with_the_search() {
         let mut rng = crate::test_rng::Rng(7);
         let mut settled = 0;

@@ -201,6 +201,22 @@ mod tests {
             assert_eq!(bits(&plain_roots), bits(&rescaled), "{a:e} {b:e} {c:e}");
         }
         assert!(compared > 250_000, "only {compared} compared");
+        // Exact double roots, 2^k·(x − 2^m)², and a missing middle term, at the range's edges.
+        for k in [-250, -249, -125, 0, 125, 249, 250] {
+            for m in [-1, 0, 1] {
+                let (a, r) = (2f64.powi(k), 2f64.powi(m));
+                let (b, c) = (-2.0 * a * r, a * r * r);
+                if !(plain(a) && plain(b) && plain(c)) {
+                    continue;
+                }
+                let roots = solve_quadratic(a, b, c);
+                assert_eq!(roots.as_slice(), &[r, r], "2^{k}·(x − 2^{m})²");
+                assert_eq!(bits(&roots), bits(&solve_rescaled(a, b, c)));
+                let opposite = solve_quadratic(a, 0.0, -c);
+                assert_eq!(opposite.as_slice(), &[-r, r]);
+                assert_eq!(bits(&opposite), bits(&solve_rescaled(a, 0.0, -c)));
+            }
+        }
     }
 
     #[test]

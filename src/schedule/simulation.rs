@@ -1008,6 +1008,47 @@ mod tests {
     }
 
     #[test]
+    fn a_collision_at_a_wall_contact_s_time_is_found_with_the_searches_stopped_there() {
+        // Ball A reaches the wall x = 2 at t = 1.4 as ball B, coming up from below, meets it
+        // there: offsets of a few ulps put the collision just before, at or just after the
+        // wall contact, with A as ball 0 or 1, with and without friction.
+        let walls = Walls::new([0.0, 0.0], [2.0, 2.0]).expect("valid");
+        let mut runs = 0;
+        for k in -8..=8 {
+            for mu in [0.0, 1e-3] {
+                for a_first in [true, false] {
+                    let y = 0.16 + f64::from(k) * f64::EPSILON * 0.16;
+                    let a = Ball::new(Vector2::new(0.5, 0.5), Vector2::new(1.0, 0.0), mu);
+                    let b = Ball::new(Vector2::new(1.9, y), Vector2::new(0.0, 0.1), mu);
+                    let (a, b) = (a.expect("valid"), b.expect("valid"));
+                    let balls = if a_first { [a, b] } else { [b, a] };
+                    let options = SimulationOptions {
+                        max_events: Some(20),
+                        t_end: 5.0,
+                        ..Default::default()
+                    };
+                    let run = |resolved| {
+                        let observe = |_| ControlFlow::Continue(());
+                        simulate_in(&balls, &[0.1, 0.1], walls, &options, observe, resolved)
+                            .expect("a valid scene")
+                    };
+                    let (stopped, whole) = (run(true), run(false));
+                    let log = |s: &Simulation| {
+                        s.events
+                            .iter()
+                            .map(|e| (e.time.to_bits(), e.i, e.j, e.wall))
+                            .collect::<Vec<_>>()
+                    };
+                    assert_eq!(log(&stopped), log(&whole), "k = {k}, mu = {mu}");
+                    assert!(whole.events.iter().any(|e| e.j.is_some()), "k = {k}");
+                    runs += 1;
+                }
+            }
+        }
+        assert_eq!(runs, 68);
+    }
+
+    #[test]
     fn the_grid_finds_the_pair_every_pair_finds() {
         let mut rng = Rng(5);
         let keep = 1.0 - START_TOLERANCE;
