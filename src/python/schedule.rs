@@ -274,6 +274,16 @@ fn walls_of<const D: usize>(
     let Some(obj) = obj.filter(|o| !o.is_none()) else {
         return Ok(None);
     };
+    walls_from(py, obj, "None or a tuple (lo, hi)").map(Some)
+}
+
+/// The walls of `obj`, a `(lo, hi)` pair of corners; `expected` says what a value of another
+/// type should have been.
+fn walls_from<const D: usize>(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    expected: &str,
+) -> PyResult<Walls<D>> {
     let items: Option<Vec<Bound<'_, PyAny>>> = match (obj.cast::<PyTuple>(), obj.cast::<PyList>()) {
         (Ok(t), _) => Some(t.iter().collect()),
         (_, Ok(l)) => Some(l.iter().collect()),
@@ -293,17 +303,15 @@ fn walls_of<const D: usize>(
         }
     };
     match items.as_deref() {
-        Some([lo, hi]) => {
-            let walls = Walls::new(corner(lo)?, corner(hi)?).map_err(|e| from_core(py, e))?;
-            Ok(Some(walls))
-        }
+        Some([lo, hi]) => Walls::new(corner(lo)?, corner(hi)?).map_err(|e| from_core(py, e)),
         Some(other) => {
             let reason = format!("expected (lo, hi), got a sequence of {}", other.len());
             Err(input_error(py, "box", None, kind::SHAPE, &reason))
         }
-        None => Err(PyTypeError::new_err(
-            "box: expected None or a tuple (lo, hi)",
-        )),
+        None => Err(PyTypeError::new_err(format!(
+            "box: expected {expected}, got {}",
+            obj.get_type().name()?
+        ))),
     }
 }
 
@@ -882,8 +890,7 @@ pub(super) fn simulate<'py>(
     let balls = balls(py, pos, vel, friction)?;
     let n = balls.len();
     let radii = radii(py, radius, n)?;
-    let walls = walls_of::<2>(py, Some(r#box))?
-        .ok_or_else(|| PyTypeError::new_err("box: expected a tuple (lo, hi), got None"))?;
+    let walls = walls_from::<2>(py, r#box, "a tuple (lo, hi)")?;
     let mass = match mass.param_or("mass", 1.0)?.per_pair() {
         PerPair::All(m) => vec![m],
         PerPair::Each(m) => m.to_vec(),

@@ -796,3 +796,13 @@ def test_a_time_of_minus_zero_is_taken_in_as_zero() -> None:
     s.update([0, 1], start, touching, vel, np.zeros((2, 1, 2)))
     assert positive_zero(s.time)
     assert positive_zero(s.next_event().time)
+
+
+def test_a_box_of_another_type_is_named_with_what_it_got() -> None:
+    pos, vel = [[0.5, 0.5]], [[0.0, 0.0]]
+    with pytest.raises(TypeError, match=r"^box: expected a tuple \(lo, hi\), got str$"):
+        bc.simulate(pos, vel, 0.0, 0.1, box="box")
+    with pytest.raises(TypeError, match=r"^box: expected a tuple \(lo, hi\), got NoneType$"):
+        bc.simulate(pos, vel, 0.0, 0.1, box=None)
+    with pytest.raises(TypeError, match=r"^box: expected None or a tuple \(lo, hi\), got int$"):
+        bc.CollisionSchedule.from_balls(pos, vel, 0.0, 0.1, box=3)
