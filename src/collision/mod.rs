@@ -327,10 +327,7 @@ pub(crate) fn eighth_then_search<const D: usize>(
             ends_positive: true,
         };
         (none, SettledBy::Eighth)
-    } else if let Some(none) = (!touching)
-        .then(|| parting_window(gap, bounded, previous_positive))
-        .flatten()
-    {
+    } else if !touching && let Some(none) = parting_window(gap, bounded, previous_positive) {
         (none, SettledBy::Parting)
     } else {
         (

@@ -145,7 +145,8 @@ fn quartic_scaled(p: [f64; 5]) -> RootBuf {
 }
 
 /// Whether `p` vanishes at each of `roots` as far as its coefficients can tell (a residual,
-/// compensated, within [`RESIDUAL_ROUNDINGS`] roundings of the size of its terms), and they are as many as a quartic's real roots can be (an even number). Where
+/// compensated, within [`RESIDUAL_ROUNDINGS`] roundings of the size of its terms), and they
+/// are as many as a quartic's real roots can be (an even number). Where
 /// the coefficients span nearly the 64 bits at which the Newton polygon splits the quartic
 /// (`848.9375·x⁴ + c·x³ + c·x² + c·x − 13.625`, `c = 4.2e19`), the factorisation can get a
 /// factor wrong: a complex pair near `x² + x + 1` came out as the real `x² + x + 0.0032`,
@@ -730,7 +731,6 @@ fn csqrt(z: C) -> C {
 
 #[cfg(test)]
 mod tests {
-
     use super::*;
 
     /// `|p(x)|` within a few roundings of the size of its terms.

@@ -1080,10 +1080,22 @@ impl<const D: usize> CollisionSchedule<D> {
 
     /// The first contact of balls `i` and `j` (`i ≠ j`) for ball `i`'s key: the pair search
     /// on `(lo, hi)`, with the paths' bounds (stored, or formed here: the same either way).
-    fn first_contact(&self, i: usize, j: usize) -> Option<f64> {
+    fn first_contact(&self, i: usize, j: usize, t_max: f64) -> Option<f64> {
         let (a, b) = (i.min(j), i.max(j));
         let (pa, pb) = (self.paths[a].segments(), self.paths[b].segments());
         let radii = [self.radii[a] + self.radii[b], 0.0];
+        // Without the window chord (see `first_contact_bounded_fma`).
+        match (self.bounds.get(a), self.bounds.get(b)) {
+            (Some(ba), Some(bb)) => {
+                first_contact_bounded_fma((pa, ba), (pb, bb), radii, t_max, false)
+            }
+            _ => first_contact_of_paths(pa, pb, radii, t_max, false),
+        }
+    }
+
+    /// How far ball `i`'s pair searches go: the horizon, or, where the caller resolves wall
+    /// contacts, up to ball `i`'s next one.
+    fn pair_horizon(&self, i: usize) -> f64 {
         // Where the caller resolves wall contacts, up to ball `i`'s next one (a collision at
         // that very time included: it may come first in the order of events). The search
         // skips the windows that start beyond it and reports none beyond it; the contacts
@@ -1092,17 +1104,10 @@ impl<const D: usize> CollisionSchedule<D> {
         // cut at the first ball's wall: a contact it misses comes after that wall, where the
         // first ball's path changes and the pair is searched again.
         let wall = self.wall_contacts.key(i).time;
-        let t_max = if self.walls_resolved && wall < self.t_max {
+        if self.walls_resolved && wall < self.t_max {
             wall.next_up()
         } else {
             self.t_max
-        };
-        // Without the window chord (see `first_contact_bounded_fma`).
-        match (self.bounds.get(a), self.bounds.get(b)) {
-            (Some(ba), Some(bb)) => {
-                first_contact_bounded_fma((pa, ba), (pb, bb), radii, t_max, false)
-            }
-            _ => first_contact_of_paths(pa, pb, radii, t_max, false),
         }
     }
 
@@ -1290,6 +1295,7 @@ impl<const D: usize> CollisionSchedule<D> {
             }
         }
         let mut best = PairKey::NOTHING;
+        let t_max = self.pair_horizon(i);
         // Whether the re-check's partner was searched and its contact is not past.
         let mut partner_valid = false;
         for &k in &candidates {
@@ -1304,7 +1310,7 @@ impl<const D: usize> CollisionSchedule<D> {
                     if was_searched(searched, k) && self.updated[ku] <= stamp {
                         continue;
                     }
-                    self.first_contact(i, ku)
+                    self.first_contact(i, ku, t_max)
                 }
                 Some(Known::Since { partner_time, .. }) => {
                     // The same pair on the same paths: its answer as found then.
@@ -1312,7 +1318,7 @@ impl<const D: usize> CollisionSchedule<D> {
                     Some(partner_time)
                 }
                 Some(Known::Pair(other, Some(answer))) if other == ku => answer,
-                _ => self.first_contact(i, ku),
+                _ => self.first_contact(i, ku, t_max),
             };
             if k == self.want {
                 self.pair_answer = Some(t);

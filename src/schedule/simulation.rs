@@ -31,7 +31,7 @@ use super::calendar::{CollisionSchedule, ScheduleOptions, friction_paths};
 use super::event::Event;
 use super::objects::ObjectCounts;
 use super::walls::{Side, Walls};
-use crate::collision::length_unit::{LengthUnit, norm_in_range, unit_of_largest};
+use crate::collision::length_unit::{largest, norm_in_range, unit_of_largest};
 use crate::error::{InputError, InputErrorKind, check_horizon, finite};
 use crate::geometry::{ObjectKind, Table};
 use crate::motion::Ball;
@@ -441,8 +441,13 @@ fn collide_pair(
     // their difference, and each change followed up the balls' other pairs of the instant:
     // along a touching train of k balls (a Newton's cradle) that ran to O(k³) events at
     // one instant.
-    let as_one = frictions[0] == frictions[1]
-        && norm_in_range(&(a.1 - b.1)) <= AS_ONE * (norm_in_range(&a.1) + norm_in_range(&b.1));
+    let as_one = frictions[0] == frictions[1] && {
+        // In the velocities' power-of-two unit (no square overflowing or underflowing, the
+        // same bits at every scale): one unit for the three norms.
+        let unit = unit_of_largest(a.1.amax().max(b.1.amax()));
+        let (va, vb) = (a.1.map(|x| unit.apply(x)), b.1.map(|x| unit.apply(x)));
+        (va - vb).norm() <= AS_ONE * (va.norm() + vb.norm())
+    };
     let (va, vb) = match (as_one, follow_up) {
         (true, true) => return Ok(false),
         (true, false) => {
@@ -559,7 +564,7 @@ fn collide(
     e: f64,
 ) -> (Vector2<f64>, Vector2<f64>) {
     let d = a.0 - b.0;
-    let unit = unit_of([d, a.1, b.1], contact);
+    let unit = unit_of_largest(largest([d.amax(), a.1.amax(), b.1.amax(), contact]));
     let scaled = |v: Vector2<f64>| v.map(|x| unit.apply(x));
     let (va, vb) = (scaled(a.1), scaled(b.1));
     let frictions = frictions.map(|f| unit.friction(f));
@@ -579,17 +584,6 @@ fn collide(
         }
     };
     (back(na, va, a.1), back(nb, vb, b.1))
-}
-
-/// The unit of length of a pair's collision: a power of two from the largest component of
-/// `vectors` and `contact` (a unit of 1 where that is 0, infinite or NaN).
-fn unit_of(vectors: [Vector2<f64>; 3], contact: f64) -> LengthUnit {
-    unit_of_largest(
-        vectors
-            .iter()
-            .map(|v| v.amax())
-            .fold(contact.abs(), f64::max),
-    )
 }
 
 /// [`collide`] in the pair's unit of length: `d` the separation, `[va, vb]` the velocities.
@@ -754,28 +748,34 @@ fn first_overlap(
 /// allocations (16 balls: a fifth of a short run's fixed cost).
 const FEW_BALLS: usize = 32;
 
-/// [`first_overlap`] by every pair in order, the first found the lowest. A pair apart by a
-/// contact distance on an axis is skipped without its distance, which is at least that
-/// (`keep < 1` covers the distance's rounding).
+/// [`first_overlap`] by every pair in order, the first found the lowest.
 fn first_overlap_of_few(
     balls: &[Ball],
     radii: &[f64],
     keep: f64,
 ) -> Option<(usize, usize, f64, f64)> {
-    for a in 0..balls.len() {
-        for b in a + 1..balls.len() {
-            let contact = radii[a] + radii[b];
-            let d = balls[a].position() - balls[b].position();
-            if d.amax() >= contact {
-                continue;
-            }
-            let distance = norm_in_range(&d);
-            if distance < contact * keep {
-                return Some((a, b, distance, contact));
-            }
-        }
+    (0..balls.len())
+        .flat_map(|a| (a + 1..balls.len()).map(move |b| (a, b)))
+        .find_map(|(a, b)| overlap(balls, radii, keep, a, b))
+}
+
+/// `(a, b, distance, contact)` if balls `a` and `b` overlap (`distance < keep·contact`). A
+/// pair apart by a contact distance on an axis is settled without its distance, which is at
+/// least that (`keep < 1` covers the distance's rounding).
+fn overlap(
+    balls: &[Ball],
+    radii: &[f64],
+    keep: f64,
+    a: usize,
+    b: usize,
+) -> Option<(usize, usize, f64, f64)> {
+    let contact = radii[a] + radii[b];
+    let d = balls[a].position() - balls[b].position();
+    if d.amax() >= contact {
+        return None;
     }
-    None
+    let distance = norm_in_range(&d);
+    (distance < contact * keep).then_some((a, b, distance, contact))
 }
 
 /// [`first_overlap`] through a grid (see there).
@@ -855,10 +855,8 @@ fn first_overlap_in_grid(
                 if worst.is_some_and(|w| (a, b) >= (w.0, w.1)) {
                     continue;
                 }
-                let contact = radii[a] + radii[b];
-                let distance = norm_in_range(&(balls[a].position() - balls[b].position()));
-                if distance < contact * keep {
-                    worst = Some((a, b, distance, contact));
+                if let Some(found) = overlap(balls, radii, keep, a, b) {
+                    worst = Some(found);
                 }
             }
         }
