@@ -65,7 +65,7 @@ impl<const D: usize> Path<D> {
         let mut segments = Vec::new();
         let used = segments_from_rows([start], [pos, vel, acc], &NAMES, &mut segments)?;
         segments.truncate(used);
-        Ok(Self { segments })
+        Ok(Self::from_checked(segments))
     }
 }
 
