@@ -94,6 +94,11 @@ pub fn solve_quartic(a: f64, b: f64, c: f64, d: f64, e: f64) -> RealRoots {
     if ![a, b, c, d, e].iter().all(|x| x.is_finite()) {
         return RealRoots::empty();
     }
+    // A zero coefficient as +0 (`x + 0.0` leaves every other value as it is): the general
+    // path's square and cube roots take signs from intermediate values that a −0 can flip
+    // (found by the fuzzer: −53·x⁴ ± 0·x³ + a·(x + 1)², a double root perturbed, gave roots an
+    // ulp apart), and the roots must not depend on the sign of a zero.
+    let [a, b, c, d, e] = [a, b, c, d, e].map(|x| x + 0.0);
     if a == 0.0 {
         return solve_cubic(b, c, d, e);
     }
@@ -802,6 +807,37 @@ mod tests {
             - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
         assert!(det.abs() < 1e-9, "{det}");
+    }
+
+    /// The roots do not depend on the sign of a zero coefficient (the fuzzer's case: a double
+    /// root at −1 perturbed, whose roots came out an ulp apart with −0·x³).
+    #[test]
+    fn a_zero_coefficient_of_either_sign_gives_the_same_roots() {
+        let a = 4.224376450473525e19;
+        let p = [-53.05859375, 0.0, a, 2.0 * a, a];
+        let bits = |p: [f64; 5]| -> Vec<u64> {
+            solve_quartic(p[0], p[1], p[2], p[3], p[4])
+                .iter()
+                .map(|r| r.to_bits())
+                .collect()
+        };
+        let plus = bits(p);
+        assert_eq!(plus.len(), 4);
+        for k in 0..5 {
+            let mut q = p;
+            if q[k] == 0.0 {
+                q[k] = -0.0;
+                assert_eq!(bits(q), plus, "−0 at {k}");
+            }
+        }
+        for q in [
+            [0.0, 1.0, -3.0, 0.0, 2.0],
+            [1.0, 0.0, -5.0, 0.0, 4.0],
+            [1.0, -2.0, 0.0, 0.0, 0.0],
+        ] {
+            let flipped = q.map(|x| if x == 0.0 { -0.0 } else { x });
+            assert_eq!(bits(flipped), bits(q), "{q:?}");
+        }
     }
 
     #[test]
