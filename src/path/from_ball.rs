@@ -38,8 +38,8 @@ impl Ball {
         Path::new(segments)
     }
 
-    /// The segments of [`Ball::path`], unchecked, written over `out`'s (its memory reused;
-    /// grown, if need be, to exactly what they take: paths stay small in memory).
+    /// The segments of [`Ball::path`] (one or two), unchecked, written over `out`'s (its
+    /// memory reused; grown, if need be, to exactly what they take).
     pub(crate) fn write_segments(&self, out: &mut Vec<Segment<2>>) {
         out.clear();
         // At rest means τ = 0, which includes a velocity so small that |v|/μ underflows.

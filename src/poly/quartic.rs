@@ -136,7 +136,10 @@ fn biquadratic_scaled(p: [f64; 5]) -> RootBuf {
 /// (`p[0] ∈ [1, 2)`, all `|p[k]| < 2`, `p[4] ≠ 0`).
 fn quartic_scaled(p: [f64; 5]) -> RootBuf {
     let lead = p[0];
-    let q = Monic::new(p[1] / lead, p[2] / lead, p[3] / lead, p[4] / lead);
+    // A zero over a negative leading coefficient is −0: taken as +0 (see `solve_quartic`),
+    // so that `p` and `−p` give the same roots.
+    let [b, c, d, e] = [p[1], p[2], p[3], p[4]].map(|x| x / lead + 0.0);
+    let q = Monic::new(b, c, d, e);
     let f = polish_factors(q, factor(q));
     let mut roots = RootBuf::default();
     push_quadratic_roots(&p, 1.0, f[0], f[1], &mut roots);
@@ -810,7 +813,8 @@ mod tests {
     }
 
     /// The roots do not depend on the sign of a zero coefficient (the fuzzer's case: a double
-    /// root at −1 perturbed, whose roots came out an ulp apart with −0·x³).
+    /// root at −1 perturbed, whose roots came out an ulp apart with −0·x³), nor on the
+    /// polynomial's sign.
     #[test]
     fn a_zero_coefficient_of_either_sign_gives_the_same_roots() {
         let a = 4.224376450473525e19;
@@ -837,6 +841,14 @@ mod tests {
         ] {
             let flipped = q.map(|x| if x == 0.0 { -0.0 } else { x });
             assert_eq!(bits(flipped), bits(q), "{q:?}");
+        }
+        // Nor on the sign of the polynomial (a zero over a negative leading coefficient).
+        for q in [
+            p,
+            [-p[0], 0.0, -a, -2.0 * a, -a],
+            [2.0, 0.0, -3.0, 0.5, -0.25],
+        ] {
+            assert_eq!(bits(q.map(|x| -x)), bits(q), "{q:?}");
         }
     }
 
