@@ -59,6 +59,7 @@ def friction(sizes, frictions, repeats: int) -> None:
         vel = np.random.default_rng(n).normal(size=(n, 2))
         rows = {name: [] for name in tables}
         base = {}
+        frictionless = partial(bc.simulate, pos, vel, 0.0, r, box=([0, 0], [1, 1]))
         for mu in frictions:
             run = partial(bc.simulate, pos, vel, mu, r, box=([0, 0], [1, 1]))
             seconds, result = median_time(partial(run, max_events=5 * n), repeats)
@@ -69,19 +70,17 @@ def friction(sizes, frictions, repeats: int) -> None:
                 "after the build": max(0.0, seconds - build) / events * 1e6,
                 SAME_LENGTH: seconds / events * 1e6,
             }
+            if mu == 0:
+                base = per
+            # What each ratio is taken against: the frictionless run; for SAME_LENGTH, where
+            # the balls are at rest before the last event (the call's fixed cost, the build
+            # and the binding, shared by fewer events), that run cut at as many events.
+            against = dict(base)
             if mu != 0 and events < 5 * n:
-                # Balls at rest before the last event: the call's fixed cost (the build, the
-                # binding) is shared by fewer events than in the frictionless run; compare
-                # with that run cut at as many events.
-                cut = partial(bc.simulate, pos, vel, 0.0, r, box=([0, 0], [1, 1]))
-                same, _ = median_time(partial(cut, max_events=events), repeats)
-                base[SAME_LENGTH] = same / events * 1e6
-            elif mu != 0:
-                base[SAME_LENGTH] = base["the build included"]
+                same, _ = median_time(partial(frictionless, max_events=events), repeats)
+                against[SAME_LENGTH] = same / events * 1e6
             for name, value in per.items():
-                if mu == 0:
-                    base[name] = value
-                ratio = f" ({value / base[name]:.1f}×)" if mu != 0 and base.get(name) else ""
+                ratio = f" ({value / against[name]:.1f}×)" if mu != 0 and against.get(name) else ""
                 rows[name].append(f"{value:.1f}{ratio}")
             rows["after the build"][-1] += f", {events} events"
         for name in tables:

@@ -94,11 +94,6 @@ pub fn solve_quartic(a: f64, b: f64, c: f64, d: f64, e: f64) -> RealRoots {
     if ![a, b, c, d, e].iter().all(|x| x.is_finite()) {
         return RealRoots::empty();
     }
-    // A zero coefficient as +0 (`x + 0.0` leaves every other value as it is): the general
-    // path's square and cube roots take signs from intermediate values that a −0 can flip
-    // (found by the fuzzer: −53·x⁴ ± 0·x³ + a·(x + 1)², a double root perturbed, gave roots an
-    // ulp apart), and the roots must not depend on the sign of a zero.
-    let [a, b, c, d, e] = [a, b, c, d, e].map(|x| x + 0.0);
     if a == 0.0 {
         return solve_cubic(b, c, d, e);
     }
@@ -136,8 +131,11 @@ fn biquadratic_scaled(p: [f64; 5]) -> RootBuf {
 /// (`p[0] ∈ [1, 2)`, all `|p[k]| < 2`, `p[4] ≠ 0`).
 fn quartic_scaled(p: [f64; 5]) -> RootBuf {
     let lead = p[0];
-    // A zero over a negative leading coefficient is −0: taken as +0 (see `solve_quartic`),
-    // so that `p` and `−p` give the same roots.
+    // A zero coefficient as +0 (`x + 0.0` leaves every other value as it is), whatever the
+    // signs of it and of the leading coefficient: the factorisation's square and cube roots
+    // take signs from intermediate values that a −0 can flip (found by the fuzzer:
+    // −53·x⁴ ± 0·x³ + a·(x + 1)², a double root perturbed, gave roots an ulp apart), and the
+    // roots must depend neither on the sign of a zero nor on that of the polynomial.
     let [b, c, d, e] = [p[1], p[2], p[3], p[4]].map(|x| x / lead + 0.0);
     let q = Monic::new(b, c, d, e);
     let f = polish_factors(q, factor(q));
